@@ -1,0 +1,81 @@
+// Boustrophedon decomposition with transition cells (SPEC sect. 2).
+// All coordinates here are in the sweep frame (see Frame): stripes run along +y and the
+// slice sweeps along +x, so a cell is an x-interval with a floor and a ceiling.
+#pragma once
+
+#include "geometry/Geometry.h"
+#include "model/Plan.h"
+
+#include <string>
+#include <vector>
+
+namespace fc {
+
+enum class CellKind { Primary, Transition };
+
+struct Cell {
+    int id = -1;
+    CellKind kind = CellKind::Primary;
+    int room = 0; // index into Decomposition::roomNames
+    double x0 = 0.0, x1 = 0.0;
+    // Piecewise-linear floor and ceiling over [x0, x1], x non-decreasing; a vertical
+    // step (floor or ceiling jump) appears as two points with the same x.
+    Polyline floor, ceiling;
+    // x of each stripe (evenly spaced, first and last W/2 inside [x0, x1]).
+    std::vector<double> stripes;
+
+    double width() const { return x1 - x0; }
+    double floorAt(double x) const;   // lower value at a jump
+    double ceilingAt(double x) const; // upper value at a jump
+    double area() const;
+    Ring outline() const; // counter-clockwise polygon of the cell
+};
+
+// Two cells that share part of their border. AcrossSweep: a vertical segment at x
+// (a critical slice, a room border across the sweep, or a cut-off transition strip).
+// AlongSweep: a floor/ceiling segment shared by a lower and an upper cell (only at
+// room borders, since walls separate cells otherwise).
+struct Adjacency {
+    enum class Kind { AcrossSweep, AlongSweep };
+    Kind kind = Kind::AcrossSweep;
+    int first = -1;  // left cell (AcrossSweep) or lower cell (AlongSweep)
+    int second = -1; // right cell or upper cell
+    Segment shared;  // the shared border piece
+};
+
+struct CriticalSlice {
+    double x = 0.0;
+    double y0 = 0.0, y1 = 0.0;
+};
+
+// A part of the free space the robot cannot sweep (narrower than W, or cut off).
+struct UnreachableArea {
+    double area = 0.0;  // m^2
+    Vec2 location;      // a representative point, world frame
+    std::string reason; // "narrower than the coverage width", ...
+};
+
+struct Decomposition {
+    Frame frame;
+    double coverageWidth = 1.0;
+    std::vector<std::string> roomNames; // "Floor" when the plan has no rooms
+    std::vector<Cell> cells;
+    std::vector<Adjacency> adjacencies;
+    std::vector<CriticalSlice> criticalSlices;
+    std::vector<UnreachableArea> unreachable;
+    std::vector<Ring> freeSpace; // sweep frame: [0] boundary (ccw), then holes (cw)
+
+    int primaryCount() const;
+    int transitionCount() const;
+};
+
+struct DecompositionOptions {
+    double coverageWidth = 1.0;
+    double stripeAngleDeg = 90.0;
+    bool transitionCells = true; // the paper's modification; off = classic BCD
+};
+
+// Decomposes a validated plan. Throws InputError for geometry it cannot handle.
+Decomposition decompose(const Plan& plan, const DecompositionOptions& options);
+
+} // namespace fc

@@ -1,0 +1,80 @@
+// Plain value types for planar geometry: points, rings, polygons with holes.
+// Everything in the planner core is in metres, +x right, +y up.
+#pragma once
+
+#include <cmath>
+#include <vector>
+
+namespace fc {
+
+struct Vec2 {
+    double x = 0.0;
+    double y = 0.0;
+
+    Vec2() = default;
+    Vec2(double x_, double y_) : x(x_), y(y_) {}
+    Vec2 operator+(Vec2 o) const { return {x + o.x, y + o.y}; }
+    Vec2 operator-(Vec2 o) const { return {x - o.x, y - o.y}; }
+    Vec2 operator*(double s) const { return {x * s, y * s}; }
+    bool operator==(Vec2 o) const { return x == o.x && y == o.y; }
+    bool operator!=(Vec2 o) const { return !(*this == o); }
+};
+
+inline double dot(Vec2 a, Vec2 b) { return a.x * b.x + a.y * b.y; }
+inline double cross(Vec2 a, Vec2 b) { return a.x * b.y - a.y * b.x; }
+inline double norm(Vec2 a) { return std::hypot(a.x, a.y); }
+inline double distance(Vec2 a, Vec2 b) { return norm(a - b); }
+
+// A closed ring; the closing vertex is NOT repeated.
+using Ring = std::vector<Vec2>;
+using Polyline = std::vector<Vec2>;
+
+struct Segment {
+    Vec2 a;
+    Vec2 b;
+};
+
+struct BoundingBox {
+    double minX = INFINITY, minY = INFINITY, maxX = -INFINITY, maxY = -INFINITY;
+    void add(Vec2 p) {
+        minX = std::min(minX, p.x);
+        minY = std::min(minY, p.y);
+        maxX = std::max(maxX, p.x);
+        maxY = std::max(maxY, p.y);
+    }
+    bool empty() const { return minX > maxX; }
+    double width() const { return maxX - minX; }
+    double height() const { return maxY - minY; }
+};
+
+double signedArea(const Ring& ring);
+double ringArea(const Ring& ring); // absolute value
+double polylineLength(const Polyline& line);
+BoundingBox boundsOf(const Ring& ring);
+bool pointInRing(const Ring& ring, Vec2 p); // even-odd, boundary undefined
+double pointSegmentDistance(Vec2 p, Vec2 a, Vec2 b);
+double segmentSegmentDistance(Vec2 a, Vec2 b, Vec2 c, Vec2 d);
+
+// A rigid transform used to work in the "sweep frame": the plan is shifted to a
+// local origin (so UTM-sized coordinates keep full precision) and rotated so that
+// stripes run along +y (the slice sweeps along +x).
+class Frame {
+public:
+    Frame() = default;
+    // stripeAngleDeg: direction of the stripes in the world frame (90 = vertical).
+    Frame(Vec2 origin, double stripeAngleDeg);
+
+    Vec2 toLocal(Vec2 world) const;
+    Vec2 toWorld(Vec2 local) const;
+    Ring toLocal(const Ring& ring) const;
+    Polyline toWorld(const Polyline& line) const;
+    Vec2 origin() const { return origin_; }
+    double stripeAngleDeg() const { return angleDeg_; }
+
+private:
+    Vec2 origin_;
+    double angleDeg_ = 90.0;
+    double c_ = 1.0, s_ = 0.0; // rotation world->local
+};
+
+} // namespace fc

@@ -1,0 +1,42 @@
+// Path metrics of SPEC sect. 6, computed by one implementation for CLI, GUI and exports.
+#pragma once
+
+#include "decomposition/Decomposition.h"
+#include "model/Plan.h"
+#include "path/CoveragePath.h"
+
+#include <string>
+#include <vector>
+
+namespace fc {
+
+struct Metrics {
+    double length = 0.0;        // m
+    double ideal = 0.0;         // sweepable area of the required rooms / W, m
+    double extra = 0.0;         // length - ideal, m
+    int turns = 0;              // heading changes >= 45 degrees
+    double coverage = 0.0;      // 0..1
+    double time = 0.0;          // s = length / speed + turns * turn time
+    int cells = 0;              // required cells
+    double graphCost = 0.0;     // from the solver's walk
+    double seconds = 0.0;       // planning time
+    double sweepableArea = 0.0; // m^2, denominator of coverage
+    double coveredArea = 0.0;   // m^2, numerator of coverage
+    std::vector<Segment> overlaps; // world frame: path pieces over area already swept
+};
+
+struct MetricsInput {
+    const Decomposition* decomposition = nullptr; // sweep frame, cells labelled by room
+    RobotProfile robot;
+    std::vector<char> requiredRooms; // per room of the decomposition
+    CoveragePath path;               // world frame
+    // Raster cell size in metres; 0 picks W/10, coarsened to keep the raster bounded.
+    double resolution = 0.0;
+};
+
+Metrics computeMetrics(const MetricsInput& input);
+
+// Turns of a polyline: interior vertices where the heading changes by >= 45 degrees.
+int countTurns(const Polyline& points);
+
+} // namespace fc

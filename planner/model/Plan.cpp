@@ -1,0 +1,33 @@
+#include "model/Plan.h"
+
+#include <cmath>
+#include <sstream>
+
+namespace fc {
+
+void RobotProfile::validate() const {
+    auto finitePositive = [](double v) { return std::isfinite(v) && v > 0.0; };
+    std::ostringstream msg;
+    if (!finitePositive(robotDiameter))
+        msg << "robot diameter L must be a positive number (got " << robotDiameter << ")";
+    else if (!finitePositive(coverageWidth))
+        msg << "coverage width W must be a positive number (got " << coverageWidth << ")";
+    else if (!finitePositive(cleaningDiameter))
+        msg << "cleaning diameter D must be a positive number (got " << cleaningDiameter << ")";
+    else if (!finitePositive(speed))
+        msg << "speed must be a positive number (got " << speed << ")";
+    else if (!std::isfinite(turnTime) || turnTime < 0.0)
+        msg << "turn time must be zero or positive (got " << turnTime << ")";
+    else if (robotDiameter > coverageWidth + 1e-12)
+        msg << "robot diameter L = " << robotDiameter << " m exceeds coverage width W = "
+            << coverageWidth << " m (need L <= W <= D)";
+    else if (coverageWidth > cleaningDiameter + 1e-12)
+        msg << "coverage width W = " << coverageWidth << " m exceeds cleaning diameter D = "
+            << cleaningDiameter << " m (need L <= W <= D)";
+    else if (coverageWidth > 1000.0)
+        msg << "coverage width W = " << coverageWidth << " m is not a plausible robot size";
+    if (!msg.str().empty())
+        throw InputError(msg.str());
+}
+
+} // namespace fc

@@ -1,0 +1,67 @@
+// What every solver answers (SPEC sect. 4): a walk over the corner graph from the start
+// node to the end node that traverses one coverage edge of every required cell.
+#pragma once
+
+#include "graph/CornerGraph.h"
+
+#include <cstdint>
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace fc {
+
+struct Query {
+    std::vector<char> required; // per cell: 1 = must be covered
+    int startNode = 0;
+    int endNode = 0;
+    std::uint64_t seed = 1;
+};
+
+// A walk: nodes[0] = start, nodes.back() = end, edges[i] joins nodes[i] and nodes[i+1].
+struct Walk {
+    std::vector<int> nodes;
+    std::vector<int> edges;
+};
+
+struct Solution {
+    std::string solver;
+    Walk walk;
+    std::vector<int> cellOrder; // cells in the order their coverage edge is traversed
+    double graphCost = 0.0;     // recomputed by evaluateWalk, never trusted from a solver
+};
+
+struct WalkEvaluation {
+    double graphCost = 0.0;
+    std::vector<int> cellOrder;
+    bool coversAllRequired = false;
+    bool connected = false; // consecutive edges/nodes agree, starts and ends right
+};
+
+// The single implementation of the graph cost of a walk.
+WalkEvaluation evaluateWalk(const CornerGraph& graph, const Query& query, const Walk& walk);
+
+// Thrown when a solver cannot answer (e.g. exact above its size limit, unreachable cells).
+class SolverError : public std::runtime_error {
+public:
+    using std::runtime_error::runtime_error;
+};
+
+// Cooperative cancellation and progress for long solves (GUI workers).
+struct SolveControl {
+    std::function<bool()> cancelled;        // may be empty
+    std::function<void(double)> progress;   // 0..1, may be empty
+};
+
+struct ExactOptions {
+    std::size_t maxStates = 40'000'000; // (covered set x node) states explored at most
+    int maxRequiredCells = 22;
+};
+
+Solution solveExact(const CornerGraph& graph, const Query& query, const ExactOptions& options = {},
+                    const SolveControl& control = {});
+Solution solveHeuristic(const CornerGraph& graph, const Query& query,
+                        const SolveControl& control = {});
+Solution solveGreedy(const CornerGraph& graph, const Query& query);
+
+} // namespace fc
