@@ -23,8 +23,12 @@ struct Cell {
     Polyline floor, ceiling;
     // x of each stripe (evenly spaced, first and last W/2 inside [x0, x1]).
     std::vector<double> stripes;
+    // Where the robot centre can run on each stripe (clear of walls by W/2 and inside the
+    // cell); an empty interval marks a stripe too narrow for the robot.
+    std::vector<Interval> stripeSpans;
 
     double width() const { return x1 - x0; }
+    bool reachable() const; // at least one stripe with a clear span
     double floorAt(double x) const;   // lower value at a jump
     double ceilingAt(double x) const; // upper value at a jump
     double area() const;

@@ -29,6 +29,12 @@ inline double distance(Vec2 a, Vec2 b) { return norm(a - b); }
 using Ring = std::vector<Vec2>;
 using Polyline = std::vector<Vec2>;
 
+struct Interval {
+    double lo = 0, hi = 0;
+    double length() const { return hi - lo; }
+    bool empty() const { return !(hi >= lo); }
+};
+
 struct Segment {
     Vec2 a;
     Vec2 b;

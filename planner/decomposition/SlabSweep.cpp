@@ -1,0 +1,224 @@
+#include "decomposition/SlabSweep.h"
+
+#include "model/Plan.h"
+
+#include <algorithm>
+#include <map>
+#include <set>
+#include <sstream>
+
+namespace fc::detail {
+namespace {
+
+struct SweepEdge {
+    double xl, yl, xr, yr;
+    int room; // -1 for walls
+
+    double yAt(double x) const {
+        if (x == xl)
+            return yl;
+        if (x == xr)
+            return yr;
+        return yl + (yr - yl) * (x - xl) / (xr - xl);
+    }
+};
+
+void collectEdges(const Ring& ring, int room, std::vector<SweepEdge>& out) {
+    for (size_t i = 0; i < ring.size(); ++i) {
+        Vec2 a = ring[i], b = ring[(i + 1) % ring.size()];
+        if (a.x == b.x)
+            continue; // vertical edges lie on event lines and bound no slab interval
+        if (a.x > b.x)
+            std::swap(a, b);
+        out.push_back({a.x, a.y, b.x, b.y, room});
+    }
+}
+
+struct ActiveEdge {
+    const SweepEdge* edge;
+    double yMid;
+};
+
+} // namespace
+
+SlabSweep sweepSlabs(const std::vector<Ring>& freeRings, const std::vector<Ring>& rooms,
+                     double epsY) {
+    SlabSweep out;
+    std::vector<SweepEdge> edges;
+    for (const Ring& r : freeRings) {
+        collectEdges(r, -1, edges);
+        for (const Vec2& p : r)
+            out.xs.push_back(p.x);
+    }
+    for (size_t i = 0; i < rooms.size(); ++i) {
+        collectEdges(rooms[i], static_cast<int>(i), edges);
+        for (const Vec2& p : rooms[i])
+            out.xs.push_back(p.x);
+    }
+    std::sort(out.xs.begin(), out.xs.end());
+    out.xs.erase(std::unique(out.xs.begin(), out.xs.end()), out.xs.end());
+    std::sort(edges.begin(), edges.end(),
+              [](const SweepEdge& a, const SweepEdge& b) { return a.xl < b.xl; });
+
+    const int slabCount = static_cast<int>(out.xs.size()) - 1;
+    out.slabMembers.resize(std::max(0, slabCount));
+    std::vector<const SweepEdge*> active;
+    size_t next = 0;
+    std::vector<ActiveEdge> walls, borders;
+    std::vector<int> roomParity(rooms.size(), 0);
+    std::set<int> openRooms;
+
+    for (int k = 0; k < slabCount; ++k) {
+        const double xa = out.xs[k], xb = out.xs[k + 1], xm = 0.5 * (xa + xb);
+        active.erase(std::remove_if(active.begin(), active.end(),
+                                    [xa](const SweepEdge* e) { return e->xr <= xa; }),
+                     active.end());
+        while (next < edges.size() && edges[next].xl <= xa)
+            active.push_back(&edges[next++]);
+
+        walls.clear();
+        borders.clear();
+        for (const SweepEdge* e : active) {
+            if (e->xr < xb)
+                continue; // cannot happen with exact event x's; defensive
+            (e->room < 0 ? walls : borders).push_back({e, e->yAt(xm)});
+        }
+        auto byY = [](const ActiveEdge& a, const ActiveEdge& b) { return a.yMid < b.yMid; };
+        std::sort(walls.begin(), walls.end(), byY);
+        std::sort(borders.begin(), borders.end(), byY);
+        if (walls.size() % 2 != 0) {
+            std::ostringstream msg;
+            msg << "walls do not enclose the free space consistently near x = " << xm
+                << " (sweep frame); is a ring self-intersecting?";
+            throw InputError(msg.str());
+        }
+
+        std::fill(roomParity.begin(), roomParity.end(), 0);
+        openRooms.clear();
+        size_t nextBorder = 0;
+        for (size_t w = 0; w + 1 < walls.size(); w += 2) {
+            // Split the free interval at room borders strictly inside it.
+            std::vector<const SweepEdge*> cuts{walls[w].edge};
+            for (const ActiveEdge& b : borders)
+                if (b.yMid > walls[w].yMid + epsY && b.yMid < walls[w + 1].yMid - epsY)
+                    cuts.push_back(b.edge);
+            cuts.push_back(walls[w + 1].edge);
+
+            int previousInInterval = -1;
+            for (size_t c = 0; c + 1 < cuts.size(); ++c) {
+                Trapezoid t;
+                t.slab = k;
+                t.xa = xa, t.xb = xb;
+                t.fa = cuts[c]->yAt(xa), t.fb = cuts[c]->yAt(xb);
+                t.ca = cuts[c + 1]->yAt(xa), t.cb = cuts[c + 1]->yAt(xb);
+                const double yLow = cuts[c]->yAt(xm), yHigh = cuts[c + 1]->yAt(xm);
+                if (yHigh - yLow <= epsY)
+                    continue;
+                // Rooms containing the middle: parity of the borders below it.
+                const double yMid = 0.5 * (yLow + yHigh);
+                while (nextBorder < borders.size() && borders[nextBorder].yMid < yMid) {
+                    const int room = borders[nextBorder].edge->room;
+                    roomParity[room] ^= 1;
+                    if (roomParity[room])
+                        openRooms.insert(room);
+                    else
+                        openRooms.erase(room);
+                    ++nextBorder;
+                }
+                t.room = openRooms.empty() ? -1 : *openRooms.begin();
+                const int id = static_cast<int>(out.trapezoids.size());
+                out.trapezoids.push_back(t);
+                out.slabMembers[k].push_back(id);
+                if (previousInInterval >= 0)
+                    out.stacks.push_back({previousInInterval, id});
+                previousInInterval = id;
+            }
+        }
+    }
+
+    // Links across each slab border: two-pointer merge of the sorted stacks.
+    out.linksOfTrapezoid.resize(out.trapezoids.size());
+    for (int k = 0; k + 1 < slabCount; ++k) {
+        const auto& L = out.slabMembers[k];
+        const auto& R = out.slabMembers[k + 1];
+        size_t i = 0, j = 0;
+        while (i < L.size() && j < R.size()) {
+            const Trapezoid& a = out.trapezoids[L[i]];
+            const Trapezoid& b = out.trapezoids[R[j]];
+            const double y0 = std::max(a.fb, b.fa), y1 = std::min(a.cb, b.ca);
+            if (y1 - y0 > epsY) {
+                const int id = static_cast<int>(out.links.size());
+                out.links.push_back({L[i], R[j], out.xs[k + 1], y0, y1});
+                out.linksOfTrapezoid[L[i]].push_back(id);
+                out.linksOfTrapezoid[R[j]].push_back(id);
+            }
+            if (a.cb < b.ca)
+                ++i;
+            else
+                ++j;
+        }
+    }
+    return out;
+}
+
+int assignLeftovers(SlabSweep& sweep, int roomCount) {
+    auto& traps = sweep.trapezoids;
+    const int n = static_cast<int>(traps.size());
+    // Union-find over leftover trapezoids connected by links or stacks.
+    std::vector<int> parent(n);
+    for (int i = 0; i < n; ++i)
+        parent[i] = i;
+    auto find = [&](int x) {
+        while (parent[x] != x)
+            x = parent[x] = parent[parent[x]];
+        return x;
+    };
+    auto unite = [&](int a, int b) {
+        if (traps[a].room < 0 && traps[b].room < 0)
+            parent[find(a)] = find(b);
+    };
+    for (const TrapezoidLink& l : sweep.links)
+        unite(l.left, l.right);
+    for (const TrapezoidStack& s : sweep.stacks)
+        unite(s.lower, s.upper);
+
+    // Shared border length between each leftover component and each room.
+    std::map<int, std::map<int, double>> border; // component -> room -> length
+    auto addBorder = [&](int a, int b, double length) {
+        if (traps[a].room < 0 && traps[b].room >= 0)
+            border[find(a)][traps[b].room] += length;
+        else if (traps[b].room < 0 && traps[a].room >= 0)
+            border[find(b)][traps[a].room] += length;
+    };
+    for (const TrapezoidLink& l : sweep.links)
+        addBorder(l.left, l.right, l.y1 - l.y0);
+    for (const TrapezoidStack& s : sweep.stacks) {
+        const Trapezoid& t = traps[s.lower];
+        addBorder(s.lower, s.upper, std::hypot(t.xb - t.xa, t.cb - t.ca));
+    }
+
+    std::map<int, int> componentRoom;
+    int rooms = roomCount;
+    for (int i = 0; i < n; ++i) {
+        if (traps[i].room >= 0)
+            continue;
+        const int c = find(i);
+        auto it = componentRoom.find(c);
+        if (it == componentRoom.end()) {
+            int best = -1;
+            double bestLength = 0.0;
+            for (const auto& [room, length] : border[c]) // ascending room: ties go low
+                if (length > bestLength * (1 + 1e-9) + 1e-12) {
+                    best = room;
+                    bestLength = length;
+                }
+            if (best < 0)
+                best = rooms++;
+            it = componentRoom.emplace(c, best).first;
+        }
+        traps[i].room = it->second;
+    }
+    return rooms;
+}
+
+} // namespace fc::detail

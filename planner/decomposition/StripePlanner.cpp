@@ -1,0 +1,116 @@
+#include "decomposition/StripePlanner.h"
+
+#include <algorithm>
+#include <functional>
+
+namespace fc::detail {
+
+Interval spanAt(const Cell& cell, double x, const ClearanceField& field) {
+    const double r = field.radius();
+    const double lo = cell.floorAt(x) + r, hi = cell.ceilingAt(x) - r;
+    if (hi < lo - 1e-12)
+        return {1, 0};
+    Interval best{1, 0};
+    for (const Interval& piece : field.clearPieces(x, lo, std::max(lo, hi)))
+        if (best.empty() || piece.length() > best.length())
+            best = piece;
+    return best;
+}
+
+Polyline traceBorder(const Cell& cell, double xa, double xb, bool top,
+                     const ClearanceField& field) {
+    const bool reversed = xa > xb;
+    if (reversed)
+        std::swap(xa, xb);
+    const double r = field.radius();
+    const double w = 2 * r;
+    auto value = [&](double x, bool& ok) {
+        const Interval s = spanAt(cell, x, field);
+        ok = !s.empty();
+        return top ? s.hi : s.lo;
+    };
+    // Seeds: ends, breakpoints of the cell's floor/ceiling and their +-r neighbours (where
+    // clearance arcs start), and at most W/2 apart.
+    std::vector<double> seeds{xa, xb};
+    for (const Polyline* f : {&cell.floor, &cell.ceiling})
+        for (const Vec2& p : *f)
+            for (double x : {p.x - r, p.x - 1e-9 * w, p.x, p.x + 1e-9 * w, p.x + r})
+                if (x > xa && x < xb)
+                    seeds.push_back(x);
+    const int uniform = static_cast<int>(std::ceil((xb - xa) / (0.5 * w)));
+    for (int i = 1; i < uniform; ++i)
+        seeds.push_back(xa + (xb - xa) * i / uniform);
+    std::sort(seeds.begin(), seeds.end());
+    seeds.erase(std::unique(seeds.begin(), seeds.end()), seeds.end());
+
+    Polyline out;
+    bool ok = true;
+    const double tolerance = 1e-3 * w;
+    std::function<void(double, double, double, double, int)> refine =
+        [&](double x0, double y0, double x1, double y1, int depth) {
+            const double xm = 0.5 * (x0 + x1);
+            bool okMid = true;
+            const double ym = value(xm, okMid);
+            if (!okMid) {
+                ok = false;
+                return;
+            }
+            if (depth < 12 && (x1 - x0) > w / 512 && std::abs(ym - 0.5 * (y0 + y1)) > tolerance) {
+                refine(x0, y0, xm, ym, depth + 1);
+                refine(xm, ym, x1, y1, depth + 1);
+                return;
+            }
+            out.push_back({xm, ym});
+            out.push_back({x1, y1});
+        };
+    double px = seeds[0];
+    double py = value(px, ok);
+    if (!ok)
+        return {};
+    out.push_back({px, py});
+    for (size_t i = 1; i < seeds.size() && ok; ++i) {
+        bool okHere = true;
+        const double y = value(seeds[i], okHere);
+        if (!okHere)
+            return {};
+        refine(px, py, seeds[i], y, 0);
+        px = seeds[i], py = y;
+    }
+    if (!ok)
+        return {};
+    // Remove collinear middle points.
+    Polyline simple;
+    for (const Vec2& p : out) {
+        if (!simple.empty() && simple.back() == p)
+            continue;
+        while (simple.size() >= 2) {
+            const Vec2 a = simple[simple.size() - 2], b = simple.back();
+            if (std::abs(cross(b - a, p - b)) > 1e-12 * (1 + norm(p - a)) * (1 + norm(b - a)))
+                break;
+            simple.pop_back();
+        }
+        simple.push_back(p);
+    }
+    if (reversed)
+        std::reverse(simple.begin(), simple.end());
+    return simple;
+}
+
+void planStripeSpans(Decomposition& dec) {
+    const ClearanceField field(dec.freeSpace, 0.5 * dec.coverageWidth);
+    for (Cell& cell : dec.cells) {
+        cell.stripeSpans.clear();
+        for (double x : cell.stripes)
+            cell.stripeSpans.push_back(spanAt(cell, x, field));
+        if (!cell.reachable()) {
+            const Ring outline = cell.outline();
+            Vec2 centre;
+            for (const Vec2& p : outline)
+                centre = centre + p * (1.0 / outline.size());
+            dec.unreachable.push_back({cell.area(), dec.frame.toWorld(centre),
+                                       "narrower than the coverage width W"});
+        }
+    }
+}
+
+} // namespace fc::detail

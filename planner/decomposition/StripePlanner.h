@@ -1,0 +1,22 @@
+// Where the robot centre runs inside a cell: clear spans of stripes and traced borders.
+#pragma once
+
+#include "decomposition/Decomposition.h"
+#include "geometry/Clearance.h"
+
+namespace fc::detail {
+
+// The clear part of the vertical line x inside the cell: at least W/2 from walls and
+// W/2 inside the cell's floor and ceiling; the longest piece. Empty when none.
+Interval spanAt(const Cell& cell, double x, const ClearanceField& field);
+
+// The robot-centre polyline along the bottom (top = false) or top of the cell's clear
+// region from xa to xb (either order). Adaptive sampling keeps chords within ~W/1000 of
+// the exact offset curve. Empty when the clear region is interrupted.
+Polyline traceBorder(const Cell& cell, double xa, double xb, bool top,
+                     const ClearanceField& field);
+
+// Fills Cell::stripeSpans for every cell and Decomposition::unreachable.
+void planStripeSpans(Decomposition& decomposition);
+
+} // namespace fc::detail

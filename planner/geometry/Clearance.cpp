@@ -1,0 +1,204 @@
+#include "geometry/Clearance.h"
+
+#include <algorithm>
+#include <limits>
+#include <queue>
+
+namespace fc {
+namespace {
+
+// The y-interval where the vertical line x meets the capsule of radius r around ab.
+bool capsuleSpan(Vec2 a, Vec2 b, double x, double r, double& lo, double& hi) {
+    lo = INFINITY, hi = -INFINITY;
+    auto disk = [&](Vec2 c) {
+        const double dx = x - c.x;
+        if (std::abs(dx) >= r)
+            return;
+        const double h = std::sqrt(r * r - dx * dx);
+        lo = std::min(lo, c.y - h);
+        hi = std::max(hi, c.y + h);
+    };
+    disk(a);
+    disk(b);
+    // The band: points projecting inside ab within distance r. Both conditions are linear
+    // in y, so the band meets the line in an interval.
+    const Vec2 d = b - a;
+    const double len = norm(d);
+    if (len > 0) {
+        const Vec2 u = d * (1.0 / len);
+        // p = (x, y): t(y) = (p - a).u = (x - a.x) u.x + (y - a.y) u.y, in [0, len]
+        //             s(y) = cross(u, p - a) = u.x (y - a.y) - u.y (x - a.x), |s| < r
+        double ylo = -INFINITY, yhi = INFINITY;
+        auto clampLinear = [&](double coef, double constant, double low, double high) {
+            // low <= coef * y + constant <= high
+            if (std::abs(coef) < 1e-15) {
+                if (constant < low || constant > high)
+                    ylo = INFINITY, yhi = -INFINITY;
+                return;
+            }
+            double y1 = (low - constant) / coef, y2 = (high - constant) / coef;
+            if (y1 > y2)
+                std::swap(y1, y2);
+            ylo = std::max(ylo, y1);
+            yhi = std::min(yhi, y2);
+        };
+        clampLinear(u.y, (x - a.x) * u.x - a.y * u.y, 0.0, len);
+        clampLinear(u.x, -a.y * u.x - u.y * (x - a.x), -r, r);
+        if (ylo < yhi) {
+            lo = std::min(lo, ylo);
+            hi = std::max(hi, yhi);
+        }
+    }
+    return lo < hi;
+}
+
+} // namespace
+
+ClearanceField::ClearanceField(const std::vector<Ring>& rings, double radius)
+    : walls_(rings), radius_(radius), tolerance_(1e-7 * std::max(1.0, radius)) {
+    for (const Ring& ring : rings)
+        for (const Vec2& p : ring)
+            extent_.add(p);
+    // Reflex corners of the free space: the interior angle seen from free space exceeds
+    // 180 degrees. Orientation-free test: probe a point just off the corner along the
+    // outward bisector and keep it if it is clear.
+    for (const Ring& ring : rings) {
+        const size_t n = ring.size();
+        for (size_t i = 0; i < n; ++i) {
+            const Vec2 prev = ring[(i + n - 1) % n], p = ring[i], next = ring[(i + 1) % n];
+            const Vec2 e1 = p - prev, e2 = next - p;
+            const double l1 = norm(e1), l2 = norm(e2);
+            if (l1 == 0 || l2 == 0)
+                continue;
+            const Vec2 u1 = e1 * (1 / l1), u2 = e2 * (1 / l2);
+            Vec2 bis = u1 - u2; // points away from the corner's inside wedge
+            double bl = norm(bis);
+            if (bl < 1e-12)
+                continue; // straight continuation
+            bis = bis * (1 / bl);
+            const double sinHalf = std::sqrt(std::max(0.0, 0.5 * (1 - dot(u1 * -1, u2))));
+            const double offset = radius_ * 1.02 / std::max(sinHalf, 0.2);
+            for (int side = -1; side <= 1; side += 2) {
+                const Vec2 q = p + bis * (side * offset);
+                if (walls_.distanceToWalls(q) >= radius_ * 1.01)
+                    cornerPoints_.push_back(q);
+            }
+        }
+    }
+}
+
+std::vector<Interval> ClearanceField::clearPieces(double x, double yLow, double yHigh) const {
+    std::vector<Interval> forbidden;
+    BoundingBox box;
+    box.add({x - radius_, yLow - radius_});
+    box.add({x + radius_, yHigh + radius_});
+    std::vector<int> hits;
+    walls_.query(box, hits);
+    const double r = radius_ - tolerance_;
+    for (int id : hits) {
+        const Segment& s = walls_.segments()[id];
+        double lo, hi;
+        if (capsuleSpan(s.a, s.b, x, r, lo, hi))
+            forbidden.push_back({lo, hi});
+    }
+    std::sort(forbidden.begin(), forbidden.end(),
+              [](const Interval& a, const Interval& b) { return a.lo < b.lo; });
+    std::vector<Interval> pieces;
+    double cursor = yLow;
+    for (const Interval& f : forbidden) {
+        if (f.lo > cursor && f.lo > yLow)
+            pieces.push_back({cursor, std::min(f.lo, yHigh)});
+        cursor = std::max(cursor, f.hi);
+        if (cursor >= yHigh)
+            break;
+    }
+    if (cursor < yHigh)
+        pieces.push_back({cursor, yHigh});
+    pieces.erase(std::remove_if(pieces.begin(), pieces.end(),
+                                [](const Interval& i) { return i.hi < i.lo; }),
+                 pieces.end());
+    return pieces;
+}
+
+bool ClearanceField::isClear(Vec2 p) const {
+    return walls_.distanceToWalls(p) >= radius_ - 10 * tolerance_;
+}
+
+bool ClearanceField::segmentIsClear(Vec2 a, Vec2 b) const {
+    return walls_.segmentClearance(a, b) >= radius_ - 10 * tolerance_;
+}
+
+bool ClearanceField::polylineIsClear(const Polyline& line) const {
+    for (size_t i = 1; i < line.size(); ++i)
+        if (!segmentIsClear(line[i - 1], line[i]))
+            return false;
+    return line.size() != 1 || isClear(line[0]);
+}
+
+Polyline ClearanceField::findPath(Vec2 a, Vec2 b) const {
+    if (segmentIsClear(a, b))
+        return {a, b};
+    double margin = std::max(4 * radius_, 0.5 * distance(a, b));
+    for (int round = 0; round < 8; ++round) {
+        BoundingBox window;
+        window.add(a);
+        window.add(b);
+        window.minX -= margin, window.minY -= margin;
+        window.maxX += margin, window.maxY += margin;
+        Polyline path = searchWindow(a, b, window);
+        if (!path.empty())
+            return path;
+        const bool coversAll = window.minX <= extent_.minX && window.minY <= extent_.minY &&
+                               window.maxX >= extent_.maxX && window.maxY >= extent_.maxY;
+        if (coversAll)
+            break;
+        margin *= 3;
+    }
+    return {};
+}
+
+Polyline ClearanceField::searchWindow(Vec2 a, Vec2 b, const BoundingBox& window) const {
+    std::vector<Vec2> pts{a, b};
+    for (const Vec2& c : cornerPoints_)
+        if (c.x >= window.minX && c.x <= window.maxX && c.y >= window.minY && c.y <= window.maxY)
+            pts.push_back(c);
+    const int n = static_cast<int>(pts.size());
+    // A* with lazy edge checks: visibility is tested only when a node is expanded.
+    std::vector<double> g(n, INFINITY);
+    std::vector<int> from(n, -1);
+    std::vector<char> closed(n, 0);
+    using Item = std::pair<double, int>;
+    std::priority_queue<Item, std::vector<Item>, std::greater<Item>> open;
+    g[0] = 0;
+    open.push({distance(a, b), 0});
+    while (!open.empty()) {
+        const int u = open.top().second;
+        open.pop();
+        if (closed[u])
+            continue;
+        closed[u] = 1;
+        if (u == 1)
+            break;
+        for (int v = 0; v < n; ++v) {
+            if (closed[v] || v == u)
+                continue;
+            const double nd = g[u] + distance(pts[u], pts[v]);
+            if (nd >= g[v])
+                continue;
+            if (!segmentIsClear(pts[u], pts[v]))
+                continue;
+            g[v] = nd;
+            from[v] = u;
+            open.push({nd + distance(pts[v], b), v});
+        }
+    }
+    if (from[1] < 0)
+        return {};
+    Polyline path;
+    for (int v = 1; v >= 0; v = from[v])
+        path.push_back(pts[v]);
+    std::reverse(path.begin(), path.end());
+    return path;
+}
+
+} // namespace fc

@@ -1,0 +1,43 @@
+// Where the robot centre may be: at least r from every wall (r = W/2 in the planning
+// model). Answers the two questions the decomposition and graph ask: which part of a
+// vertical line is clear, and a short collision-free path between two clear points.
+#pragma once
+
+#include "geometry/SegmentIndex.h"
+
+#include <utility>
+#include <vector>
+
+namespace fc {
+
+class ClearanceField {
+public:
+    // rings: the free space (boundary and holes) in the frame used for queries.
+    ClearanceField(const std::vector<Ring>& rings, double radius);
+
+    double radius() const { return radius_; }
+    const SegmentIndex& walls() const { return walls_; }
+
+    // Clear pieces of the vertical segment x = const, y in [yLow, yHigh], bottom to top.
+    std::vector<Interval> clearPieces(double x, double yLow, double yHigh) const;
+
+    bool isClear(Vec2 p) const;
+    bool segmentIsClear(Vec2 a, Vec2 b) const;
+    bool polylineIsClear(const Polyline& line) const;
+
+    // Shortest path found over a visibility graph of the clear points next to convex wall
+    // corners, searched in a window around a and b that grows when needed. Empty when a
+    // and b are not connected within the largest window.
+    Polyline findPath(Vec2 a, Vec2 b) const;
+
+private:
+    Polyline searchWindow(Vec2 a, Vec2 b, const BoundingBox& window) const;
+
+    SegmentIndex walls_;
+    double radius_;
+    double tolerance_;
+    std::vector<Vec2> cornerPoints_; // clear points hugging reflex corners of the free space
+    BoundingBox extent_;
+};
+
+} // namespace fc

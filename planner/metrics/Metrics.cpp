@@ -1,0 +1,312 @@
+// Coverage metrics of SPEC sect. 6 on a raster in the sweep frame.
+//
+// Model: the robot centre keeps W/2 from walls (the planning model; L <= W, so the body
+// fits). The sweepable area is what a head of width W can reach from the centre positions
+// the path can get to; the swept area is the stroke of the path with a W-wide head held
+// across the direction of travel: mitred joins and square caps at the path's two ends.
+#include "metrics/Metrics.h"
+
+#include "metrics/Raster.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace fc {
+namespace {
+
+constexpr double kMaxPixels = 16e6;          // keeps memory and time bounded on huge plans
+constexpr double kTurnThresholdDeg = 45.0;   // SPEC: heading change >= 45 degrees
+constexpr double kMitreLimitInWidths = 2.0;  // longer mitres are bevelled
+constexpr double kOverlapSweptFraction = 0.8; // share of the head over already swept area
+constexpr double kDegenerateLength = 1e-9;   // shorter segments carry no heading
+constexpr float kNeverSwept = std::numeric_limits<float>::infinity();
+
+// A non-degenerate path segment in the sweep frame, with its arc length from the start.
+struct PathSegment {
+    Vec2 a, b;
+    Vec2 direction; // unit
+    double length = 0.0;
+    double arcStart = 0.0;
+};
+
+std::vector<PathSegment> sweepFrameSegments(const Polyline& world, const Frame& frame) {
+    std::vector<PathSegment> segments;
+    double arc = 0.0;
+    for (size_t i = 1; i < world.size(); ++i) {
+        const Vec2 a = frame.toLocal(world[i - 1]), b = frame.toLocal(world[i]);
+        const double length = distance(a, b);
+        if (length <= kDegenerateLength)
+            continue;
+        segments.push_back({a, b, (b - a) * (1.0 / length), length, arc});
+        arc += length;
+    }
+    return segments;
+}
+
+Vec2 leftNormal(Vec2 direction) { return {-direction.y, direction.x}; }
+
+double chooseResolution(const MetricsInput& input, const BoundingBox& bounds) {
+    const double width = input.robot.coverageWidth;
+    double resolution = input.resolution > 0.0 ? input.resolution : width / 10.0;
+    auto pixelCount = [&](double res) {
+        const double margin = width + 2.0 * res;
+        return std::ceil((bounds.width() + 2.0 * margin) / res) *
+               std::ceil((bounds.height() + 2.0 * margin) / res);
+    };
+    while (pixelCount(resolution) > kMaxPixels)
+        resolution *= std::sqrt(pixelCount(resolution) / kMaxPixels) * 1.01;
+    return resolution;
+}
+
+// Raster of the arc length at which each pixel is first swept (kNeverSwept if never).
+class SweptRaster {
+public:
+    SweptRaster(const Grid& grid, double width)
+        : grid_(grid), fill_(grid), halfWidth_(0.5 * width), width_(width),
+          firstArc_(grid.size(), kNeverSwept) {}
+
+    void sweep(const std::vector<PathSegment>& segments) {
+        for (size_t i = 0; i < segments.size(); ++i) {
+            // Square caps: the path's first and last segments reach W/2 past its ends.
+            const double capBefore = i == 0 ? halfWidth_ : 0.0;
+            const double capAfter = i + 1 == segments.size() ? halfWidth_ : 0.0;
+            sweepRectangle(segments[i], capBefore, capAfter);
+            if (i + 1 < segments.size())
+                sweepJoin(segments[i], segments[i + 1]);
+        }
+    }
+
+    const std::vector<float>& firstArc() const { return firstArc_; }
+
+private:
+    void sweepRectangle(const PathSegment& s, double capBefore, double capAfter) {
+        const Vec2 side = leftNormal(s.direction) * halfWidth_;
+        const Vec2 start = s.a - s.direction * capBefore, end = s.b + s.direction * capAfter;
+        const Ring rectangle{start - side, end - side, end + side, start + side};
+        for (const Span& span : fill_.spans(rectangle)) {
+            for (int col = span.col0; col < span.col1; ++col) {
+                const double along = dot(grid_.centre(col, span.row) - s.a, s.direction);
+                markSwept(grid_.index(col, span.row),
+                          s.arcStart + std::clamp(along, 0.0, s.length));
+            }
+        }
+    }
+
+    // The wedge on the outer side of a turn, between the two rectangles' corners, up to
+    // the mitre point (or bevelled when the mitre would be longer than the limit).
+    void sweepJoin(const PathSegment& in, const PathSegment& out) {
+        const double turn = cross(in.direction, out.direction);
+        if (std::abs(turn) < 1e-12)
+            return; // straight on, or reversing: nothing sticks out
+        const double outerSign = turn > 0.0 ? -1.0 : 1.0;
+        const Vec2 n1 = leftNormal(in.direction) * outerSign;
+        const Vec2 n2 = leftNormal(out.direction) * outerSign;
+        const Vec2 vertex = in.b;
+        const Vec2 c1 = vertex + n1 * halfWidth_, c2 = vertex + n2 * halfWidth_;
+        const Vec2 bisector = n1 + n2;
+        const double bisectorNorm2 = dot(bisector, bisector);
+        Ring wedge{vertex, c1, c2};
+        if (bisectorNorm2 > 0.0 &&
+            2.0 * halfWidth_ / std::sqrt(bisectorNorm2) <= kMitreLimitInWidths * width_)
+            wedge = {vertex, c1, vertex + bisector * (2.0 * halfWidth_ / bisectorNorm2), c2};
+        for (const Span& span : fill_.spans(wedge))
+            for (int col = span.col0; col < span.col1; ++col)
+                markSwept(grid_.index(col, span.row), out.arcStart);
+    }
+
+    void markSwept(size_t pixel, double arc) {
+        firstArc_[pixel] = std::min(firstArc_[pixel], static_cast<float>(arc));
+    }
+
+    const Grid& grid_;
+    ScanlineFill fill_;
+    double halfWidth_, width_;
+    std::vector<float> firstArc_;
+};
+
+// Walks the path every half pixel. Marks where the head's cross-section lies mostly over
+// area swept earlier (more than W of path before), and collects the pixels it passes.
+struct PathWalk {
+    std::vector<Segment> overlaps; // sweep frame
+    std::vector<size_t> visitedPixels;
+};
+
+PathWalk walkPath(const std::vector<PathSegment>& segments, const Grid& grid,
+                  const std::vector<float>& firstArc, double width) {
+    PathWalk walk;
+    const double step = 0.5 * grid.resolution;
+    const int crossSamples = std::max(1, static_cast<int>(std::ceil(width / grid.resolution)));
+    const double minRunLength = grid.resolution;
+    for (const PathSegment& s : segments) {
+        const Vec2 across = leftNormal(s.direction);
+        const int steps = static_cast<int>(std::ceil(s.length / step));
+        bool inRun = false;
+        double runStart = 0.0, runEnd = 0.0;
+        auto closeRun = [&]() {
+            if (inRun && runEnd - runStart >= minRunLength)
+                walk.overlaps.push_back(
+                    {s.a + s.direction * runStart, s.a + s.direction * runEnd});
+            inRun = false;
+        };
+        for (int k = 0; k <= steps; ++k) {
+            const double t = std::min(k * step, s.length);
+            const Vec2 centre = s.a + s.direction * t;
+            int col = 0, row = 0;
+            if (grid.pixelOf(centre, col, row) &&
+                (walk.visitedPixels.empty() || walk.visitedPixels.back() != grid.index(col, row)))
+                walk.visitedPixels.push_back(grid.index(col, row));
+            // The last W of path is excluded so that the head never overlaps itself.
+            const float sweptBefore = static_cast<float>(s.arcStart + t - width);
+            int inside = 0, swept = 0;
+            for (int j = 0; j < crossSamples; ++j) {
+                const double offset = width * ((j + 0.5) / crossSamples - 0.5);
+                if (!grid.pixelOf(centre + across * offset, col, row))
+                    continue;
+                ++inside;
+                swept += firstArc[grid.index(col, row)] < sweptBefore;
+            }
+            if (inside > 0 && swept >= kOverlapSweptFraction * inside) {
+                if (!inRun)
+                    runStart = t;
+                inRun = true;
+                runEnd = t;
+            } else {
+                closeRun();
+            }
+        }
+        closeRun();
+    }
+    return walk;
+}
+
+// Joins overlap pieces that continue each other in a straight line (split at vertices).
+std::vector<Segment> mergeCollinear(const std::vector<Segment>& pieces, double tolerance) {
+    std::vector<Segment> merged;
+    for (const Segment& piece : pieces) {
+        if (!merged.empty()) {
+            Segment& last = merged.back();
+            const Vec2 d1 = last.b - last.a, d2 = piece.b - piece.a;
+            const bool continues = distance(last.b, piece.a) <= tolerance;
+            const bool straight = std::abs(cross(d1, d2)) <= 1e-9 * norm(d1) * norm(d2) &&
+                                  dot(d1, d2) > 0.0;
+            if (continues && straight) {
+                last.b = piece.b;
+                continue;
+            }
+        }
+        merged.push_back(piece);
+    }
+    return merged;
+}
+
+bool roomRequired(const MetricsInput& input, int room) {
+    if (input.requiredRooms.empty())
+        return true;
+    return room >= 0 && static_cast<size_t>(room) < input.requiredRooms.size() &&
+           input.requiredRooms[static_cast<size_t>(room)] != 0;
+}
+
+} // namespace
+
+int countTurns(const Polyline& points) {
+    const double threshold = std::cos(kTurnThresholdDeg * M_PI / 180.0);
+    int turns = 0;
+    bool haveHeading = false;
+    Vec2 heading;
+    for (size_t i = 1; i < points.size(); ++i) {
+        const Vec2 delta = points[i] - points[i - 1];
+        const double length = norm(delta);
+        if (length <= kDegenerateLength)
+            continue;
+        const Vec2 direction = delta * (1.0 / length);
+        // cos(change) <= cos(45 deg), with slack so that an exact 45 degrees counts.
+        if (haveHeading && dot(heading, direction) <= threshold + 1e-12)
+            ++turns;
+        heading = direction;
+        haveHeading = true;
+    }
+    return turns;
+}
+
+Metrics computeMetrics(const MetricsInput& input) {
+    Metrics metrics;
+    const double width = input.robot.coverageWidth;
+    metrics.length = polylineLength(input.path.points);
+    metrics.turns = countTurns(input.path.points);
+    metrics.time = (input.robot.speed > 0.0 ? metrics.length / input.robot.speed : 0.0) +
+                   metrics.turns * input.robot.turnTime;
+    const Decomposition* decomposition = input.decomposition;
+    if (decomposition == nullptr || decomposition->freeSpace.empty() || !(width > 0.0)) {
+        metrics.extra = metrics.length;
+        return metrics;
+    }
+    for (const Cell& cell : decomposition->cells)
+        metrics.cells += roomRequired(input, cell.room) ? 1 : 0;
+
+    BoundingBox bounds;
+    for (const Ring& ring : decomposition->freeSpace)
+        for (const Vec2& p : ring)
+            bounds.add(p);
+    const double resolution = chooseResolution(input, bounds);
+    // The margin keeps a blocked border around the free space and holds the head's stroke.
+    const Grid grid = Grid::covering(bounds, width + 2.0 * resolution, resolution);
+    ScanlineFill fill(grid);
+
+    Mask free(grid.size(), 0);
+    fill.paint(decomposition->freeSpace.data(), decomposition->freeSpace.size(), free);
+    Mask required(grid.size(), 0);
+    for (const Cell& cell : decomposition->cells) {
+        if (roomRequired(input, cell.room)) {
+            const Ring outline = cell.outline();
+            fill.paint(&outline, 1, required);
+        }
+    }
+
+    // Centre positions: distance between pixel centres >= W/2, which admits true wall
+    // distances down to W/2 minus half a pixel (the raster's tolerance).
+    const std::vector<float> distance2 = squaredDistanceToBlocked(free, grid.cols, grid.rows);
+    const double halfWidthPixels = 0.5 * width / resolution;
+    const float minDistance2 = static_cast<float>(halfWidthPixels * halfWidthPixels - 1e-6);
+    Mask centres(grid.size(), 0);
+    for (size_t i = 0; i < centres.size(); ++i)
+        centres[i] = free[i] && distance2[i] >= minDistance2;
+
+    const std::vector<PathSegment> segments =
+        sweepFrameSegments(input.path.points, decomposition->frame);
+    SweptRaster swept(grid, width);
+    swept.sweep(segments);
+    const PathWalk walk = walkPath(segments, grid, swept.firstArc(), width);
+
+    // Reachable: the centre components the path passes through (all of them if none).
+    const bool pathInRegion = std::any_of(walk.visitedPixels.begin(), walk.visitedPixels.end(),
+                                          [&](size_t pixel) { return centres[pixel] != 0; });
+    const Mask reachable =
+        pathInRegion ? floodFill(centres, grid.cols, grid.rows, walk.visitedPixels) : centres;
+    // The head (W x W around a centre pixel) reaches pixels whose centres lie within W/2
+    // minus the half pixel already granted to the centre region.
+    const int headRadius = std::max(0, static_cast<int>(std::ceil(halfWidthPixels - 1e-9)) - 1);
+    const Mask headReach = dilateSquare(reachable, grid.cols, grid.rows, headRadius);
+
+    size_t sweepablePixels = 0, coveredPixels = 0;
+    const std::vector<float>& firstArc = swept.firstArc();
+    for (size_t i = 0; i < grid.size(); ++i) {
+        if (headReach[i] && free[i] && required[i]) {
+            ++sweepablePixels;
+            coveredPixels += firstArc[i] != kNeverSwept;
+        }
+    }
+    metrics.sweepableArea = sweepablePixels * grid.pixelArea();
+    metrics.coveredArea = coveredPixels * grid.pixelArea();
+    metrics.coverage =
+        sweepablePixels > 0 ? static_cast<double>(coveredPixels) / sweepablePixels : 0.0;
+    metrics.ideal = metrics.sweepableArea / width;
+    metrics.extra = metrics.length - metrics.ideal;
+
+    for (const Segment& piece : mergeCollinear(walk.overlaps, 1e-6 * resolution))
+        metrics.overlaps.push_back(
+            {decomposition->frame.toWorld(piece.a), decomposition->frame.toWorld(piece.b)});
+    return metrics;
+}
+
+} // namespace fc
