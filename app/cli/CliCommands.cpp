@@ -1,10 +1,223 @@
 #include "CliCommands.h"
 
+#include "Arguments.h"
+#include "formats/PathIO.h"
+#include "formats/PlanIO.h"
+#include "pipeline/Planner.h"
+
+#include <cstdio>
 #include <iostream>
+#include <sstream>
 
 namespace fc::cli {
-int run(int, char**) {
-    std::cerr << "floorcover-cli: commands are being assembled in this build\n";
-    return 1;
+namespace {
+
+const char* kUsage = R"(usage: floorcover-cli COMMAND PLAN [options]
+
+commands:
+  plan PLAN     plan a coverage path; prints one JSON line of metrics
+                [--width W] [--robot-diameter L] [--cleaning-diameter D] [--speed V]
+                [--turn-time S] [--angle DEG|auto] [--rooms A,B] [--start X,Y] [--end X,Y]
+                [--solver NAME] [--model FILE] [--seed N] [--out FILE]
+                (--out format by extension: .geojson .csv .json .yaml)
+  graph PLAN    write the corner graph: [--width W] [--angle DEG] --out FILE.json
+  compare PLAN  run several solvers on the same query: [--solvers a,b,..] [--json]
+                and the plan options above
+
+PLAN is a GeoJSON floor plan (.geojson) or a FloorCover project (.fcproj).
+Exit codes: 0 success, 2 bad input (one line on stderr), 1 internal error.
+)";
+
+const std::vector<std::string> kPlanOptions{
+    "--width", "--robot-diameter", "--cleaning-diameter", "--speed", "--turn-time", "--angle",
+    "--rooms", "--start", "--end", "--solver", "--model", "--seed", "--out",
+    "--no-transition-cells"};
+
+// A request from the project file's settings, overridden by command-line options.
+PlanRequest requestFrom(const Project& project, const Arguments& args) {
+    PlanRequest r;
+    r.plan = project.plan;
+    r.robot = project.robot;
+    r.sweep = project.sweep;
+    r.solver = project.solver;
+    r.rooms = project.selectedRooms;
+    if (project.hasStart)
+        r.start = project.start;
+    if (project.hasEnd)
+        r.end = project.end;
+    if (auto w = args.number("--width")) {
+        r.robot.coverageWidth = *w;
+        // Keep L <= W <= D when only W is given; explicit values are validated as given.
+        if (!args.has("--cleaning-diameter") && r.robot.cleaningDiameter < *w)
+            r.robot.cleaningDiameter = *w;
+        if (!args.has("--robot-diameter") && r.robot.robotDiameter > *w)
+            r.robot.robotDiameter = *w;
+    }
+    if (auto v = args.number("--robot-diameter"))
+        r.robot.robotDiameter = *v;
+    if (auto v = args.number("--cleaning-diameter"))
+        r.robot.cleaningDiameter = *v;
+    if (auto v = args.number("--speed"))
+        r.robot.speed = *v;
+    if (auto v = args.number("--turn-time"))
+        r.robot.turnTime = *v;
+    if (auto a = args.text("--angle")) {
+        if (*a == "auto") {
+            r.sweep.automatic = true;
+        } else {
+            r.sweep.automatic = false;
+            r.sweep.angleDeg = *args.number("--angle");
+        }
+    }
+    if (args.has("--rooms"))
+        r.rooms = args.list("--rooms");
+    if (auto p = args.point("--start"))
+        r.start = *p;
+    if (auto p = args.point("--end"))
+        r.end = *p;
+    if (auto s = args.text("--solver"))
+        r.solver = *s;
+    if (auto m = args.text("--model"))
+        r.modelPath = *m;
+    if (auto s = args.integer("--seed"))
+        r.seed = static_cast<std::uint64_t>(*s);
+    r.transitionCells = !args.has("--no-transition-cells");
+    r.robot.validate();
+    return r;
 }
+
+const std::string& planPath(const Arguments& args) {
+    if (args.positional().size() != 1)
+        throw InputError("expected exactly one PLAN file (see floorcover-cli --help)");
+    return args.positional()[0];
+}
+
+int commandPlan(const Arguments& args) {
+    args.allowOnly(kPlanOptions);
+    const std::string& path = planPath(args);
+    const Project project = loadProjectFile(path);
+    PlanRequest request;
+    PlanResult result;
+    try {
+        request = requestFrom(project, args);
+        result = planCoverage(request);
+    } catch (const InputError& e) {
+        throw InputError(path + ": " + e.what());
+    }
+    for (const std::string& w : result.warnings)
+        std::cerr << "floorcover-cli: warning: " << path << ": " << w << "\n";
+    if (auto out = args.text("--out")) {
+        PathExportInfo info;
+        info.solver = result.solution.solver;
+        info.robot = request.robot;
+        info.metrics = result.metrics;
+        writeFileAtomically(*out, pathToFormat(*out, result.path, info));
+    }
+    std::cout << metricsJsonLine(result.solution.solver, result.metrics) << std::endl;
+    return 0;
+}
+
+int commandGraph(const Arguments& args) {
+    args.allowOnly({"--width", "--angle", "--out", "--robot-diameter", "--no-transition-cells"});
+    const std::string& path = planPath(args);
+    const auto out = args.text("--out");
+    if (!out)
+        throw InputError("graph needs --out FILE.json");
+    const Project project = loadProjectFile(path);
+    try {
+        PlanRequest request = requestFrom(project, args);
+        if (request.sweep.automatic)
+            throw InputError("graph needs a fixed --angle (not auto)");
+        const PreparedPlan prepared = preparePlan(request.plan, request.robot,
+                                                  request.sweep.angleDeg, request.transitionCells);
+        writeFileAtomically(*out, graphToJson(prepared.graph, prepared.decomposition));
+        std::cout << "{\"nodes\":" << prepared.graph.nodes.size()
+                  << ",\"edges\":" << prepared.graph.edges.size()
+                  << ",\"cells\":" << prepared.graph.cells.size() << "}" << std::endl;
+    } catch (const InputError& e) {
+        throw InputError(path + ": " + e.what());
+    }
+    return 0;
+}
+
+int commandCompare(const Arguments& args) {
+    std::vector<std::string> allowed = kPlanOptions;
+    allowed.push_back("--solvers");
+    allowed.push_back("--json");
+    args.allowOnly(allowed);
+    const std::string& path = planPath(args);
+    const Project project = loadProjectFile(path);
+    std::vector<std::string> solvers = args.list("--solvers");
+    if (solvers.empty())
+        solvers = solverNames();
+    const bool json = args.has("--json");
+    PlanRequest request;
+    try {
+        request = requestFrom(project, args);
+    } catch (const InputError& e) {
+        throw InputError(path + ": " + e.what());
+    }
+    if (!json)
+        std::printf("%-14s %10s %10s %10s %6s %9s %10s %11s %9s\n", "solver", "length_m",
+                    "ideal_m", "extra_m", "turns", "coverage", "time_s", "graph_cost",
+                    "seconds");
+    int failures = 0;
+    for (const std::string& solver : solvers) {
+        request.solver = solver;
+        try {
+            const PlanResult r = planCoverage(request);
+            const Metrics& m = r.metrics;
+            if (json)
+                std::cout << metricsJsonLine(solver, m) << std::endl;
+            else
+                std::printf("%-14s %10.2f %10.2f %10.2f %6d %8.2f%% %10.1f %11.3f %9.3f\n",
+                            solver.c_str(), m.length, m.ideal, m.extra, m.turns,
+                            100.0 * m.coverage, m.time, m.graphCost, m.seconds);
+        } catch (const SolverError& e) {
+            ++failures;
+            if (json)
+                std::cout << "{\"solver\":\"" << solver << "\",\"error\":\"" << e.what()
+                          << "\"}" << std::endl;
+            else
+                std::printf("%-14s refused: %s\n", solver.c_str(), e.what());
+        } catch (const InputError& e) {
+            throw InputError(path + ": " + e.what());
+        }
+    }
+    return failures == static_cast<int>(solvers.size()) ? 2 : 0;
+}
+
+} // namespace
+
+int run(int argc, char** argv) {
+    if (argc < 2 || std::string(argv[1]) == "--help" || std::string(argv[1]) == "-h") {
+        std::cout << kUsage;
+        return argc < 2 ? 2 : 0;
+    }
+    const std::string command = argv[1];
+    try {
+        const Arguments args(argc, argv, 2, {"--json", "--no-transition-cells", "--help"});
+        if (args.has("--help")) {
+            std::cout << kUsage;
+            return 0;
+        }
+        if (command == "plan")
+            return commandPlan(args);
+        if (command == "graph")
+            return commandGraph(args);
+        if (command == "compare")
+            return commandCompare(args);
+        throw InputError("unknown command \"" + command + "\" (plan, graph, compare)");
+    } catch (const InputError& e) {
+        std::cerr << "floorcover-cli: error: " << e.what() << std::endl;
+        return 2;
+    } catch (const SolverError& e) {
+        std::cerr << "floorcover-cli: error: " << e.what() << std::endl;
+        return 2;
+    } catch (const std::exception& e) {
+        std::cerr << "floorcover-cli: internal error: " << e.what() << std::endl;
+        return 1;
+    }
+}
+
 } // namespace fc::cli

@@ -237,6 +237,7 @@ Decomposition decompose(const Plan& plan, const DecompositionOptions& options) {
         const int rooms = detail::assignLeftovers(sweep, static_cast<int>(plan.rooms.size()));
         for (int i = static_cast<int>(plan.rooms.size()); i < rooms; ++i)
             out.roomNames.push_back("Unassigned " + std::to_string(i - plan.rooms.size() + 1));
+        detail::fuseSameRoomStacks(sweep, 1e-9 * extent);
     }
 
     // Merge trapezoids while the slice connectivity inside their room does not change.

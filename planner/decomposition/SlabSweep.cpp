@@ -41,6 +41,67 @@ struct ActiveEdge {
 
 } // namespace
 
+void computeLinks(SlabSweep& out, double epsY) {
+    out.links.clear();
+    out.linksOfTrapezoid.assign(out.trapezoids.size(), {});
+    const int slabCount = static_cast<int>(out.slabMembers.size());
+    for (int k = 0; k + 1 < slabCount; ++k) {
+        const auto& L = out.slabMembers[k];
+        const auto& R = out.slabMembers[k + 1];
+        size_t i = 0, j = 0;
+        while (i < L.size() && j < R.size()) {
+            const Trapezoid& a = out.trapezoids[L[i]];
+            const Trapezoid& b = out.trapezoids[R[j]];
+            const double y0 = std::max(a.fb, b.fa), y1 = std::min(a.cb, b.ca);
+            if (y1 - y0 > epsY) {
+                const int id = static_cast<int>(out.links.size());
+                out.links.push_back({L[i], R[j], out.xs[k + 1], y0, y1});
+                out.linksOfTrapezoid[L[i]].push_back(id);
+                out.linksOfTrapezoid[R[j]].push_back(id);
+            }
+            if (a.cb < b.ca)
+                ++i;
+            else
+                ++j;
+        }
+    }
+}
+
+void fuseSameRoomStacks(SlabSweep& sweep, double epsY) {
+    // Trapezoids separated only by a room border that now has the same room on both
+    // sides (a door strip given to its room) become one trapezoid.
+    std::vector<int> upperOf(sweep.trapezoids.size(), -1);
+    for (const TrapezoidStack& s : sweep.stacks)
+        upperOf[s.lower] = s.upper;
+    std::vector<Trapezoid> fused;
+    std::vector<std::vector<int>> members(sweep.slabMembers.size());
+    std::vector<TrapezoidStack> stacks;
+    std::vector<int> newId(sweep.trapezoids.size(), -1);
+    for (size_t k = 0; k < sweep.slabMembers.size(); ++k) {
+        for (int t : sweep.slabMembers[k]) {
+            if (newId[t] >= 0)
+                continue;
+            Trapezoid z = sweep.trapezoids[t];
+            newId[t] = static_cast<int>(fused.size());
+            int u = upperOf[t];
+            while (u >= 0 && sweep.trapezoids[u].room == z.room) {
+                z.ca = sweep.trapezoids[u].ca, z.cb = sweep.trapezoids[u].cb;
+                newId[u] = newId[t];
+                u = upperOf[u];
+            }
+            members[k].push_back(newId[t]);
+            fused.push_back(z);
+        }
+    }
+    for (const TrapezoidStack& s : sweep.stacks)
+        if (newId[s.lower] != newId[s.upper])
+            stacks.push_back({newId[s.lower], newId[s.upper]});
+    sweep.trapezoids = std::move(fused);
+    sweep.slabMembers = std::move(members);
+    sweep.stacks = std::move(stacks);
+    computeLinks(sweep, epsY);
+}
+
 SlabSweep sweepSlabs(const std::vector<Ring>& freeRings, const std::vector<Ring>& rooms,
                      double epsY) {
     SlabSweep out;
@@ -136,28 +197,7 @@ SlabSweep sweepSlabs(const std::vector<Ring>& freeRings, const std::vector<Ring>
         }
     }
 
-    // Links across each slab border: two-pointer merge of the sorted stacks.
-    out.linksOfTrapezoid.resize(out.trapezoids.size());
-    for (int k = 0; k + 1 < slabCount; ++k) {
-        const auto& L = out.slabMembers[k];
-        const auto& R = out.slabMembers[k + 1];
-        size_t i = 0, j = 0;
-        while (i < L.size() && j < R.size()) {
-            const Trapezoid& a = out.trapezoids[L[i]];
-            const Trapezoid& b = out.trapezoids[R[j]];
-            const double y0 = std::max(a.fb, b.fa), y1 = std::min(a.cb, b.ca);
-            if (y1 - y0 > epsY) {
-                const int id = static_cast<int>(out.links.size());
-                out.links.push_back({L[i], R[j], out.xs[k + 1], y0, y1});
-                out.linksOfTrapezoid[L[i]].push_back(id);
-                out.linksOfTrapezoid[R[j]].push_back(id);
-            }
-            if (a.cb < b.ca)
-                ++i;
-            else
-                ++j;
-        }
-    }
+    computeLinks(out, epsY);
     return out;
 }
 

@@ -49,4 +49,9 @@ SlabSweep sweepSlabs(const std::vector<Ring>& freeRings, const std::vector<Ring>
 // starting at roomCount. Returns the number of rooms after assignment.
 int assignLeftovers(SlabSweep& sweep, int roomCount);
 
+// Recomputes links from the trapezoids (after trapezoids changed).
+void computeLinks(SlabSweep& sweep, double epsY);
+// Fuses trapezoids stacked on a room border with the same room on both sides; relinks.
+void fuseSameRoomStacks(SlabSweep& sweep, double epsY);
+
 } // namespace fc::detail

@@ -1,6 +1,7 @@
 #include "decomposition/StripePlanner.h"
 
 #include <algorithm>
+#include <cmath>
 #include <functional>
 
 namespace fc::detail {
@@ -96,9 +97,78 @@ Polyline traceBorder(const Cell& cell, double xa, double xb, bool top,
     return simple;
 }
 
+namespace {
+
+// First x from `from` towards `to` where the cell has a clear span (bisected to 1e-6 W);
+// NaN when there is none. Needed where a cell ends in a wedge: the clear region then
+// starts further in than W/2 from the cell's end.
+double firstFeasible(const Cell& cell, double from, double to, const ClearanceField& field) {
+    const double step = 0.125 * field.radius() * (to > from ? 1 : -1);
+    const int n = static_cast<int>(std::ceil((to - from) / step));
+    double previous = from;
+    for (int i = 1; i <= n; ++i) {
+        const double x = i == n ? to : from + i * step;
+        if (!spanAt(cell, x, field).empty()) {
+            double bad = previous, good = x;
+            for (int it = 0; it < 40 && std::abs(good - bad) > 1e-6 * field.radius(); ++it) {
+                const double mid = 0.5 * (good + bad);
+                (spanAt(cell, mid, field).empty() ? bad : good) = mid;
+            }
+            return good;
+        }
+        previous = x;
+    }
+    return NAN;
+}
+
+std::vector<double> evenStripes(double a, double b, double w) {
+    const int n = std::max(1, static_cast<int>(std::ceil((b - a) / w - 1e-9)) + 1);
+    if (n == 1 || b - a < 1e-9 * w)
+        return {0.5 * (a + b)};
+    std::vector<double> xs(n);
+    for (int i = 0; i < n; ++i)
+        xs[i] = a + i * (b - a) / (n - 1);
+    return xs;
+}
+
+// Moves the outer stripes inward where the cell's ends are too tight for the robot.
+void fitStripes(Cell& cell, const ClearanceField& field) {
+    if (cell.stripes.empty())
+        return;
+    const double w = 2 * field.radius();
+    if (cell.stripes.size() == 1) { // one stripe: the nearest clear x to the planned one
+        const double x = cell.stripes[0];
+        if (!spanAt(cell, x, field).empty())
+            return;
+        const double right = firstFeasible(cell, x, cell.x1, field);
+        const double left = firstFeasible(cell, x, cell.x0, field);
+        if (!std::isnan(right) || !std::isnan(left))
+            cell.stripes[0] = std::isnan(left) || (!std::isnan(right) && right - x < x - left)
+                                  ? right
+                                  : left;
+        return;
+    }
+    double a = cell.stripes.front(), b = cell.stripes.back();
+    const bool aBad = spanAt(cell, a, field).empty(), bBad = spanAt(cell, b, field).empty();
+    if (!aBad && !bBad)
+        return;
+    const double fa = aBad ? firstFeasible(cell, a, cell.x1, field) : a;
+    const double fb = bBad ? firstFeasible(cell, b, cell.x0, field) : b;
+    if (std::isnan(fa) || std::isnan(fb))
+        return; // nothing clear: the cell stays unreachable
+    a = fa, b = fb;
+    if (b < a)
+        std::swap(a, b);
+    cell.stripes = cell.kind == CellKind::Transition ? std::vector<double>{0.5 * (a + b)}
+                                                     : evenStripes(a, b, w);
+}
+
+} // namespace
+
 void planStripeSpans(Decomposition& dec) {
     const ClearanceField field(dec.freeSpace, 0.5 * dec.coverageWidth);
     for (Cell& cell : dec.cells) {
+        fitStripes(cell, field);
         cell.stripeSpans.clear();
         for (double x : cell.stripes)
             cell.stripeSpans.push_back(spanAt(cell, x, field));

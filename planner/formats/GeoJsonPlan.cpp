@@ -116,16 +116,14 @@ struct PlanReader {
     json boundaryProperties;
     std::map<std::string, int> roomFeatures; // name -> feature number
 
-    void addBoundary(const std::vector<json>& polygons, int featureNumber,
-                     const json& properties) {
+    void addBoundary(const std::vector<json>& polygons, int featureNumber, const json& properties) {
         const std::string label = "boundary (feature " + std::to_string(featureNumber) + ")";
         if (boundaryFeature != 0)
             throw InputError("two boundaries (features " + std::to_string(boundaryFeature) +
                              " and " + std::to_string(featureNumber) +
                              "); a plan needs exactly one");
         if (polygons.size() > 1)
-            throw InputError(label + " is a MultiPolygon with " +
-                             std::to_string(polygons.size()) +
+            throw InputError(label + " is a MultiPolygon with " + std::to_string(polygons.size()) +
                              " parts; the free space must be one polygon");
         boundaryFeature = featureNumber;
         boundaryProperties = properties;
@@ -159,8 +157,7 @@ struct PlanReader {
                              std::to_string(previous->second) + " and " +
                              std::to_string(featureNumber) + ")");
         if (polygons.size() > 1)
-            throw InputError(label + " is a MultiPolygon with " +
-                             std::to_string(polygons.size()) +
+            throw InputError(label + " is a MultiPolygon with " + std::to_string(polygons.size()) +
                              " parts; split it into separately named rooms");
         if (polygons.front().size() > 1)
             throw InputError(label + " has a hole; model the hole as an obstacle instead");
@@ -182,7 +179,7 @@ Plan readGeoJsonPlan(const std::string& text) {
     if (type != "FeatureCollection")
         throw InputError("not a GeoJSON FeatureCollection (type is \"" + type + "\")");
     if (!root.contains("features") || !root["features"].is_array())
-        throw InputError("FeatureCollection has no \"features\" array");
+        throw InputError("the FeatureCollection has no \"features\" array");
 
     PlanReader reader;
     const json& features = root["features"];
@@ -230,9 +227,9 @@ std::string writeGeoJsonPlan(const Plan& plan) {
     if (!plan.name.empty())
         root["name"] = plan.name;
     if (plan.epsg)
-        root["crs"] = {{"type", "name"},
-                       {"properties",
-                        {{"name", "urn:ogc:def:crs:EPSG::" + std::to_string(*plan.epsg)}}}};
+        root["crs"] = {
+            {"type", "name"},
+            {"properties", {{"name", "urn:ogc:def:crs:EPSG::" + std::to_string(*plan.epsg)}}}};
     auto polygonFeature = [](ordered_json properties, ordered_json rings) {
         ordered_json feature;
         feature["type"] = "Feature";
@@ -253,7 +250,7 @@ std::string writeGeoJsonPlan(const Plan& plan) {
         features.push_back(polygonFeature({{"role", "room"}, {"name", room.name}}, rings));
     }
     root["features"] = std::move(features);
-    return root.dump(1) + "\n";
+    return root.dump(1, ' ', false, nlohmann::ordered_json::error_handler_t::replace) + "\n";
 }
 
 } // namespace fc

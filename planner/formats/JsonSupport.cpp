@@ -101,8 +101,7 @@ Ring ringFromJson(const nlohmann::json& positions, const std::string& what) {
     for (const Vec2& p : ring)
         distinct.emplace_back(p.x, p.y);
     std::sort(distinct.begin(), distinct.end());
-    const size_t distinctCount =
-        std::unique(distinct.begin(), distinct.end()) - distinct.begin();
+    const size_t distinctCount = std::unique(distinct.begin(), distinct.end()) - distinct.begin();
     if (distinctCount < 3)
         throw InputError(what + " has only " + std::to_string(distinctCount) +
                          " distinct points; a ring needs at least 3");

@@ -4,7 +4,6 @@
 #include "model/Plan.h"
 
 #include <nlohmann/json.hpp>
-
 #include <string>
 
 namespace fc::formats {

@@ -5,6 +5,7 @@
 #include "metrics/Metrics.h"
 #include "path/CoveragePath.h"
 
+#include <optional>
 #include <string>
 
 namespace fc {
@@ -14,6 +15,7 @@ struct PathExportInfo {
     RobotProfile robot;
     Metrics metrics;
     std::string frameId = "map"; // ROS frame
+    std::optional<int> epsg;     // the plan's coordinate reference, written to GeoJSON
 };
 
 std::string metricsJsonLine(const std::string& solver, const Metrics& metrics);

@@ -109,10 +109,11 @@ std::vector<Interval> ClearanceField::clearPieces(double x, double yLow, double 
         if (f.lo > cursor && f.lo > yLow)
             pieces.push_back({cursor, std::min(f.lo, yHigh)});
         cursor = std::max(cursor, f.hi);
-        if (cursor >= yHigh)
+        if (cursor > yHigh)
             break;
     }
-    if (cursor < yHigh)
+    // A gap exactly as wide as the robot leaves a clear piece of zero length: keep it.
+    if (cursor <= yHigh)
         pieces.push_back({cursor, yHigh});
     pieces.erase(std::remove_if(pieces.begin(), pieces.end(),
                                 [](const Interval& i) { return i.hi < i.lo; }),

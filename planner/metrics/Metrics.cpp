@@ -3,7 +3,10 @@
 // Model: the robot centre keeps W/2 from walls (the planning model; L <= W, so the body
 // fits). The sweepable area is what a head of width W can reach from the centre positions
 // the path can get to; the swept area is the stroke of the path with a W-wide head held
-// across the direction of travel: mitred joins and square caps at the path's two ends.
+// across the direction of travel: each segment sweeps its W-wide rectangle without
+// extension, turns add the mitred wedge, and the path's two ends get square caps (W/2
+// past the end, as a square line cap does), which SPEC's "square path ends" asks for and
+// which lets a boustrophedon from W/2 inside a room sweep the room's end strips.
 #include "metrics/Metrics.h"
 
 #include "metrics/Raster.h"
@@ -15,11 +18,11 @@
 namespace fc {
 namespace {
 
-constexpr double kMaxPixels = 16e6;          // keeps memory and time bounded on huge plans
-constexpr double kTurnThresholdDeg = 45.0;   // SPEC: heading change >= 45 degrees
-constexpr double kMitreLimitInWidths = 2.0;  // longer mitres are bevelled
+constexpr double kMaxPixels = 16e6;           // keeps memory and time bounded on huge plans
+constexpr double kTurnThresholdDeg = 45.0;    // SPEC: heading change >= 45 degrees
+constexpr double kMitreLimitInWidths = 2.0;   // longer mitres are bevelled
 constexpr double kOverlapSweptFraction = 0.8; // share of the head over already swept area
-constexpr double kDegenerateLength = 1e-9;   // shorter segments carry no heading
+constexpr double kDegenerateLength = 1e-9;    // shorter segments carry no heading
 constexpr float kNeverSwept = std::numeric_limits<float>::infinity();
 
 // A non-degenerate path segment in the sweep frame, with its arc length from the start.
@@ -44,7 +47,9 @@ std::vector<PathSegment> sweepFrameSegments(const Polyline& world, const Frame& 
     return segments;
 }
 
-Vec2 leftNormal(Vec2 direction) { return {-direction.y, direction.x}; }
+Vec2 leftNormal(Vec2 direction) {
+    return {-direction.y, direction.x};
+}
 
 double chooseResolution(const MetricsInput& input, const BoundingBox& bounds) {
     const double width = input.robot.coverageWidth;
@@ -137,17 +142,29 @@ PathWalk walkPath(const std::vector<PathSegment>& segments, const Grid& grid,
     PathWalk walk;
     const double step = 0.5 * grid.resolution;
     const int crossSamples = std::max(1, static_cast<int>(std::ceil(width / grid.resolution)));
+    // A run of overlapping samples may continue across vertices (one piece per segment);
+    // runs shorter than a pixel in all are raster noise and dropped.
     const double minRunLength = grid.resolution;
+    bool inRun = false;
+    size_t runFirstPiece = 0;
+    double runLength = 0.0;
+    auto closeRun = [&]() {
+        if (inRun && runLength < minRunLength)
+            walk.overlaps.resize(runFirstPiece);
+        inRun = false;
+    };
     for (const PathSegment& s : segments) {
         const Vec2 across = leftNormal(s.direction);
         const int steps = static_cast<int>(std::ceil(s.length / step));
-        bool inRun = false;
-        double runStart = 0.0, runEnd = 0.0;
-        auto closeRun = [&]() {
-            if (inRun && runEnd - runStart >= minRunLength)
+        bool inPiece = false;
+        double pieceStart = 0.0, pieceEnd = 0.0;
+        auto closePiece = [&]() {
+            if (inPiece && pieceEnd - pieceStart > kDegenerateLength) {
                 walk.overlaps.push_back(
-                    {s.a + s.direction * runStart, s.a + s.direction * runEnd});
-            inRun = false;
+                    {s.a + s.direction * pieceStart, s.a + s.direction * pieceEnd});
+                runLength += pieceEnd - pieceStart;
+            }
+            inPiece = false;
         };
         for (int k = 0; k <= steps; ++k) {
             const double t = std::min(k * step, s.length);
@@ -167,16 +184,23 @@ PathWalk walkPath(const std::vector<PathSegment>& segments, const Grid& grid,
                 swept += firstArc[grid.index(col, row)] < sweptBefore;
             }
             if (inside > 0 && swept >= kOverlapSweptFraction * inside) {
-                if (!inRun)
-                    runStart = t;
-                inRun = true;
-                runEnd = t;
+                if (!inRun) {
+                    inRun = true;
+                    runFirstPiece = walk.overlaps.size();
+                    runLength = 0.0;
+                }
+                if (!inPiece)
+                    pieceStart = t;
+                inPiece = true;
+                pieceEnd = t;
             } else {
+                closePiece();
                 closeRun();
             }
         }
-        closeRun();
+        closePiece(); // the run goes on if the next segment starts overlapping too
     }
+    closeRun();
     return walk;
 }
 
@@ -188,8 +212,8 @@ std::vector<Segment> mergeCollinear(const std::vector<Segment>& pieces, double t
             Segment& last = merged.back();
             const Vec2 d1 = last.b - last.a, d2 = piece.b - piece.a;
             const bool continues = distance(last.b, piece.a) <= tolerance;
-            const bool straight = std::abs(cross(d1, d2)) <= 1e-9 * norm(d1) * norm(d2) &&
-                                  dot(d1, d2) > 0.0;
+            const bool straight =
+                std::abs(cross(d1, d2)) <= 1e-9 * norm(d1) * norm(d2) && dot(d1, d2) > 0.0;
             if (continues && straight) {
                 last.b = piece.b;
                 continue;
@@ -288,18 +312,17 @@ Metrics computeMetrics(const MetricsInput& input) {
     const int headRadius = std::max(0, static_cast<int>(std::ceil(halfWidthPixels - 1e-9)) - 1);
     const Mask headReach = dilateSquare(reachable, grid.cols, grid.rows, headRadius);
 
-    size_t sweepablePixels = 0, coveredPixels = 0;
+    double sweepablePixels = 0.0, coveredPixels = 0.0; // counts
     const std::vector<float>& firstArc = swept.firstArc();
     for (size_t i = 0; i < grid.size(); ++i) {
         if (headReach[i] && free[i] && required[i]) {
-            ++sweepablePixels;
-            coveredPixels += firstArc[i] != kNeverSwept;
+            sweepablePixels += 1.0;
+            coveredPixels += firstArc[i] != kNeverSwept ? 1.0 : 0.0;
         }
     }
     metrics.sweepableArea = sweepablePixels * grid.pixelArea();
     metrics.coveredArea = coveredPixels * grid.pixelArea();
-    metrics.coverage =
-        sweepablePixels > 0 ? static_cast<double>(coveredPixels) / sweepablePixels : 0.0;
+    metrics.coverage = sweepablePixels > 0.0 ? coveredPixels / sweepablePixels : 0.0;
     metrics.ideal = metrics.sweepableArea / width;
     metrics.extra = metrics.length - metrics.ideal;
 

@@ -29,7 +29,7 @@ bool Grid::pixelOf(Vec2 p, int& col, int& row) const {
 }
 
 const std::vector<Span>& ScanlineFill::spans(const Ring* rings, size_t ringCount) {
-    crossings_.clear();
+    edges_.clear();
     spans_.clear();
     const double res = grid_.resolution;
     // First pixel index whose centre is >= v along one axis. Every edge uses this one
@@ -38,34 +38,64 @@ const std::vector<Span>& ScanlineFill::spans(const Ring* rings, size_t ringCount
     auto firstCentreAtOrAbove = [res](double v, double origin) {
         return std::ceil((v - origin) / res - 0.5);
     };
+    int minRow = grid_.rows, endRow = 0;
     for (size_t r = 0; r < ringCount; ++r) {
         const Ring& ring = rings[r];
         const size_t n = ring.size();
         for (size_t i = 0; i < n; ++i) {
             const Vec2 a = ring[i], b = ring[(i + 1) % n];
+            if (a.y == b.y)
+                continue; // horizontal edges never cross a row centre line
             const double rowA = firstCentreAtOrAbove(a.y, grid_.originY);
             const double rowB = firstCentreAtOrAbove(b.y, grid_.originY);
-            const double lo = std::max(std::min(rowA, rowB), 0.0);
-            const double hi = std::min(std::max(rowA, rowB), static_cast<double>(grid_.rows));
-            const double slope = (b.x - a.x) / (b.y - a.y);
-            for (int row = static_cast<int>(lo); row < static_cast<int>(hi); ++row) {
-                const double y = grid_.originY + (row + 0.5) * res;
-                crossings_.push_back({row, a.x + (y - a.y) * slope});
-            }
+            const int lo = static_cast<int>(std::max(std::min(rowA, rowB), 0.0));
+            const int hi =
+                static_cast<int>(std::min(std::max(rowA, rowB), static_cast<double>(grid_.rows)));
+            if (lo >= hi)
+                continue;
+            edges_.push_back({lo, hi, a, (b.x - a.x) / (b.y - a.y)});
+            minRow = std::min(minRow, lo);
+            endRow = std::max(endRow, hi);
         }
     }
-    std::sort(crossings_.begin(), crossings_.end(), [](const Crossing& p, const Crossing& q) {
-        return p.row != q.row ? p.row < q.row : p.x < q.x;
-    });
-    const double maxCol = grid_.cols;
-    for (size_t i = 0; i + 1 < crossings_.size(); i += 2) {
-        const double c0 = std::clamp(firstCentreAtOrAbove(crossings_[i].x, grid_.originX), 0.0,
-                                     maxCol);
-        const double c1 = std::clamp(firstCentreAtOrAbove(crossings_[i + 1].x, grid_.originX),
-                                     0.0, maxCol);
-        if (c1 > c0)
-            spans_.push_back({crossings_[i].row, static_cast<int>(c0), static_cast<int>(c1)});
+    if (edges_.empty())
+        return spans_;
+
+    // Bucket the crossings by row (counting sort), then sort each row's few x values.
+    if (rowEnd_.size() != static_cast<size_t>(grid_.rows))
+        rowEnd_.assign(static_cast<size_t>(grid_.rows), 0);
+    for (const EdgeRows& edge : edges_)
+        for (int row = edge.lo; row < edge.hi; ++row)
+            ++rowEnd_[static_cast<size_t>(row)];
+    size_t total = 0;
+    for (int row = minRow; row < endRow; ++row) {
+        total += rowEnd_[static_cast<size_t>(row)];
+        rowEnd_[static_cast<size_t>(row)] = total;
     }
+    xs_.resize(total);
+    for (const EdgeRows& edge : edges_) {
+        for (int row = edge.lo; row < edge.hi; ++row) {
+            const double y = grid_.originY + (row + 0.5) * res;
+            xs_[--rowEnd_[static_cast<size_t>(row)]] = edge.a.x + (y - edge.a.y) * edge.slope;
+        }
+    }
+    // rowEnd_[row] now holds the start of the row; the next row's start is its end.
+    const double maxCol = grid_.cols;
+    for (int row = minRow; row < endRow; ++row) {
+        const size_t begin = rowEnd_[static_cast<size_t>(row)];
+        const size_t end = row + 1 < endRow ? rowEnd_[static_cast<size_t>(row) + 1] : total;
+        std::sort(xs_.begin() + static_cast<std::ptrdiff_t>(begin),
+                  xs_.begin() + static_cast<std::ptrdiff_t>(end));
+        for (size_t i = begin; i + 1 < end; i += 2) {
+            const double c0 = std::clamp(firstCentreAtOrAbove(xs_[i], grid_.originX), 0.0, maxCol);
+            const double c1 =
+                std::clamp(firstCentreAtOrAbove(xs_[i + 1], grid_.originX), 0.0, maxCol);
+            if (c1 > c0)
+                spans_.push_back({row, static_cast<int>(c0), static_cast<int>(c1)});
+        }
+    }
+    // Leave the bucket array zeroed for the next call, touching only the rows used.
+    std::fill(rowEnd_.begin() + minRow, rowEnd_.begin() + endRow, size_t{0});
     return spans_;
 }
 

@@ -54,12 +54,15 @@ public:
     void paint(const Ring* rings, size_t ringCount, Mask& mask);
 
 private:
-    struct Crossing {
-        int row;
-        double x;
+    struct EdgeRows {
+        int lo, hi; // rows [lo, hi) whose centre line the edge crosses
+        Vec2 a;
+        double slope; // dx / dy
     };
     const Grid& grid_;
-    std::vector<Crossing> crossings_;
+    std::vector<EdgeRows> edges_;
+    std::vector<size_t> rowEnd_; // per row; all zero between calls
+    std::vector<double> xs_;     // crossings, grouped by row
     std::vector<Span> spans_;
 };
 

@@ -19,11 +19,11 @@ void RobotProfile::validate() const {
     else if (!std::isfinite(turnTime) || turnTime < 0.0)
         msg << "turn time must be zero or positive (got " << turnTime << ")";
     else if (robotDiameter > coverageWidth + 1e-12)
-        msg << "robot diameter L = " << robotDiameter << " m exceeds coverage width W = "
-            << coverageWidth << " m (need L <= W <= D)";
+        msg << "robot diameter L = " << robotDiameter
+            << " m exceeds coverage width W = " << coverageWidth << " m (need L <= W <= D)";
     else if (coverageWidth > cleaningDiameter + 1e-12)
-        msg << "coverage width W = " << coverageWidth << " m exceeds cleaning diameter D = "
-            << cleaningDiameter << " m (need L <= W <= D)";
+        msg << "coverage width W = " << coverageWidth
+            << " m exceeds cleaning diameter D = " << cleaningDiameter << " m (need L <= W <= D)";
     else if (coverageWidth > 1000.0)
         msg << "coverage width W = " << coverageWidth << " m is not a plausible robot size";
     if (!msg.str().empty())

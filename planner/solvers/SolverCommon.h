@@ -6,6 +6,7 @@
 #include "solvers/Solver.h"
 
 #include <cstdint>
+#include <limits>
 #include <vector>
 
 namespace fc::solver_detail {

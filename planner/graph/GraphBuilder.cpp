@@ -1,0 +1,183 @@
+// Builds the corner graph (SPEC sect. 3) from a decomposition: four corners per primary
+// cell, two per transition cell, coverage pairs by stripe parity, contour-following edges
+// and inter-cell edges with collision-free geometry.
+#include "decomposition/StripePlanner.h"
+#include "graph/CornerGraph.h"
+
+#include <set>
+
+namespace fc {
+namespace {
+
+using detail::traceBorder;
+
+struct StripeRun {
+    double x;
+    Interval span;
+};
+
+class GraphBuilder {
+public:
+    explicit GraphBuilder(const Decomposition& dec)
+        : dec_(dec), field_(dec.freeSpace, 0.5 * dec.coverageWidth) {}
+
+    CornerGraph build() {
+        graph_.cells.resize(dec_.cells.size());
+        for (const Cell& cell : dec_.cells)
+            addCell(cell);
+        for (const Adjacency& a : dec_.adjacencies)
+            addAdjacency(a);
+        return std::move(graph_);
+    }
+
+private:
+    // The robot-centre path between two points inside a cell along its top or bottom.
+    Polyline border(const Cell& cell, const StripeRun& from, const StripeRun& to, bool top) {
+        Polyline line = traceBorder(cell, from.x, to.x, top, field_);
+        const Vec2 a{from.x, top ? from.span.hi : from.span.lo};
+        const Vec2 b{to.x, top ? to.span.hi : to.span.lo};
+        if (line.size() >= 2 && field_.polylineIsClear(line))
+            return line;
+        return field_.findPath(a, b);
+    }
+
+    Polyline boustrophedon(const Cell& cell, const std::vector<StripeRun>& runs, bool fromBottom) {
+        Polyline path;
+        bool up = fromBottom;
+        for (size_t i = 0; i < runs.size(); ++i) {
+            const Vec2 a{runs[i].x, up ? runs[i].span.lo : runs[i].span.hi};
+            const Vec2 b{runs[i].x, up ? runs[i].span.hi : runs[i].span.lo};
+            if (path.empty() || path.back() != a)
+                path.push_back(a);
+            if (b != a)
+                path.push_back(b);
+            if (i + 1 < runs.size()) {
+                const Polyline step = border(cell, runs[i], runs[i + 1], up);
+                if (step.empty())
+                    return {};
+                path.insert(path.end(), step.begin() + 1, step.end());
+            }
+            up = !up;
+        }
+        return path;
+    }
+
+    void addEdge(int u, int v, EdgeKind kind, int cell, bool parallel, Polyline geometry) {
+        if (geometry.empty())
+            return; // no collision-free connection: the graph simply lacks this edge
+        if (geometry.size() == 1)
+            geometry.push_back(geometry.front());
+        GraphEdge e;
+        e.u = u, e.v = v, e.kind = kind, e.cell = cell, e.parallel = parallel;
+        e.length = polylineLength(geometry);
+        e.geometry = std::move(geometry);
+        graph_.addEdge(std::move(e));
+    }
+
+    void addCell(const Cell& cell) {
+        GraphCell& gc = graph_.cells[cell.id];
+        gc.id = cell.id;
+        gc.kind = cell.kind;
+        gc.room = cell.room;
+        std::vector<StripeRun> runs;
+        for (size_t i = 0; i < cell.stripes.size(); ++i)
+            if (!cell.stripeSpans[i].empty())
+                runs.push_back({cell.stripes[i], cell.stripeSpans[i]});
+        gc.reachable = !runs.empty();
+        if (runs.empty()) {
+            // Keep the cell's corners (for a uniform node layout) but connect nothing.
+            const Vec2 c{0.5 * (cell.x0 + cell.x1),
+                         0.5 * (cell.floorAt(0.5 * (cell.x0 + cell.x1)) +
+                                cell.ceilingAt(0.5 * (cell.x0 + cell.x1)))};
+            if (cell.kind == CellKind::Transition) {
+                graph_.addNode(cell.id, CornerKind::Bottom, c);
+                graph_.addNode(cell.id, CornerKind::Top, c);
+            } else {
+                for (CornerKind k : {CornerKind::LB, CornerKind::LT, CornerKind::RB, CornerKind::RT})
+                    graph_.addNode(cell.id, k, c);
+            }
+            return;
+        }
+        const StripeRun& first = runs.front();
+        const StripeRun& last = runs.back();
+        const Vec2 lb{first.x, first.span.lo}, lt{first.x, first.span.hi};
+        const Vec2 rb{last.x, last.span.lo}, rt{last.x, last.span.hi};
+        if (cell.kind == CellKind::Transition) {
+            const int b = graph_.addNode(cell.id, CornerKind::Bottom, lb);
+            const int t = graph_.addNode(cell.id, CornerKind::Top, lt);
+            addEdge(b, t, EdgeKind::Coverage, cell.id, false, {lb, lt});
+            return;
+        }
+        const int LB = graph_.addNode(cell.id, CornerKind::LB, lb);
+        const int LT = graph_.addNode(cell.id, CornerKind::LT, lt);
+        const int RB = graph_.addNode(cell.id, CornerKind::RB, rb);
+        const int RT = graph_.addNode(cell.id, CornerKind::RT, rt);
+        // Parity rule: with an even number of stripes a pass starting at the bottom ends at
+        // the bottom of the last stripe.
+        const bool even = runs.size() % 2 == 0;
+        addEdge(LB, even ? RB : RT, EdgeKind::Coverage, cell.id, false,
+                boustrophedon(cell, runs, true));
+        addEdge(LT, even ? RT : RB, EdgeKind::Coverage, cell.id, false,
+                boustrophedon(cell, runs, false));
+        addEdge(LB, RB, EdgeKind::Contour, cell.id, false, border(cell, first, last, false));
+        addEdge(LT, RT, EdgeKind::Contour, cell.id, false, border(cell, first, last, true));
+        addEdge(LB, LT, EdgeKind::Contour, cell.id, true, {lb, lt});
+        addEdge(RB, RT, EdgeKind::Contour, cell.id, true, {rb, rt});
+    }
+
+    enum class Side { Left, Right, Top, Bottom, All };
+
+    std::vector<int> sideNodes(int cellId, Side side) const {
+        const GraphCell& gc = graph_.cells[cellId];
+        if (!gc.reachable)
+            return {};
+        if (gc.kind == CellKind::Transition || side == Side::All)
+            return gc.nodes;
+        const auto& n = gc.nodes; // LB, LT, RB, RT
+        switch (side) {
+        case Side::Left:
+            return {n[0], n[1]};
+        case Side::Right:
+            return {n[2], n[3]};
+        case Side::Top:
+            return {n[1], n[3]};
+        case Side::Bottom:
+            return {n[0], n[2]};
+        case Side::All:
+            break;
+        }
+        return n;
+    }
+
+    void addAdjacency(const Adjacency& a) {
+        std::vector<int> from, to;
+        if (a.kind == Adjacency::Kind::AcrossSweep) {
+            const double x = a.shared.a.x;
+            const Cell& l = dec_.cells[a.first];
+            const Cell& r = dec_.cells[a.second];
+            from = sideNodes(l.id, l.x1 == x ? Side::Right : Side::All);
+            to = sideNodes(r.id, r.x0 == x ? Side::Left : Side::All);
+        } else {
+            from = sideNodes(a.first, Side::Top);
+            to = sideNodes(a.second, Side::Bottom);
+        }
+        for (int u : from)
+            for (int v : to)
+                if (connected_.insert({std::min(u, v), std::max(u, v)}).second)
+                    addEdge(u, v, EdgeKind::Inter, -1, false,
+                        field_.findPath(graph_.nodes[u].position, graph_.nodes[v].position));
+    }
+
+    const Decomposition& dec_;
+    ClearanceField field_;
+    CornerGraph graph_;
+    std::set<std::pair<int, int>> connected_; // inter-cell pairs already joined
+};
+
+} // namespace
+
+CornerGraph buildCornerGraph(const Decomposition& decomposition) {
+    return GraphBuilder(decomposition).build();
+}
+
+} // namespace fc

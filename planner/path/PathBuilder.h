@@ -1,0 +1,18 @@
+// Turns a walk over the corner graph into the robot-centre path (world frame).
+#pragma once
+
+#include "graph/CornerGraph.h"
+#include "path/CoveragePath.h"
+#include "solvers/Solver.h"
+
+#include <optional>
+
+namespace fc {
+
+// startPoint/endPoint (world frame): free points joined to the walk's first/last node by
+// a collision-free transit. Throws SolverError if such a point cannot be joined.
+CoveragePath buildCoveragePath(const Decomposition& decomposition, const CornerGraph& graph,
+                               const Walk& walk, std::optional<Vec2> startPoint = {},
+                               std::optional<Vec2> endPoint = {});
+
+} // namespace fc

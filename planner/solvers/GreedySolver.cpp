@@ -1,0 +1,55 @@
+// The naive reference (SPEC sect. 4): always cover the uncovered required cell whose entry
+// corner is cheapest to reach from where the robot stands, then go to the end.
+#include "solvers/Solver.h"
+#include "solvers/SolverCommon.h"
+#include "solvers/TransitSearch.h"
+
+namespace fc {
+
+using namespace solver_detail;
+
+Solution solveGreedy(const CornerGraph& graph, const Query& query) {
+    const char* const name = "greedy";
+    const Problem problem = makeProblem(graph, query, name);
+    const TransitGraph transit(problem);
+    TransitSearch search(transit);
+    std::vector<char> covered = transit.initialCoverage();
+
+    // node -> the ways to cover a task by entering at that node
+    std::vector<std::vector<std::pair<int, int>>> entriesAt(graph.nodes.size());
+    for (int task = 0; task < problem.taskCount(); ++task)
+        for (std::size_t o = 0; o < problem.options[task].size(); ++o)
+            entriesAt[problem.options[task][o].entry].push_back({task, static_cast<int>(o)});
+
+    Walk walk;
+    walk.nodes.push_back(problem.startNode);
+    for (int remaining = problem.taskCount(); remaining > 0; --remaining) {
+        int chosenTask = -1, chosenOption = -1, reachedNode = -1;
+        search.explore(transit.truePrices, covered, {{walk.nodes.back(), 0.0}},
+                       [&](int node, double) {
+                           for (const auto& [task, option] : entriesAt[node]) {
+                               if (!covered[problem.taskCells[task]]) {
+                                   chosenTask = task;
+                                   chosenOption = option;
+                                   reachedNode = node;
+                                   return true;
+                               }
+                           }
+                           return false;
+                       });
+        if (chosenTask < 0)
+            throw SolverError("greedy solver: internal error: no uncovered cell is reachable");
+        search.appendWalkTo(reachedNode, walk);
+        const CoverOption& option = problem.options[chosenTask][chosenOption];
+        walk.edges.push_back(option.edge);
+        walk.nodes.push_back(option.exit);
+        covered[problem.taskCells[chosenTask]] = 1;
+    }
+    search.run(transit.truePrices, covered, {{walk.nodes.back(), 0.0}}, {problem.endNode});
+    if (!search.isSettled(problem.endNode))
+        throw SolverError("greedy solver: internal error: the end node is not reachable");
+    search.appendWalkTo(problem.endNode, walk);
+    return finishSolution(graph, query, name, std::move(walk));
+}
+
+} // namespace fc

@@ -1,0 +1,97 @@
+// Near-optimal solver for any size (SPEC sect. 4). The decision is the cell order: for a
+// given order the best corners follow exactly from OrderEvaluator's dynamic programme.
+// Orders are searched with fast proxy costs (TourSearch), then judged, and on small
+// instances polished, with the true state-dependent costs. Every budget is a count of moves
+// or of search work, never wall-clock time, so a seed always gives the same walk.
+#include "solvers/OrderEvaluator.h"
+#include "solvers/OrderPolish.h"
+#include "solvers/ProxyDistances.h"
+#include "solvers/Solver.h"
+#include "solvers/SolverCommon.h"
+#include "solvers/TourSearch.h"
+#include "solvers/TransitSearch.h"
+
+#include <algorithm>
+
+namespace fc {
+
+using namespace solver_detail;
+
+namespace {
+
+constexpr const char* kName = "heuristic";
+
+// Instances up to this many cells get complete neighbour lists and the true-cost polish.
+constexpr int kSmallInstance = 40;
+// Neighbours per cell considered by the moves on larger instances.
+constexpr int kNeighbourCount = 10;
+// Perturbations of the proxy search: a few per cell, within bounds.
+int proxyKicks(int tasks) { return std::clamp(25 * tasks, 300, 6000); }
+// Settled nodes the true-cost polish may spend, per starting order.
+std::uint64_t polishWork(int tasks, int nodes) {
+    return std::clamp<std::uint64_t>(static_cast<std::uint64_t>(tasks) * tasks * nodes * 8,
+                                     200'000, 6'000'000);
+}
+
+std::vector<int> tasksOf(const Problem& problem, const std::vector<int>& cells) {
+    std::vector<int> order;
+    for (int cell : cells)
+        order.push_back(problem.taskOfCell[cell]);
+    return order;
+}
+
+} // namespace
+
+Solution solveHeuristic(const CornerGraph& graph, const Query& query,
+                        const SolveControl& control) {
+    const Problem problem = makeProblem(graph, query, kName);
+    const int tasks = problem.taskCount();
+    const TransitGraph transit(problem);
+    TransitSearch search(transit);
+    OrderEvaluator evaluator(transit, search);
+    if (tasks == 0)
+        return finishSolution(graph, query, kName, evaluator.walk({}));
+
+    reportProgress(control, 0.0);
+    const bool small = tasks <= kSmallInstance;
+    ProxyDistances distances(transit, search, small ? tasks - 1 : kNeighbourCount);
+    throwIfCancelled(control, kName);
+    reportProgress(control, 0.2);
+
+    TourSearch tour(problem, distances, problem.seed);
+    tour.buildNearestNeighbour();
+    tour.optimise();
+    tour.iterate(proxyKicks(tasks), control);
+    reportProgress(control, 0.6);
+
+    std::vector<int> best = tour.order();
+    double bestCost = evaluator.cost(best);
+    if (small) {
+        // Two different starting points for the true-cost polish: the proxy optimum and the
+        // greedy walk (which already reflects the covered state at every step).
+        std::vector<std::vector<int>> starts{best,
+                                             tasksOf(problem, solveGreedy(graph, query).cellOrder)};
+        const std::uint64_t budget = polishWork(tasks, problem.reachableNodeCount);
+        for (std::size_t s = 0; s < starts.size(); ++s) {
+            std::vector<int> order = starts[s];
+            OrderPolish polish(evaluator, distances, tasks, problem.seed + 7919 * (s + 1));
+            const double cost = polish.improve(order, evaluator.cost(order), budget, control);
+            if (cost < bestCost) {
+                best = order;
+                bestCost = cost;
+            }
+            reportProgress(control, 0.6 + 0.35 * static_cast<double>(s + 1) / starts.size());
+        }
+    }
+    if (!(bestCost < kInfinity)) {
+        // The proxy can prefer an order the covered state forbids (a transit that only
+        // existed through a cell's coverage edge); the greedy order is always feasible.
+        best = tasksOf(problem, solveGreedy(graph, query).cellOrder);
+        bestCost = evaluator.cost(best);
+    }
+    Solution solution = finishSolution(graph, query, kName, evaluator.walk(best));
+    reportProgress(control, 1.0);
+    return solution;
+}
+
+} // namespace fc

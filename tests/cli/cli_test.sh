@@ -1,0 +1,104 @@
+#!/usr/bin/env bash
+# End-to-end tests of floorcover-cli from the user's entry point: exit codes, outputs and
+# files. Needs FC_CLI and FC_PLANS_DIR; test data next to this script in ../data.
+set -u
+cli="${FC_CLI:?}"
+plans="${FC_PLANS_DIR:?}"
+data="$(cd "$(dirname "$0")/../data" && pwd)"
+work="$(mktemp -d)"
+trap 'rm -rf "$work"' EXIT
+passed=0
+failed=0
+
+check() { # name, then a command that must succeed
+  local name="$1"; shift
+  if "$@" >"$work/out" 2>"$work/err"; then
+    passed=$((passed + 1))
+  else
+    failed=$((failed + 1))
+    echo "FAIL: $name"; sed 's/^/  stdout: /' "$work/out" | head -5; sed 's/^/  stderr: /' "$work/err" | head -5
+  fi
+}
+
+expect_bad_input() { # name, file, extra args: exit 2, one line naming the file
+  local name="$1" file="$2"; shift 2
+  "$cli" plan "$file" "$@" >"$work/out" 2>"$work/err"
+  local rc=$?
+  local lines; lines=$(wc -l <"$work/err")
+  if [ "$rc" -eq 2 ] && [ "$lines" -eq 1 ] && grep -q "$(basename "$file")" "$work/err"; then
+    passed=$((passed + 1))
+  else
+    failed=$((failed + 1))
+    echo "FAIL: $name (exit $rc, $lines stderr lines)"; sed 's/^/  stderr: /' "$work/err" | head -5
+  fi
+}
+
+metrics_ok() { # the stdout JSON line has every SPEC key and coverage >= 0.99
+  python3 - "$work/out" <<'PY'
+import json, sys
+line = open(sys.argv[1]).read().strip().splitlines()[-1]
+m = json.loads(line)
+keys = ["solver","length","ideal","extra","turns","coverage","time","cells","graph_cost","seconds"]
+assert list(m.keys())[:len(keys)] == keys, m.keys()
+assert m["coverage"] >= 0.99, m
+PY
+}
+
+for plan in simple simple-diamond room-obstacle room-notches office ward; do
+  for solver in heuristic greedy; do
+    check "plan $plan $solver" "$cli" plan "$plans/$plan.geojson" --solver "$solver" --out "$work/$plan-$solver.geojson"
+    check "metrics $plan $solver" metrics_ok
+  done
+done
+for plan in simple simple-diamond room-obstacle room-notches; do
+  check "plan $plan exact" "$cli" plan "$plans/$plan.geojson" --solver exact
+  check "metrics $plan exact" metrics_ok
+done
+
+# Output formats by extension.
+for ext in geojson csv json yaml; do
+  check "format $ext" "$cli" plan "$plans/simple.geojson" --out "$work/path.$ext"
+  check "format $ext written" test -s "$work/path.$ext"
+done
+check "csv header" grep -q '^x,y,heading' "$work/path.csv"
+check "yaml parses" python3 -c "import yaml,sys; d=yaml.safe_load(open('$work/path.yaml')); assert d['poses']"
+if command -v ogrinfo >/dev/null; then
+  check "geojson passes ogrinfo" ogrinfo -ro -al -so "$work/path.geojson"
+fi
+
+# Options: rooms, start/end, angle, seed determinism.
+check "rooms subset" "$cli" plan "$plans/office.geojson" --rooms S01,Corridor,N03 --start 1,1 --end 29,19
+check "metrics rooms subset" metrics_ok
+check "auto angle" "$cli" plan "$plans/room-notches.geojson" --angle auto
+check "slanted sweep" "$cli" plan "$plans/simple.geojson" --angle 30
+check "metrics slanted" metrics_ok
+a=$("$cli" plan "$plans/office.geojson" --seed 7 --out "$work/a.csv" | python3 -c "import json,sys; d=json.load(sys.stdin); print(d['graph_cost'])")
+b=$("$cli" plan "$plans/office.geojson" --seed 7 --out "$work/b.csv" | python3 -c "import json,sys; d=json.load(sys.stdin); print(d['graph_cost'])")
+check "deterministic per seed" test "$a" = "$b"
+check "same path per seed" cmp -s "$work/a.csv" "$work/b.csv"
+
+# Graph export.
+check "graph export" "$cli" graph "$plans/simple.geojson" --out "$work/graph.json"
+check "graph shape" python3 -c "
+import json; g=json.load(open('$work/graph.json'))
+assert len(g['nodes']) == 20 and all(k in g for k in ('nodes','cells','edges'))
+assert {e['kind'] for e in g['edges']} == {'coverage','contour','inter'}"
+
+# Compare.
+check "compare" "$cli" compare "$plans/simple.geojson"
+check "compare lists solvers" grep -q heuristic "$work/out"
+
+# Bad input: exit code 2 and one line naming the file.
+for f in "$data"/bad-*; do
+  expect_bad_input "bad input $(basename "$f")" "$f"
+done
+expect_bad_input "missing file" "$work/does-not-exist.geojson"
+expect_bad_input "robot wider than W" "$plans/simple.geojson" --robot-diameter 2 --width 1
+expect_bad_input "negative width" "$plans/simple.geojson" --width -1
+expect_bad_input "unknown room" "$plans/office.geojson" --rooms Kitchen
+expect_bad_input "unknown solver" "$plans/simple.geojson" --solver nonsense
+expect_bad_input "exact above its limit" "$plans/ward.geojson" --solver exact
+expect_bad_input "nan start" "$plans/simple.geojson" --start nan,1
+
+echo "$passed passed, $failed failed"
+[ "$failed" -eq 0 ]

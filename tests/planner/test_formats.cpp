@@ -1,0 +1,372 @@
+// Plan and project files: reading, writing, error messages and atomic writes.
+#include "formats/PlanIO.h"
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <unistd.h>
+#include <vector>
+
+using namespace fc;
+namespace fs = std::filesystem;
+
+namespace {
+
+const std::string kPlansDir = FC_PLANS_DIR;
+const std::string kDataDir = FC_TEST_DATA_DIR;
+
+// A fresh, empty directory per test, removed afterwards.
+class ScratchDir {
+public:
+    ScratchDir() {
+        const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+        path_ = fs::temp_directory_path() /
+                ("fc-formats-" + std::to_string(::getpid()) + "-" + info->name());
+        fs::remove_all(path_);
+        fs::create_directories(path_);
+    }
+    ~ScratchDir() { fs::remove_all(path_); }
+    std::string file(const std::string& name) const { return (path_ / name).string(); }
+    std::vector<std::string> entries() const {
+        std::vector<std::string> names;
+        for (const auto& entry : fs::directory_iterator(path_))
+            names.push_back(entry.path().filename().string());
+        std::sort(names.begin(), names.end());
+        return names;
+    }
+
+private:
+    fs::path path_;
+};
+
+std::string loadError(const std::string& path) {
+    try {
+        loadProjectFile(path);
+    } catch (const InputError& e) {
+        return e.what();
+    }
+    return "";
+}
+
+std::string readError(const std::string& text, bool project) {
+    try {
+        if (project)
+            readProject(text);
+        else
+            readGeoJsonPlan(text);
+    } catch (const InputError& e) {
+        return e.what();
+    }
+    return "";
+}
+
+// The ring as a sorted vertex list: equal shapes whatever the start and orientation.
+std::vector<std::pair<double, double>> vertexSet(const Ring& ring) {
+    std::vector<std::pair<double, double>> vertices;
+    for (const Vec2& p : ring)
+        vertices.emplace_back(p.x, p.y);
+    std::sort(vertices.begin(), vertices.end());
+    return vertices;
+}
+
+void expectSamePlan(const Plan& a, const Plan& b) {
+    EXPECT_EQ(vertexSet(a.boundary), vertexSet(b.boundary));
+    ASSERT_EQ(a.obstacles.size(), b.obstacles.size());
+    for (size_t i = 0; i < a.obstacles.size(); ++i)
+        EXPECT_EQ(vertexSet(a.obstacles[i]), vertexSet(b.obstacles[i]));
+    ASSERT_EQ(a.rooms.size(), b.rooms.size());
+    for (size_t i = 0; i < a.rooms.size(); ++i) {
+        EXPECT_EQ(a.rooms[i].name, b.rooms[i].name);
+        EXPECT_EQ(vertexSet(a.rooms[i].outline), vertexSet(b.rooms[i].outline));
+    }
+    EXPECT_EQ(a.epsg, b.epsg);
+}
+
+Ring rectangle(double x0, double y0, double x1, double y1) {
+    return {{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}};
+}
+
+} // namespace
+
+TEST(PlanIO, ReadsEverySamplePlan) {
+    int count = 0;
+    for (const auto& entry : fs::directory_iterator(kPlansDir)) {
+        if (entry.path().extension() != ".geojson")
+            continue;
+        SCOPED_TRACE(entry.path().string());
+        const Project project = loadProjectFile(entry.path().string());
+        EXPECT_EQ(project.plan.name, entry.path().stem().string());
+        EXPECT_GE(project.plan.boundary.size(), 3u);
+        EXPECT_NE(project.plan.boundary.front(), project.plan.boundary.back())
+            << "closing vertex must be dropped";
+        ++count;
+    }
+    EXPECT_GE(count, 6);
+    const Plan office = loadProjectFile(kPlansDir + "/office.geojson").plan;
+    EXPECT_EQ(office.rooms.size(), 13u);
+    const Plan ward = loadProjectFile(kPlansDir + "/ward.geojson").plan;
+    EXPECT_EQ(ward.rooms.size(), 17u);
+    EXPECT_EQ(ward.obstacles.size(), 33u);
+    const Plan simple = loadProjectFile(kPlansDir + "/simple.geojson").plan;
+    ASSERT_EQ(simple.obstacles.size(), 1u);
+    EXPECT_EQ(simple.boundary.size(), 4u);
+    EXPECT_DOUBLE_EQ(ringArea(simple.boundary), 96.0);
+}
+
+TEST(PlanIO, GeoJsonRoundTrip) {
+    for (const char* name : {"simple", "office", "ward"}) {
+        SCOPED_TRACE(name);
+        const Plan original = loadProjectFile(kPlansDir + "/" + name + ".geojson").plan;
+        const std::string written = writeGeoJsonPlan(original);
+        const Plan reread = readGeoJsonPlan(written);
+        expectSamePlan(original, reread);
+        EXPECT_EQ(writeGeoJsonPlan(reread), written);
+    }
+}
+
+TEST(PlanIO, WritesRfc7946OrientationAndClosedRings) {
+    Plan plan;
+    plan.boundary = rectangle(0, 0, 10, 8);
+    std::reverse(plan.boundary.begin(), plan.boundary.end()); // clockwise on purpose
+    plan.obstacles.push_back(rectangle(2, 2, 3, 3));          // counter-clockwise
+    plan.rooms.push_back({"Hall", rectangle(0, 0, 10, 8)});
+    const auto root = nlohmann::json::parse(writeGeoJsonPlan(plan));
+    ASSERT_EQ(root["features"].size(), 2u);
+    const auto& rings = root["features"][0]["geometry"]["coordinates"];
+    ASSERT_EQ(rings.size(), 2u);
+    auto toRing = [](const nlohmann::json& positions) {
+        Ring ring;
+        for (const auto& p : positions)
+            ring.push_back({p[0].get<double>(), p[1].get<double>()});
+        return ring;
+    };
+    const Ring outer = toRing(rings[0]), hole = toRing(rings[1]);
+    EXPECT_EQ(outer.front(), outer.back());
+    EXPECT_EQ(outer.size(), 5u);
+    EXPECT_GT(signedArea(outer), 0.0);
+    EXPECT_LT(signedArea(hole), 0.0);
+    EXPECT_EQ(root["features"][1]["properties"]["name"], "Hall");
+    EXPECT_EQ(root["features"][1]["properties"]["role"], "room");
+}
+
+TEST(PlanIO, BoundaryHolesBecomeObstacles) {
+    const Plan plan = loadProjectFile(kDataDir + "/rooms-with-hole.geojson").plan;
+    ASSERT_EQ(plan.obstacles.size(), 1u);
+    EXPECT_EQ(plan.obstacles[0].size(), 4u);
+    ASSERT_EQ(plan.rooms.size(), 2u);
+    EXPECT_EQ(plan.rooms[0].name, "West");
+    EXPECT_EQ(plan.rooms[1].name, "East");
+}
+
+TEST(PlanIO, LargeCoordinatesAndEpsgSurviveRoundTrip) {
+    const Plan plan = loadProjectFile(kDataDir + "/utm-offset.geojson").plan;
+    ASSERT_TRUE(plan.epsg.has_value());
+    EXPECT_EQ(*plan.epsg, 32632);
+    Plan shifted = plan;
+    for (Vec2& p : shifted.boundary)
+        p = p + Vec2{0.123456789, 0.987654321};
+    const Plan reread = readGeoJsonPlan(writeGeoJsonPlan(shifted));
+    expectSamePlan(shifted, reread); // bit-exact coordinates
+    Project wrapped;
+    wrapped.plan = shifted;
+    const Project project = readProject(writeProject(wrapped));
+    expectSamePlan(shifted, project.plan);
+}
+
+TEST(PlanIO, ReadsEpsgFromCrsNameVariants) {
+    const std::string features = R"("features":[{"type":"Feature","properties":{"role":"boundary"},
+        "geometry":{"type":"Polygon","coordinates":[[[0,0],[4,0],[4,4],[0,0]]]}}])";
+    const Plan a = readGeoJsonPlan(R"({"type":"FeatureCollection","crs":{"type":"name",
+        "properties":{"name":"EPSG:25832"}},)" +
+                                   features + "}");
+    EXPECT_EQ(a.epsg, 25832);
+    const Plan b = readGeoJsonPlan(R"({"type":"FeatureCollection","epsg":3857,)" + features + "}");
+    EXPECT_EQ(b.epsg, 3857);
+    const Plan c = readGeoJsonPlan(R"({"type":"FeatureCollection",)" + features + "}");
+    EXPECT_FALSE(c.epsg.has_value());
+}
+
+TEST(PlanIO, ErrorFixturesNameTheFileAndTheProblem) {
+    struct Case {
+        const char* file;
+        std::vector<std::string> keywords;
+    };
+    const std::vector<Case> cases = {
+        {"empty.geojson", {"empty"}},
+        {"truncated.geojson", {"truncated", "line"}},
+        {"nan.geojson", {"invalid JSON", "line 1"}},
+        {"huge-number.geojson", {"1e400", "out of range"}},
+        {"not-feature-collection.geojson", {"not a GeoJSON FeatureCollection", "Feature"}},
+        {"missing-role.geojson", {"feature 2", "role"}},
+        {"unknown-role.geojson", {"unknown role", "wall"}},
+        {"no-boundary.geojson", {"no boundary"}},
+        {"two-boundaries.geojson", {"two boundaries", "features 1 and 2"}},
+        {"string-coordinate.geojson", {"boundary", "non-numeric", "zero"}},
+        {"null-coordinate.geojson", {"obstacle 1", "non-numeric", "null"}},
+        {"short-ring.geojson", {"obstacle 1", "2 distinct points"}},
+        {"unnamed-room.geojson", {"room", "no name"}},
+        {"duplicate-room.geojson", {"duplicate room name", "Kitchen"}},
+        {"multipolygon-room.geojson", {"Split", "MultiPolygon"}},
+        {"newer-version.fcproj", {"version 2", "newer"}},
+        {"foreign.json", {"not a FloorCover project", "something-else"}},
+    };
+    for (const Case& c : cases) {
+        const std::string path = kDataDir + "/" + c.file;
+        SCOPED_TRACE(path);
+        const std::string message = loadError(path);
+        ASSERT_FALSE(message.empty()) << "expected an InputError";
+        EXPECT_EQ(message.rfind(path + ": ", 0), 0u) << message;
+        for (const std::string& keyword : c.keywords)
+            EXPECT_NE(message.find(keyword), std::string::npos) << message;
+        EXPECT_EQ(message.find('\n'), std::string::npos) << message;
+        EXPECT_NE(message.back(), '.') << message;
+    }
+}
+
+TEST(PlanIO, RejectsMalformedStructure) {
+    EXPECT_NE(readError("[1, 2]", false).find("not a GeoJSON FeatureCollection"),
+              std::string::npos);
+    EXPECT_NE(readError(R"({"type":"FeatureCollection"})", false).find("features"),
+              std::string::npos);
+    EXPECT_NE(readError(R"({"type":"FeatureCollection","features":[]})", false).find("no boundary"),
+              std::string::npos);
+    const std::string lineFeature =
+        R"({"type":"FeatureCollection","features":[{"type":"Feature","properties":
+        {"role":"boundary"},"geometry":{"type":"LineString","coordinates":[[0,0],[1,1]]}}]})";
+    EXPECT_NE(readError(lineFeature, false).find("LineString"), std::string::npos);
+    const std::string noGeometry = R"({"type":"FeatureCollection","features":[{"type":"Feature",
+        "properties":{"role":"boundary"},"geometry":null}]})";
+    EXPECT_NE(readError(noGeometry, false).find("no geometry"), std::string::npos);
+}
+
+TEST(Project, RoundTrip) {
+    Project project;
+    project.plan.boundary = rectangle(0, 0, 20, 10);
+    project.plan.obstacles.push_back(rectangle(4, 4, 6, 6));
+    project.plan.rooms.push_back({"Kitchen", rectangle(0, 0, 10, 10)});
+    project.plan.rooms.push_back({"Living \"room\" ü", rectangle(10, 0, 20, 10)});
+    project.plan.epsg = 32633;
+    project.robot.robotDiameter = 0.4;
+    project.robot.cleaningDiameter = 0.9;
+    project.robot.coverageWidth = 0.8;
+    project.robot.speed = 0.3;
+    project.robot.turnTime = 1.5;
+    project.sweep.angleDeg = 30.0;
+    project.sweep.automatic = true;
+    project.solver = "exact";
+    project.selectedRooms = {"Kitchen"};
+    project.hasStart = true;
+    project.start = {1.25, 2.5};
+
+    const std::string text = writeProject(project);
+    const Project reread = readProject(text);
+    expectSamePlan(project.plan, reread.plan);
+    EXPECT_EQ(reread.plan.rooms[1].name, "Living \"room\" ü");
+    EXPECT_EQ(reread.robot.robotDiameter, 0.4);
+    EXPECT_EQ(reread.robot.cleaningDiameter, 0.9);
+    EXPECT_EQ(reread.robot.coverageWidth, 0.8);
+    EXPECT_EQ(reread.robot.speed, 0.3);
+    EXPECT_EQ(reread.robot.turnTime, 1.5);
+    EXPECT_EQ(reread.sweep.angleDeg, 30.0);
+    EXPECT_TRUE(reread.sweep.automatic);
+    EXPECT_EQ(reread.solver, "exact");
+    EXPECT_EQ(reread.selectedRooms, project.selectedRooms);
+    EXPECT_TRUE(reread.hasStart);
+    EXPECT_EQ(reread.start, project.start);
+    EXPECT_FALSE(reread.hasEnd);
+    EXPECT_EQ(writeProject(reread), text);
+
+    const auto root = nlohmann::json::parse(text);
+    EXPECT_EQ(root["format"], "floorcover-project");
+    EXPECT_EQ(root["version"], kProjectFormatVersion);
+    EXPECT_TRUE(root["end"].is_null());
+}
+
+TEST(Project, RefusesNewerVersionsAndForeignDocuments) {
+    EXPECT_NE(readError(R"({"format":"floorcover-project","version":7,"plan":{}})", true)
+                  .find("version 7 is newer"),
+              std::string::npos);
+    EXPECT_NE(readError(R"({"format":"other-tool","version":1})", true).find("not a FloorCover"),
+              std::string::npos);
+    EXPECT_NE(readError(R"({"type":"FeatureCollection","features":[]})", true)
+                  .find("not a FloorCover project"),
+              std::string::npos);
+    EXPECT_NE(readError(R"({"format":"floorcover-project","version":1,"plan":{"boundary":
+        [[0,0],[1,0],[1,1]]},"robot":{"speed":"fast"}})",
+                        true)
+                  .find("robot.speed"),
+              std::string::npos);
+    EXPECT_NE(readError(R"({"format":"floorcover-project","version":1,"plan":{"boundary":
+        [[0,0],[1,0],[1,1]]},"start":[1]})",
+                        true)
+                  .find("start"),
+              std::string::npos);
+}
+
+TEST(Project, LoadsByExtensionAndContent) {
+    ScratchDir dir;
+    Project project;
+    project.plan.boundary = rectangle(0, 0, 5, 5);
+    project.solver = "greedy";
+    writeFileAtomically(dir.file("saved.fcproj"), writeProject(project));
+    writeFileAtomically(dir.file("as-json.json"), writeProject(project));
+    writeFileAtomically(dir.file("plan.json"), writeGeoJsonPlan(project.plan));
+
+    const Project a = loadProjectFile(dir.file("saved.fcproj"));
+    EXPECT_EQ(a.solver, "greedy");
+    EXPECT_EQ(a.plan.name, "saved");
+    const Project b = loadProjectFile(dir.file("as-json.json"));
+    EXPECT_EQ(b.solver, "greedy");
+    EXPECT_EQ(b.plan.name, "as-json");
+    const Project c = loadProjectFile(dir.file("plan.json"));
+    EXPECT_EQ(c.solver, "heuristic");
+    EXPECT_EQ(vertexSet(c.plan.boundary), vertexSet(project.plan.boundary));
+
+    const Project sample = loadProjectFile(kDataDir + "/simple.fcproj");
+    EXPECT_EQ(sample.plan.obstacles.size(), 1u);
+    EXPECT_TRUE(sample.hasStart);
+    EXPECT_FALSE(sample.hasEnd);
+}
+
+TEST(Format, FileErrorsNameTheFile) {
+    const std::string missing = kDataDir + "/does-not-exist.geojson";
+    const std::string message = loadError(missing);
+    EXPECT_EQ(message.rfind(missing + ": cannot open", 0), 0u) << message;
+    ScratchDir dir;
+    fs::create_directories(dir.file("folder.geojson"));
+    EXPECT_NE(loadError(dir.file("folder.geojson")).find("is a directory"), std::string::npos);
+    const std::string dxf = loadError("/tmp/plan.dxf");
+    EXPECT_NE(dxf.find("/tmp/plan.dxf: unsupported file type \".dxf\""), std::string::npos) << dxf;
+    EXPECT_THROW(readFile(missing), InputError);
+}
+
+TEST(Format, AtomicWriteReplacesContentAndLeavesNoTemporaryFile) {
+    ScratchDir dir;
+    const std::string path = dir.file("out.geojson");
+    writeFileAtomically(path, "old content that is longer\n");
+    writeFileAtomically(path, "new\n");
+    EXPECT_EQ(readFile(path), "new\n");
+    EXPECT_EQ(dir.entries(), std::vector<std::string>{"out.geojson"});
+
+    const std::string unwritable = dir.file("missing-dir/out.geojson");
+    try {
+        writeFileAtomically(unwritable, "x");
+        FAIL() << "expected an InputError";
+    } catch (const InputError& e) {
+        EXPECT_EQ(std::string(e.what()).rfind(unwritable + ": cannot write", 0), 0u) << e.what();
+    }
+    EXPECT_EQ(dir.entries(), std::vector<std::string>{"out.geojson"});
+}
+
+TEST(Format, AtomicWriteFailureKeepsTheOldFile) {
+    ScratchDir dir;
+    // Renaming a file over a non-empty directory fails after the temporary file is written.
+    const std::string path = dir.file("target");
+    fs::create_directories(path + "/inside");
+    EXPECT_THROW(writeFileAtomically(path, "data"), InputError);
+    EXPECT_EQ(dir.entries(), std::vector<std::string>{"target"});
+    EXPECT_TRUE(fs::is_directory(path));
+}

@@ -1,0 +1,97 @@
+#include "graph/CornerGraph.h"
+#include "geometry/SegmentIndex.h"
+
+#include <gtest/gtest.h>
+
+#include <map>
+
+using namespace fc;
+
+namespace {
+
+Ring rect(double x0, double y0, double x1, double y1) {
+    return {{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}};
+}
+
+std::map<EdgeKind, int> countKinds(const CornerGraph& g) {
+    std::map<EdgeKind, int> n;
+    for (const GraphEdge& e : g.edges)
+        ++n[e.kind];
+    return n;
+}
+
+} // namespace
+
+TEST(CornerGraph, SimplePlanShape) {
+    Plan p;
+    p.boundary = rect(0, 0, 12, 8);
+    p.obstacles = {rect(5, 3, 7, 5)};
+    const Decomposition d = decompose(p, {});
+    const CornerGraph g = buildCornerGraph(d);
+    ASSERT_EQ(d.primaryCount(), 2);
+    ASSERT_EQ(d.transitionCount(), 6);
+    EXPECT_EQ(g.nodes.size(), 2u * 4 + 6u * 2);
+    auto n = countKinds(g);
+    EXPECT_EQ(n[EdgeKind::Coverage], 2 * 2 + 6);
+    EXPECT_EQ(n[EdgeKind::Contour], 2 * 4);
+    // Corners next to each shared border connect pairwise: 4 per pair of touching cells.
+    EXPECT_EQ(n[EdgeKind::Inter], 4 * static_cast<int>(d.adjacencies.size()));
+    for (const GraphCell& c : g.cells)
+        EXPECT_EQ(c.coverageEdges.size(), c.kind == CellKind::Primary ? 2u : 1u);
+}
+
+TEST(CornerGraph, ParityRuleAndCornerOffsets) {
+    Plan p; // one 4 x 3 room: 4 stripes (even): LB-RB and LT-RT
+    p.boundary = rect(0, 0, 4, 3);
+    const CornerGraph even = buildCornerGraph(decompose(p, {}));
+    ASSERT_EQ(even.cells.size(), 1u);
+    const auto& n = even.cells[0].nodes;
+    EXPECT_NEAR(even.nodes[n[0]].position.x, 0.5, 1e-9);
+    EXPECT_NEAR(even.nodes[n[0]].position.y, 0.5, 1e-9);
+    EXPECT_NEAR(even.nodes[n[3]].position.x, 3.5, 1e-9);
+    EXPECT_NEAR(even.nodes[n[3]].position.y, 2.5, 1e-9);
+    const GraphEdge& c0 = even.edges[even.cells[0].coverageEdges[0]];
+    EXPECT_EQ(c0.u, n[0]);
+    EXPECT_EQ(c0.v, n[2]); // LB-RB
+    EXPECT_NEAR(c0.length, 4 * 2 + 3 * 1, 1e-9);
+
+    p.boundary = rect(0, 0, 5, 3); // 5 stripes (odd): LB-RT and LT-RB
+    const CornerGraph odd = buildCornerGraph(decompose(p, {}));
+    const auto& m = odd.cells[0].nodes;
+    const GraphEdge& o0 = odd.edges[odd.cells[0].coverageEdges[0]];
+    EXPECT_EQ(o0.u, m[0]);
+    EXPECT_EQ(o0.v, m[3]); // LB-RT
+    int parallel = 0;
+    for (const GraphEdge& e : odd.edges)
+        parallel += e.parallel;
+    EXPECT_EQ(parallel, 2);
+}
+
+TEST(CornerGraph, AllEdgeGeometryIsCollisionFree) {
+    Plan p;
+    p.boundary = {{20, 14}, {20, 3}, {15, 3}, {15, 0}, {0, 0}, {0, 10}, {4, 10}, {4, 14}};
+    p.obstacles = {rect(7, 5, 13, 8), {{16, 8}, {17.5, 9.5}, {16, 11}, {14.5, 9.5}}};
+    const Decomposition d = decompose(p, {});
+    const CornerGraph g = buildCornerGraph(d);
+    const SegmentIndex walls(d.freeSpace);
+    for (const GraphEdge& e : g.edges) {
+        EXPECT_GE(walls.polylineClearance(e.geometry), 0.5 - 2e-3) << "edge " << e.id;
+        EXPECT_EQ(e.geometry.front(), g.nodes[e.u].position);
+        EXPECT_EQ(e.geometry.back(), g.nodes[e.v].position);
+    }
+}
+
+TEST(CornerGraph, DoorConnectsStackedRooms) {
+    Plan p;
+    p.boundary = {{0, 0}, {6, 0}, {6, 4}, {3.6, 4}, {3.6, 4.2}, {6, 4.2}, {6, 8}, {0, 8},
+                  {0, 4.2}, {2.4, 4.2}, {2.4, 4}, {0, 4}};
+    p.rooms = {{"South", rect(0, 0, 6, 4)}, {"North", rect(0, 4.2, 6, 8)}};
+    const Decomposition d = decompose(p, {});
+    const CornerGraph g = buildCornerGraph(d);
+    bool crossesRooms = false;
+    for (const GraphEdge& e : g.edges)
+        if (e.kind == EdgeKind::Inter &&
+            g.cells[g.nodes[e.u].cell].room != g.cells[g.nodes[e.v].cell].room)
+            crossesRooms = true;
+    EXPECT_TRUE(crossesRooms);
+}

@@ -1,0 +1,145 @@
+// End-to-end planning on the sample plans: every solver's path is collision-free and covers
+// at least 99% of the sweepable area; heuristic is within 1% of exact where exact runs.
+#include "formats/PlanIO.h"
+#include "geometry/SegmentIndex.h"
+#include "model/SyntheticPlans.h"
+#include "pipeline/Planner.h"
+
+#include <gtest/gtest.h>
+
+#include <string>
+
+using namespace fc;
+
+namespace {
+
+Plan samplePlan(const std::string& name) {
+    return loadProjectFile(std::string(FC_PLANS_DIR) + "/" + name + ".geojson").plan;
+}
+
+PlanRequest requestFor(const Plan& plan, const std::string& solver) {
+    PlanRequest r;
+    r.plan = plan;
+    r.solver = solver;
+    r.robot.robotDiameter = 0.6;
+    r.robot.coverageWidth = 1.0;
+    r.robot.cleaningDiameter = 1.0;
+    return r;
+}
+
+// Every segment of the path keeps the robot centre W/2 (up to the contour sampling
+// tolerance) and so the robot body L/2 away from every wall.
+void expectCollisionFree(const PlanResult& r, const std::string& what) {
+    const Decomposition& d = r.prepared.decomposition;
+    const SegmentIndex walls(d.freeSpace);
+    const double w = r.prepared.robot.coverageWidth;
+    double worst = INFINITY;
+    for (size_t i = 1; i < r.path.points.size(); ++i) {
+        const Vec2 a = d.frame.toLocal(r.path.points[i - 1]);
+        const Vec2 b = d.frame.toLocal(r.path.points[i]);
+        worst = std::min(worst, walls.segmentClearance(a, b));
+    }
+    EXPECT_GE(worst, 0.5 * w - 2e-3 * w) << what;
+    EXPECT_GE(worst, 0.5 * r.prepared.robot.robotDiameter) << what;
+}
+
+struct Case {
+    std::string plan;
+    std::string solver;
+};
+
+void PrintTo(const Case& c, std::ostream* os) { *os << c.plan << "/" << c.solver; }
+
+class SamplePlans : public ::testing::TestWithParam<Case> {};
+
+} // namespace
+
+TEST_P(SamplePlans, PathIsCollisionFreeAndCovers) {
+    const Case c = GetParam();
+    const PlanResult r = planCoverage(requestFor(samplePlan(c.plan), c.solver));
+    const std::string what = c.plan + "/" + c.solver;
+    expectCollisionFree(r, what);
+    EXPECT_GE(r.metrics.coverage, 0.99) << what;
+    EXPECT_GT(r.metrics.length, 0) << what;
+    EXPECT_NEAR(r.metrics.extra, r.metrics.length - r.metrics.ideal, 1e-9) << what;
+    ASSERT_EQ(r.path.kinds.size() + 1, r.path.points.size());
+    EXPECT_EQ(r.path.points.front(), r.path.points.back()) << "ends where it started";
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Pipeline, SamplePlans,
+    ::testing::Values(Case{"simple", "exact"}, Case{"simple", "heuristic"},
+                      Case{"simple", "greedy"}, Case{"simple-diamond", "exact"},
+                      Case{"simple-diamond", "heuristic"}, Case{"simple-diamond", "greedy"},
+                      Case{"room-obstacle", "exact"}, Case{"room-obstacle", "heuristic"},
+                      Case{"room-obstacle", "greedy"}, Case{"room-notches", "exact"},
+                      Case{"room-notches", "heuristic"}, Case{"room-notches", "greedy"},
+                      Case{"office", "heuristic"}, Case{"office", "greedy"},
+                      Case{"ward", "heuristic"}, Case{"ward", "greedy"}),
+    [](const ::testing::TestParamInfo<Case>& info) {
+        std::string n = info.param.plan + "_" + info.param.solver;
+        for (char& ch : n)
+            if (ch == '-')
+                ch = '_';
+        return n;
+    });
+
+TEST(Pipeline, HeuristicWithinOnePercentOfExact) {
+    for (const char* name : {"simple", "simple-diamond", "room-obstacle", "room-notches"}) {
+        const PreparedPlan p = preparePlan(samplePlan(name), RobotProfile{}, 90.0);
+        std::vector<std::string> warnings;
+        // A few start/end pairs per plan, including start != end.
+        const auto& nodes = p.graph.nodes;
+        for (size_t k = 0; k < 4; ++k) {
+            const Vec2 s = p.decomposition.frame.toWorld(nodes[(k * 7) % nodes.size()].position);
+            const Vec2 e = p.decomposition.frame.toWorld(nodes[(k * 13 + 5) % nodes.size()].position);
+            const Query q = makeQuery(p, {}, s, e, 1, warnings);
+            const Solution exact = runSolver("exact", p, q);
+            const Solution heuristic = runSolver("heuristic", p, q);
+            EXPECT_LE(heuristic.graphCost, exact.graphCost * 1.01 + 1e-9) << name << " " << k;
+            EXPECT_GE(heuristic.graphCost, exact.graphCost - 1e-9) << name << " " << k;
+        }
+    }
+}
+
+TEST(Pipeline, RoomSubsetsAndTransitsStayInFreeSpace) {
+    PlanRequest r = requestFor(samplePlan("office"), "heuristic");
+    r.rooms = {"S01", "N03", "Corridor"};
+    r.start = Vec2{1, 1};
+    r.end = Vec2{29, 19};
+    const PlanResult res = planCoverage(r);
+    expectCollisionFree(res, "office subset");
+    EXPECT_GE(res.metrics.coverage, 0.99);
+    EXPECT_LT(res.metrics.cells, static_cast<int>(res.prepared.graph.cells.size()));
+}
+
+TEST(Pipeline, LargeCoordinatesPlanLikeSmallOnes) {
+    Plan p = samplePlan("room-notches");
+    const PlanResult a = planCoverage(requestFor(p, "heuristic"));
+    for (Vec2& v : p.boundary)
+        v = v + Vec2{500000, 5000000};
+    for (Ring& h : p.obstacles)
+        for (Vec2& v : h)
+            v = v + Vec2{500000, 5000000};
+    const PlanResult b = planCoverage(requestFor(p, "heuristic"));
+    EXPECT_NEAR(a.metrics.length, b.metrics.length, 1e-3);
+    EXPECT_NEAR(a.metrics.coverage, b.metrics.coverage, 1e-3);
+    EXPECT_NEAR(a.solution.graphCost, b.solution.graphCost, 1e-3);
+}
+
+TEST(Pipeline, SlantedSweepAndGeneratedFloors) {
+    PlanRequest r = requestFor(samplePlan("simple-diamond"), "heuristic");
+    r.sweep.angleDeg = 30;
+    const PlanResult slanted = planCoverage(r);
+    expectCollisionFree(slanted, "diamond at 30 degrees");
+    EXPECT_GE(slanted.metrics.coverage, 0.99);
+
+    const PlanResult office = planCoverage(requestFor(generateOfficeFloor(10, 3), "heuristic"));
+    expectCollisionFree(office, "generated office");
+    EXPECT_GE(office.metrics.coverage, 0.99);
+
+    const PlanResult hall =
+        planCoverage(requestFor(generateHallWithObstacles(60, 40, 6, 2), "heuristic"));
+    expectCollisionFree(hall, "generated hall");
+    EXPECT_GE(hall.metrics.coverage, 0.99);
+}

@@ -1,0 +1,280 @@
+// Plan validation: every geometric defect is an InputError naming the ring and the place,
+// at small and at UTM-sized coordinates, fast on large plans.
+#include "formats/PlanIO.h"
+#include "model/Validation.h"
+
+#include <chrono>
+#include <cmath>
+#include <filesystem>
+#include <gtest/gtest.h>
+#include <string>
+#include <vector>
+
+using namespace fc;
+namespace fs = std::filesystem;
+
+namespace {
+
+const std::string kPlansDir = FC_PLANS_DIR;
+const std::string kDataDir = FC_TEST_DATA_DIR;
+const Vec2 kUtmOffset{500000.0, 5000000.0};
+
+Ring rectangle(double x0, double y0, double x1, double y1) {
+    return {{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}};
+}
+
+Plan shifted(Plan plan, Vec2 offset) {
+    for (Vec2& p : plan.boundary)
+        p = p + offset;
+    for (Ring& obstacle : plan.obstacles)
+        for (Vec2& p : obstacle)
+            p = p + offset;
+    for (Room& room : plan.rooms)
+        for (Vec2& p : room.outline)
+            p = p + offset;
+    return plan;
+}
+
+std::string validationError(const Plan& plan, const RobotProfile& robot = {}) {
+    try {
+        validatePlan(normalizedPlan(plan), robot);
+    } catch (const InputError& e) {
+        return e.what();
+    }
+    return "";
+}
+
+void expectOneLineMessage(const std::string& message) {
+    ASSERT_FALSE(message.empty());
+    EXPECT_EQ(message.find('\n'), std::string::npos) << message;
+    EXPECT_NE(message.back(), '.') << message;
+    EXPECT_FALSE(std::isupper(static_cast<unsigned char>(message.front()))) << message;
+}
+
+void expectKeywords(const std::string& message, const std::vector<std::string>& keywords) {
+    for (const std::string& keyword : keywords)
+        EXPECT_NE(message.find(keyword), std::string::npos)
+            << "missing \"" << keyword << "\" in: " << message;
+}
+
+struct FixtureCase {
+    const char* file;
+    std::vector<std::string> keywords;
+};
+
+const std::vector<FixtureCase> kGeometryFixtures = {
+    {"selfintersecting.geojson", {"boundary", "intersects itself", "(5.0, 4.0)"}},
+    {"hole-outside.geojson", {"obstacle 1", "outside the boundary"}},
+    {"hole-crossing.geojson", {"obstacle 1", "crosses the boundary"}},
+    {"overlapping-holes.geojson", {"obstacles 1 and 2", "overlap"}},
+    {"duplicate-holes.geojson", {"obstacles 1 and 2", "identical"}},
+    {"room-outside.geojson", {"room \"Garage\"", "outside the boundary"}},
+    {"room-in-obstacle.geojson", {"room \"Shaft\"", "inside obstacle 1"}},
+    {"overlapping-rooms.geojson", {"rooms \"West\" and \"East\"", "overlap", "16.00 m^2"}},
+    {"tiny.geojson", {"free area", "0.25 m^2", "smaller"}},
+    {"zero-area.geojson", {"boundary", "zero area"}},
+    {"spike.geojson", {"boundary", "spike", "(5.0, 12.0)"}},
+};
+
+} // namespace
+
+TEST(Validation, SamplePlansAreValid) {
+    for (const auto& entry : fs::directory_iterator(kPlansDir)) {
+        if (entry.path().extension() != ".geojson")
+            continue;
+        SCOPED_TRACE(entry.path().string());
+        const Plan plan = loadProjectFile(entry.path().string()).plan;
+        EXPECT_NO_THROW(validatePlan(normalizedPlan(plan), RobotProfile{}));
+        EXPECT_NO_THROW(validatePlan(plan, RobotProfile{})) << "valid without clean-up too";
+        EXPECT_NO_THROW(validatePlan(normalizedPlan(shifted(plan, kUtmOffset)), RobotProfile{}));
+    }
+    for (const char* valid : {"utm-offset.geojson", "rooms-with-hole.geojson"}) {
+        SCOPED_TRACE(valid);
+        const Plan plan = loadProjectFile(kDataDir + "/" + valid).plan;
+        EXPECT_EQ(validationError(plan), "");
+    }
+}
+
+TEST(Validation, FixturesGiveOneLineErrorsNamingRingAndPlace) {
+    for (const FixtureCase& c : kGeometryFixtures) {
+        SCOPED_TRACE(c.file);
+        const Plan plan = loadProjectFile(kDataDir + "/" + c.file).plan;
+        const std::string message = validationError(plan);
+        expectOneLineMessage(message);
+        expectKeywords(message, c.keywords);
+    }
+}
+
+TEST(Validation, SameVerdictAtUtmCoordinates) {
+    for (const FixtureCase& c : kGeometryFixtures) {
+        SCOPED_TRACE(c.file);
+        const Plan plan = loadProjectFile(kDataDir + "/" + c.file).plan;
+        const std::string message = validationError(shifted(plan, kUtmOffset));
+        expectOneLineMessage(message);
+        for (const std::string& keyword : c.keywords) {
+            if (keyword.front() != '(') { // locations move with the offset
+                EXPECT_NE(message.find(keyword), std::string::npos) << message;
+            }
+        }
+    }
+}
+
+TEST(Validation, RobotProfileIsChecked) {
+    Plan plan;
+    plan.boundary = rectangle(0, 0, 10, 10);
+    RobotProfile robot;
+    robot.robotDiameter = 1.5; // L > W
+    expectKeywords(validationError(plan, robot), {"robot diameter"});
+    const Project project = loadProjectFile(kDataDir + "/bad-robot.fcproj");
+    expectKeywords(validationError(project.plan, project.robot), {"exceeds"});
+}
+
+TEST(Validation, NonFiniteCoordinatesNameTheRing) {
+    Plan plan;
+    plan.boundary = rectangle(0, 0, 10, 10);
+    plan.obstacles = {rectangle(1, 1, 2, 2), rectangle(4, 4, 5, 5)};
+    plan.obstacles[1][2].y = NAN;
+    const std::string message = validationError(plan);
+    expectOneLineMessage(message);
+    expectKeywords(message, {"obstacle 2", "non-finite", "vertex 3"});
+}
+
+TEST(Validation, ObstaclePlacement) {
+    Plan plan;
+    plan.boundary = rectangle(0, 0, 10, 10);
+    plan.obstacles = {rectangle(2, 2, 8, 8), rectangle(4, 4, 5, 5)};
+    expectKeywords(validationError(plan), {"obstacle 2 lies inside obstacle 1"});
+
+    plan.obstacles = {rectangle(0, 2, 3, 4)};
+    expectKeywords(validationError(plan), {"obstacle 1 touches the boundary"});
+
+    plan.obstacles = {rectangle(2, 2, 4, 4), rectangle(4, 2, 6, 4)};
+    expectKeywords(validationError(plan), {"obstacles 1 and 2 touch"});
+
+    plan.obstacles = {rectangle(2, 2, 4, 4), rectangle(4.5, 2, 6, 4)};
+    EXPECT_EQ(validationError(plan), "");
+}
+
+TEST(Validation, SelfIntersectionInRoomsAndObstacles) {
+    Plan plan;
+    plan.boundary = rectangle(0, 0, 10, 10);
+    plan.obstacles = {{{2, 2}, {4, 4}, {4, 2}, {2, 4}}};
+    expectKeywords(validationError(plan), {"obstacle 1 intersects itself near (3.0, 3.0)"});
+    plan.obstacles.clear();
+    plan.rooms = {{"Kitchen", {{0, 0}, {10, 10}, {10, 0}, {0, 10}}}};
+    expectKeywords(validationError(plan), {"room \"Kitchen\" intersects itself"});
+}
+
+TEST(Validation, RoomsSharingWallsOrReachingIntoWallsAreFine) {
+    Plan plan;
+    plan.boundary = rectangle(0, 0, 10, 10);
+    plan.obstacles = {rectangle(4, 4, 6, 6)};
+    // Drawn over the wall thickness, sharing a border, one around the pillar.
+    plan.rooms = {{"A", rectangle(-0.2, -0.2, 5, 10.2)}, {"B", rectangle(5, -0.2, 10.2, 10.2)}};
+    EXPECT_EQ(validationError(plan), "");
+    EXPECT_EQ(validationError(shifted(plan, kUtmOffset)), "");
+    // A sliver of overlap from sloppy drawing is tolerated; a real one is not.
+    plan.rooms[1].outline = rectangle(4.99, -0.2, 10.2, 10.2);
+    EXPECT_EQ(validationError(plan), "");
+    plan.rooms[1].outline = rectangle(4, -0.2, 10.2, 10.2);
+    expectKeywords(validationError(plan), {"rooms \"A\" and \"B\" overlap"});
+    // A room that is only the pillar covers no free space.
+    plan.rooms = {{"Pillar", rectangle(4, 4, 6, 6)}};
+    expectKeywords(validationError(plan), {"room \"Pillar\" lies inside obstacle 1"});
+    plan.rooms = {{"Rooms", {}}, {"Rooms", rectangle(0, 0, 2, 2)}};
+    plan.rooms[0].outline = rectangle(2, 2, 3, 3);
+    expectKeywords(validationError(plan), {"duplicate room name \"Rooms\""});
+}
+
+TEST(Validation, RotatedRoomsAtUtmCoordinatesShareWallsWithinRounding) {
+    // Room corners on the boundary's edges are computed separately, so they are off the
+    // walls by rounding noise only; shared walls must still count as shared.
+    const double angle = 30.0 * M_PI / 180.0;
+    auto place = [&](double x, double y) {
+        return kUtmOffset + Vec2{x * std::cos(angle) - y * std::sin(angle),
+                                 x * std::sin(angle) + y * std::cos(angle)};
+    };
+    Plan plan;
+    plan.boundary = {place(0, 0), place(12, 0), place(12, 8), place(0, 8)};
+    plan.obstacles = {{place(2, 2), place(3, 2), place(3, 3), place(2, 3)}};
+    const Vec2 bottom = place(5.3, 0), top = place(5.3, 8);
+    plan.rooms = {{"West", {place(0, 0), bottom, top, place(0, 8)}},
+                  {"East", {bottom, place(12, 0), place(12, 8), top}}};
+    EXPECT_EQ(validationError(plan), "");
+    plan.rooms[1].outline[0] = place(3.3, 0); // now 2 m x 8 m of overlap
+    expectKeywords(validationError(plan), {"rooms \"West\" and \"East\" overlap by 16.00 m^2"});
+}
+
+TEST(Validation, NormalizedPlanDropsRepeatsAndStraightVertices) {
+    Plan plan;
+    plan.boundary = {{0, 0},   {5, 0},     {5, 0},  {10, 0}, {10, 5},
+                     {10, 10}, {5, 5 + 5}, {0, 10}, {0, 0}};
+    plan.obstacles = {{{2, 2}, {3, 3}, {4, 4}, {2, 4}}};
+    const Plan clean = normalizedPlan(plan);
+    EXPECT_EQ(clean.boundary, rectangle(0, 0, 10, 10));
+    EXPECT_EQ(clean.obstacles[0], (Ring{{2, 2}, {4, 4}, {2, 4}}));
+    // The seam (last to first vertex) is cleaned too.
+    plan.boundary = {{5, 0}, {10, 0}, {10, 10}, {0, 10}, {0, 0}};
+    EXPECT_EQ(normalizedPlan(plan).boundary, (Ring{{10, 0}, {10, 10}, {0, 10}, {0, 0}}));
+    // Collinear vertices are found at UTM-sized values too.
+    const Plan utm = normalizedPlan(shifted(plan, kUtmOffset));
+    EXPECT_EQ(utm.obstacles[0].size(), 3u);
+    // A degenerate ring is kept as it was so that validation can name the problem.
+    plan.boundary = {{0, 0}, {5, 5}, {10, 10}};
+    EXPECT_EQ(normalizedPlan(plan).boundary.size(), 3u);
+}
+
+TEST(Validation, ThousandRoomsValidateQuickly) {
+    // 40 x 25 rooms of 2 x 2 m with a vertex at each edge midpoint (8 vertices each), a
+    // pillar in every fourth room and a boundary with 1,000 vertices: ~10,000 vertices.
+    const int columns = 40, rows = 25;
+    Plan plan;
+    const double width = 2.0 * columns, height = 2.0 * rows;
+    const int perSide = 250;
+    for (int k = 0; k < perSide; ++k)
+        plan.boundary.push_back({width * k / perSide, 0});
+    for (int k = 0; k < perSide; ++k)
+        plan.boundary.push_back({width, height * k / perSide});
+    for (int k = 0; k < perSide; ++k)
+        plan.boundary.push_back({width - width * k / perSide, height});
+    for (int k = 0; k < perSide; ++k)
+        plan.boundary.push_back({0, height - height * k / perSide});
+    for (int i = 0; i < columns; ++i) {
+        for (int j = 0; j < rows; ++j) {
+            const double x = 2.0 * i, y = 2.0 * j;
+            plan.rooms.push_back({"R" + std::to_string(i) + "-" + std::to_string(j),
+                                  {{x, y},
+                                   {x + 1, y},
+                                   {x + 2, y},
+                                   {x + 2, y + 1},
+                                   {x + 2, y + 2},
+                                   {x + 1, y + 2},
+                                   {x, y + 2},
+                                   {x, y + 1}}});
+            if ((i + j) % 4 == 0)
+                plan.obstacles.push_back(rectangle(x + 0.8, y + 0.8, x + 1.2, y + 1.2));
+        }
+    }
+    size_t vertices = plan.boundary.size();
+    for (const Ring& obstacle : plan.obstacles)
+        vertices += obstacle.size();
+    for (const Room& room : plan.rooms)
+        vertices += room.outline.size();
+    EXPECT_GE(vertices, 10000u);
+
+    for (const Vec2 offset : {Vec2{0, 0}, kUtmOffset}) {
+        const Plan input = shifted(plan, offset);
+        const auto start = std::chrono::steady_clock::now();
+        EXPECT_NO_THROW(validatePlan(input, RobotProfile{}));
+        const double seconds =
+            std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+#ifdef NDEBUG
+        EXPECT_LT(seconds, 0.5);
+#else
+        EXPECT_LT(seconds, 5.0);
+#endif
+    }
+    // One defect among them is still found and named.
+    plan.rooms[777].outline[2] = {plan.rooms[777].outline[2].x + 1.5, plan.rooms[777].outline[2].y};
+    expectKeywords(validationError(plan), {"rooms", "overlap", plan.rooms[777].name});
+}
