@@ -67,7 +67,7 @@ std::string runCase(const Case& c) {
     const double tGraph = since(t0);
     std::vector<std::string> warnings;
     const Query query = makeQuery(prepared, {}, std::nullopt, std::nullopt, 1, warnings);
-    for (const std::string& solver : {"exact", "heuristic", "greedy"}) {
+    for (const char* solver : {"exact", "heuristic", "greedy"}) {
         t0 = Clock::now();
         Solution s;
         try {
@@ -89,7 +89,7 @@ std::string runCase(const Case& c) {
                       "| %s | %zu | %zu | %.3f | %.3f | %s | %.3f | %.3f | %.1f | %.1f | %d | "
                       "%.2f%% | %.2f |\n",
                       c.name.c_str(), prepared.decomposition.cells.size(),
-                      prepared.graph.nodes.size(), tPrepare - tGraph, tGraph, solver.c_str(),
+                      prepared.graph.nodes.size(), tPrepare - tGraph, tGraph, solver,
                       tSolve, tPrepare + tSolve + tPath, m.length, m.extra, m.turns,
                       100 * m.coverage, s.graphCost);
         rows << buf;

@@ -111,6 +111,7 @@ int commandPlan(const Arguments& args) {
         info.solver = result.solution.solver;
         info.robot = request.robot;
         info.metrics = result.metrics;
+        info.epsg = project.plan.epsg;
         writeFileAtomically(*out, pathToFormat(*out, result.path, info));
     }
     std::cout << metricsJsonLine(result.solution.solver, result.metrics) << std::endl;

@@ -6,13 +6,13 @@
 
 namespace fc::detail {
 
-Interval spanAt(const Cell& cell, double x, const ClearanceField& field) {
-    const double r = field.radius();
+Interval spanAt(const Cell& cell, double x, const ClearanceField& field, double margin) {
+    const double r = field.radius() + margin;
     const double lo = cell.floorAt(x) + r, hi = cell.ceilingAt(x) - r;
     if (hi < lo - 1e-12)
         return {1, 0};
     Interval best{1, 0};
-    for (const Interval& piece : field.clearPieces(x, lo, std::max(lo, hi)))
+    for (const Interval& piece : field.clearPieces(x, lo, std::max(lo, hi), margin))
         if (best.empty() || piece.length() > best.length())
             best = piece;
     return best;
@@ -25,8 +25,13 @@ Polyline traceBorder(const Cell& cell, double xa, double xb, bool top,
         std::swap(xa, xb);
     const double r = field.radius();
     const double w = 2 * r;
+    // Interior points keep a small extra margin so that chords between them (which cut a
+    // convex offset arc) still keep the full clearance; the ends are the exact corners.
+    const double margin = 0.5 * field.acceptance();
     auto value = [&](double x, bool& ok) {
-        const Interval s = spanAt(cell, x, field);
+        Interval s = spanAt(cell, x, field, (x == xa || x == xb) ? 0.0 : margin);
+        if (s.empty())
+            s = spanAt(cell, x, field);
         ok = !s.empty();
         return top ? s.hi : s.lo;
     };
@@ -46,7 +51,7 @@ Polyline traceBorder(const Cell& cell, double xa, double xb, bool top,
 
     Polyline out;
     bool ok = true;
-    const double tolerance = 1e-3 * w;
+    const double tolerance = 0.25 * field.acceptance();
     std::function<void(double, double, double, double, int)> refine =
         [&](double x0, double y0, double x1, double y1, int depth) {
             const double xm = 0.5 * (x0 + x1);
@@ -56,7 +61,11 @@ Polyline traceBorder(const Cell& cell, double xa, double xb, bool top,
                 ok = false;
                 return;
             }
-            if (depth < 12 && (x1 - x0) > w / 512 && std::abs(ym - 0.5 * (y0 + y1)) > tolerance) {
+            // Deviation of the midpoint from the chord, measured perpendicular to it.
+            const Vec2 chord{x1 - x0, y1 - y0};
+            const double deviation =
+                std::abs(cross(chord, Vec2{xm - x0, ym - y0})) / std::max(norm(chord), 1e-12);
+            if (depth < 14 && (x1 - x0) > w / 2048 && deviation > tolerance) {
                 refine(x0, y0, xm, ym, depth + 1);
                 refine(xm, ym, x1, y1, depth + 1);
                 return;

@@ -8,7 +8,7 @@ namespace fc::detail {
 
 // The clear part of the vertical line x inside the cell: at least W/2 from walls and
 // W/2 inside the cell's floor and ceiling; the longest piece. Empty when none.
-Interval spanAt(const Cell& cell, double x, const ClearanceField& field);
+Interval spanAt(const Cell& cell, double x, const ClearanceField& field, double margin = 0.0);
 
 // The robot-centre polyline along the bottom (top = false) or top of the cell's clear
 // region from xa to xb (either order). Adaptive sampling keeps chords within ~W/1000 of

@@ -55,7 +55,8 @@ bool capsuleSpan(Vec2 a, Vec2 b, double x, double r, double& lo, double& hi) {
 } // namespace
 
 ClearanceField::ClearanceField(const std::vector<Ring>& rings, double radius)
-    : walls_(rings), radius_(radius), tolerance_(1e-7 * std::max(1.0, radius)) {
+    : walls_(rings), radius_(radius), tolerance_(1e-7 * std::max(1.0, radius)),
+      acceptance_(3e-3 * radius) {
     for (const Ring& ring : rings)
         for (const Vec2& p : ring)
             extent_.add(p);
@@ -80,21 +81,22 @@ ClearanceField::ClearanceField(const std::vector<Ring>& rings, double radius)
             const double offset = radius_ * 1.02 / std::max(sinHalf, 0.2);
             for (int side = -1; side <= 1; side += 2) {
                 const Vec2 q = p + bis * (side * offset);
-                if (walls_.distanceToWalls(q) >= radius_ * 1.01)
+                if (walls_.distanceToWalls(q) >= radius_ * 1.01) // strictly clear
                     cornerPoints_.push_back(q);
             }
         }
     }
 }
 
-std::vector<Interval> ClearanceField::clearPieces(double x, double yLow, double yHigh) const {
+std::vector<Interval> ClearanceField::clearPieces(double x, double yLow, double yHigh,
+                                                  double margin) const {
     std::vector<Interval> forbidden;
     BoundingBox box;
-    box.add({x - radius_, yLow - radius_});
-    box.add({x + radius_, yHigh + radius_});
+    const double r = radius_ + margin - tolerance_;
+    box.add({x - r, yLow - r});
+    box.add({x + r, yHigh + r});
     std::vector<int> hits;
     walls_.query(box, hits);
-    const double r = radius_ - tolerance_;
     for (int id : hits) {
         const Segment& s = walls_.segments()[id];
         double lo, hi;
@@ -122,11 +124,11 @@ std::vector<Interval> ClearanceField::clearPieces(double x, double yLow, double 
 }
 
 bool ClearanceField::isClear(Vec2 p) const {
-    return walls_.distanceToWalls(p) >= radius_ - 10 * tolerance_;
+    return walls_.distanceToWalls(p) >= radius_ - acceptance_;
 }
 
 bool ClearanceField::segmentIsClear(Vec2 a, Vec2 b) const {
-    return walls_.segmentClearance(a, b) >= radius_ - 10 * tolerance_;
+    return walls_.segmentClearance(a, b) >= radius_ - acceptance_;
 }
 
 bool ClearanceField::polylineIsClear(const Polyline& line) const {
@@ -136,7 +138,7 @@ bool ClearanceField::polylineIsClear(const Polyline& line) const {
     return line.size() != 1 || isClear(line[0]);
 }
 
-Polyline ClearanceField::findPath(Vec2 a, Vec2 b) const {
+Polyline ClearanceField::findPath(Vec2 a, Vec2 b, const std::vector<Vec2>& hints) const {
     if (segmentIsClear(a, b))
         return {a, b};
     double margin = std::max(4 * radius_, 0.5 * distance(a, b));
@@ -146,7 +148,7 @@ Polyline ClearanceField::findPath(Vec2 a, Vec2 b) const {
         window.add(b);
         window.minX -= margin, window.minY -= margin;
         window.maxX += margin, window.maxY += margin;
-        Polyline path = searchWindow(a, b, window);
+        Polyline path = searchWindow(a, b, window, hints);
         if (!path.empty())
             return path;
         const bool coversAll = window.minX <= extent_.minX && window.minY <= extent_.minY &&
@@ -158,8 +160,12 @@ Polyline ClearanceField::findPath(Vec2 a, Vec2 b) const {
     return {};
 }
 
-Polyline ClearanceField::searchWindow(Vec2 a, Vec2 b, const BoundingBox& window) const {
+Polyline ClearanceField::searchWindow(Vec2 a, Vec2 b, const BoundingBox& window,
+                                      const std::vector<Vec2>& hints) const {
     std::vector<Vec2> pts{a, b};
+    for (const Vec2& h : hints)
+        if (isClear(h))
+            pts.push_back(h);
     for (const Vec2& c : cornerPoints_)
         if (c.x >= window.minX && c.x <= window.maxX && c.y >= window.minY && c.y <= window.maxY)
             pts.push_back(c);

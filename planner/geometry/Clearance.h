@@ -18,8 +18,14 @@ public:
     double radius() const { return radius_; }
     const SegmentIndex& walls() const { return walls_; }
 
-    // Clear pieces of the vertical segment x = const, y in [yLow, yHigh], bottom to top.
-    std::vector<Interval> clearPieces(double x, double yLow, double yHigh) const;
+    // Clear pieces of the vertical segment x = const, y in [yLow, yHigh], bottom to top,
+    // keeping radius + margin from every wall.
+    std::vector<Interval> clearPieces(double x, double yLow, double yHigh,
+                                      double margin = 0.0) const;
+
+    // Paths count as clear down to radius - acceptance(): traced contours are polylines
+    // through points on the exact offset curve, whose chords may cut it by this much.
+    double acceptance() const { return acceptance_; }
 
     bool isClear(Vec2 p) const;
     bool segmentIsClear(Vec2 a, Vec2 b) const;
@@ -28,14 +34,17 @@ public:
     // Shortest path found over a visibility graph of the clear points next to convex wall
     // corners, searched in a window around a and b that grows when needed. Empty when a
     // and b are not connected within the largest window.
-    Polyline findPath(Vec2 a, Vec2 b) const;
+    // hints: extra clear waypoints worth trying (e.g. points inside a tight doorway).
+    Polyline findPath(Vec2 a, Vec2 b, const std::vector<Vec2>& hints = {}) const;
 
 private:
-    Polyline searchWindow(Vec2 a, Vec2 b, const BoundingBox& window) const;
+    Polyline searchWindow(Vec2 a, Vec2 b, const BoundingBox& window,
+                          const std::vector<Vec2>& hints) const;
 
     SegmentIndex walls_;
     double radius_;
     double tolerance_;
+    double acceptance_;
     std::vector<Vec2> cornerPoints_; // clear points hugging reflex corners of the free space
     BoundingBox extent_;
 };

@@ -4,6 +4,8 @@
 #include "decomposition/StripePlanner.h"
 #include "graph/CornerGraph.h"
 
+#include <algorithm>
+#include <cmath>
 #include <set>
 
 namespace fc {
@@ -41,16 +43,46 @@ private:
         return field_.findPath(a, b);
     }
 
+    // A flat head end leaves a wedge under a slanted floor or ceiling. Where no connection
+    // runs along the border on one side of a stripe end, drive half a column along the
+    // border and back so the head reaches the wall there too.
+    void sealEnd(Polyline& path, const Cell& cell, const StripeRun& run, bool top, int side) {
+        const double w = dec_.coverageWidth;
+        const double xe = std::clamp(run.x + side * 0.5 * w, cell.x0, cell.x1);
+        if (std::abs(xe - run.x) < 0.125 * w)
+            return;
+        const Polyline line = traceBorder(cell, run.x, xe, top, field_);
+        if (line.size() < 2 || !field_.polylineIsClear(line))
+            return;
+        const double y0 = top ? run.span.hi : run.span.lo;
+        double deviation = 0;
+        for (const Vec2& p : line)
+            deviation = std::max(deviation, std::abs(p.y - y0));
+        if (deviation < 0.05 * w)
+            return;
+        path.insert(path.end(), line.begin() + 1, line.end());
+        path.insert(path.end(), line.rbegin() + 1, line.rend());
+    }
+
     Polyline boustrophedon(const Cell& cell, const std::vector<StripeRun>& runs, bool fromBottom) {
         Polyline path;
         bool up = fromBottom;
+        const size_t last = runs.size() - 1;
         for (size_t i = 0; i < runs.size(); ++i) {
             const Vec2 a{runs[i].x, up ? runs[i].span.lo : runs[i].span.hi};
             const Vec2 b{runs[i].x, up ? runs[i].span.hi : runs[i].span.lo};
             if (path.empty() || path.back() != a)
                 path.push_back(a);
+            // The stripe's start end is joined on its left (from the previous stripe), its
+            // finish end on its right (to the next one); seal the other sides.
+            if (i == 0)
+                sealEnd(path, cell, runs[i], !up, -1);
+            sealEnd(path, cell, runs[i], !up, +1);
             if (b != a)
                 path.push_back(b);
+            sealEnd(path, cell, runs[i], up, -1);
+            if (i == last)
+                sealEnd(path, cell, runs[i], up, +1);
             if (i + 1 < runs.size()) {
                 const Polyline step = border(cell, runs[i], runs[i + 1], up);
                 if (step.empty())
@@ -59,6 +91,17 @@ private:
             }
             up = !up;
         }
+        return path;
+    }
+
+    Polyline transitionStripe(const Cell& cell, const StripeRun& run) {
+        Polyline path{{run.x, run.span.lo}};
+        sealEnd(path, cell, run, false, -1);
+        sealEnd(path, cell, run, false, +1);
+        if (run.span.hi != run.span.lo)
+            path.push_back({run.x, run.span.hi});
+        sealEnd(path, cell, run, true, -1);
+        sealEnd(path, cell, run, true, +1);
         return path;
     }
 
@@ -105,7 +148,7 @@ private:
         if (cell.kind == CellKind::Transition) {
             const int b = graph_.addNode(cell.id, CornerKind::Bottom, lb);
             const int t = graph_.addNode(cell.id, CornerKind::Top, lt);
-            addEdge(b, t, EdgeKind::Coverage, cell.id, false, {lb, lt});
+            addEdge(b, t, EdgeKind::Coverage, cell.id, false, transitionStripe(cell, first));
             return;
         }
         const int LB = graph_.addNode(cell.id, CornerKind::LB, lb);
@@ -149,6 +192,34 @@ private:
         return n;
     }
 
+    // Clear points on vertical lines across a shared border: waypoints through doorways
+    // and gaps exactly as wide as the robot, where corner offsets cannot be placed.
+    std::vector<Vec2> borderHints(const Adjacency& a) const {
+        std::vector<Vec2> hints;
+        const Cell& lo = dec_.cells[a.first];
+        const Cell& hi = dec_.cells[a.second];
+        auto sampleLine = [&](double x, double y0, double y1) {
+            for (const Interval& piece : field_.clearPieces(x, y0, y1)) {
+                hints.push_back({x, piece.lo});
+                hints.push_back({x, 0.5 * (piece.lo + piece.hi)});
+                hints.push_back({x, piece.hi});
+            }
+        };
+        const double w = dec_.coverageWidth;
+        if (a.kind == Adjacency::Kind::AcrossSweep) {
+            sampleLine(a.shared.a.x, std::min(a.shared.a.y, a.shared.b.y),
+                       std::max(a.shared.a.y, a.shared.b.y));
+            return hints;
+        }
+        const double x0 = a.shared.a.x, x1 = a.shared.b.x;
+        const int n = std::max(2, static_cast<int>(std::ceil((x1 - x0) / (0.125 * w))));
+        for (int i = 0; i <= n; ++i) {
+            const double x = x0 + (x1 - x0) * i / n;
+            sampleLine(x, lo.floorAt(x), hi.ceilingAt(x));
+        }
+        return hints;
+    }
+
     void addAdjacency(const Adjacency& a) {
         std::vector<int> from, to;
         if (a.kind == Adjacency::Kind::AcrossSweep) {
@@ -161,11 +232,20 @@ private:
             from = sideNodes(a.first, Side::Top);
             to = sideNodes(a.second, Side::Bottom);
         }
-        for (int u : from)
-            for (int v : to)
-                if (connected_.insert({std::min(u, v), std::max(u, v)}).second)
-                    addEdge(u, v, EdgeKind::Inter, -1, false,
-                        field_.findPath(graph_.nodes[u].position, graph_.nodes[v].position));
+        std::vector<Vec2> hints;
+        bool hintsMade = false;
+        for (int u : from) {
+            for (int v : to) {
+                if (!connected_.insert({std::min(u, v), std::max(u, v)}).second)
+                    continue;
+                const Vec2 p = graph_.nodes[u].position, q = graph_.nodes[v].position;
+                if (!field_.segmentIsClear(p, q) && !hintsMade) {
+                    hints = borderHints(a);
+                    hintsMade = true;
+                }
+                addEdge(u, v, EdgeKind::Inter, -1, false, field_.findPath(p, q, hints));
+            }
+        }
     }
 
     const Decomposition& dec_;

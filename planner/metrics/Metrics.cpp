@@ -320,6 +320,16 @@ Metrics computeMetrics(const MetricsInput& input) {
             coveredPixels += firstArc[i] != kNeverSwept ? 1.0 : 0.0;
         }
     }
+    const size_t missed = static_cast<size_t>(sweepablePixels - coveredPixels);
+    const size_t stride = std::max<size_t>(1, missed / 20000 + 1);
+    size_t seen = 0;
+    for (int row = 0; row < grid.rows && missed > 0; ++row)
+        for (int col = 0; col < grid.cols; ++col) {
+            const size_t i = grid.index(col, row);
+            if (headReach[i] && free[i] && required[i] && firstArc[i] == kNeverSwept &&
+                seen++ % stride == 0)
+                metrics.uncovered.push_back(decomposition->frame.toWorld(grid.centre(col, row)));
+        }
     metrics.sweepableArea = sweepablePixels * grid.pixelArea();
     metrics.coveredArea = coveredPixels * grid.pixelArea();
     metrics.coverage = sweepablePixels > 0.0 ? coveredPixels / sweepablePixels : 0.0;

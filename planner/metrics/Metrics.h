@@ -23,6 +23,9 @@ struct Metrics {
     double sweepableArea = 0.0; // m^2, denominator of coverage
     double coveredArea = 0.0;   // m^2, numerator of coverage
     std::vector<Segment> overlaps; // world frame: path pieces over area already swept
+    // World-frame sample points of sweepable area the path never swept (coverage gaps),
+    // thinned to at most about 20,000 points.
+    std::vector<Vec2> uncovered;
 };
 
 struct MetricsInput {

@@ -11,6 +11,7 @@
 #include <boost/geometry/geometries/polygon.hpp>
 #include <cmath>
 #include <random>
+#include <stdexcept>
 #include <string>
 
 namespace fc {
@@ -26,6 +27,13 @@ BPolygon box(double x0, double y0, double x1, double y1) {
     bg::convert(bg::model::box<BPoint>(BPoint(x0, y0), BPoint(x1, y1)), p);
     bg::correct(p);
     return p;
+}
+
+// Boost's union_ must not write into one of its inputs.
+template <typename Geometry> void unite(BMulti& acc, const Geometry& g) {
+    BMulti out;
+    bg::union_(acc, g, out);
+    acc.swap(out);
 }
 
 Ring toRing(const bg::model::ring<BPoint>& r) {
@@ -53,13 +61,13 @@ Plan generateOfficeFloor(int rooms, std::uint64_t seed) {
     Plan plan;
     plan.name = "office-" + std::to_string(rooms);
     BMulti free;
-    bg::union_(free, box(0, 0, spine, wings * wingH + (wings - 1) * wall), free);
+    unite(free, box(0, 0, spine, wings * wingH + (wings - 1) * wall));
     int made = 0;
     for (int w = 0; w < wings; ++w) {
         const double y0 = w * (wingH + wall);
         const double yc = y0 + roomD + wall; // corridor bottom
         BMulti wing;
-        bg::union_(wing, box(spine, yc, spine + perSide * (roomW + wall), yc + corridor), wing);
+        unite(wing, box(spine, yc, spine + perSide * (roomW + wall), yc + corridor));
         plan.rooms.push_back({"W" + std::to_string(w + 1) + "-Corridor",
                               rect(spine, yc, spine + perSide * (roomW + wall), yc + corridor)});
         for (int i = 0; i < perSide; ++i) {
@@ -67,14 +75,11 @@ Plan generateOfficeFloor(int rooms, std::uint64_t seed) {
             for (int side = 0; side < 2 && made < rooms; ++side, ++made) {
                 const double ry0 = side == 0 ? y0 : yc + corridor + wall;
                 const double ry1 = ry0 + roomD;
-                BMulti tmp;
-                bg::union_(wing, box(x0, ry0, x0 + roomW, ry1), tmp);
-                wing.swap(tmp);
+                unite(wing, box(x0, ry0, x0 + roomW, ry1));
                 // The door: a gap in the wall between room and corridor.
                 const double dx = x0 + 0.5 + unit(rng) * (roomW - door - 1.0);
                 const double dy0 = side == 0 ? ry1 - 0.01 : yc + corridor - 0.01;
-                bg::union_(wing, box(dx, dy0, dx + door, dy0 + wall + 0.02), tmp);
-                wing.swap(tmp);
+                unite(wing, box(dx, dy0, dx + door, dy0 + wall + 0.02));
                 const std::string name =
                     "W" + std::to_string(w + 1) + (side ? "-N" : "-S") + std::to_string(i + 1);
                 plan.rooms.push_back({name, rect(x0, ry0, x0 + roomW, ry1)});
@@ -87,14 +92,13 @@ Plan generateOfficeFloor(int rooms, std::uint64_t seed) {
                 }
             }
         }
-        BMulti tmp;
-        bg::union_(free, wing, tmp);
-        free.swap(tmp);
-        bg::union_(free, box(spine - 0.01, yc, spine + 0.01, yc + corridor), tmp);
-        free.swap(tmp);
+        unite(free, wing);
+        unite(free, box(spine - 0.01, yc, spine + 0.01, yc + corridor));
     }
     plan.rooms.push_back({"Spine", rect(0, 0, spine, wings * wingH + (wings - 1) * wall)});
     bg::correct(free);
+    if (free.size() != 1)
+        throw std::logic_error("office generator produced a disconnected floor");
     plan.boundary = toRing(free.front().outer());
     for (const auto& inner : free.front().inners())
         plan.obstacles.push_back(toRing(inner));

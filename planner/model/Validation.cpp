@@ -14,6 +14,7 @@
 
 namespace fc {
 
+using validation::checkRingShape;
 using validation::formatArea;
 using validation::formatNumber;
 using validation::formatPoint;
@@ -50,41 +51,6 @@ struct RingTable {
         return "room \"" + plan.rooms[ring - firstRoom].name + "\"";
     }
 };
-
-void checkRingShape(const Ring& ring, const std::string& name, double tolerance) {
-    for (size_t i = 0; i < ring.size(); ++i) {
-        if (!std::isfinite(ring[i].x) || !std::isfinite(ring[i].y))
-            throw InputError(name + " has a non-finite coordinate at vertex " +
-                             std::to_string(i + 1));
-    }
-    std::vector<std::pair<double, double>> sorted;
-    for (const Vec2& p : ring)
-        sorted.emplace_back(p.x, p.y);
-    std::sort(sorted.begin(), sorted.end());
-    const size_t distinct = std::unique(sorted.begin(), sorted.end()) - sorted.begin();
-    if (distinct < 3)
-        throw InputError(name + " has only " + std::to_string(distinct) +
-                         " distinct vertices; a ring needs at least 3");
-    for (size_t i = 0; i < ring.size(); ++i) {
-        const Vec2 next = ring[(i + 1) % ring.size()];
-        if (distance(ring[i], next) <= tolerance)
-            throw InputError(name + " repeats vertex " + std::to_string(i + 1) + " at " +
-                             formatPoint(ring[i]));
-    }
-    // All vertices on one line (within the tolerance). A zero signed area alone is not
-    // enough: a bow-tie has one, and is reported as self-intersecting instead.
-    const Vec2 first = ring.front();
-    Vec2 farthest = first;
-    for (const Vec2& p : ring)
-        if (distance(p, first) > distance(farthest, first))
-            farthest = p;
-    const Vec2 axis = farthest - first;
-    const bool onOneLine = std::all_of(ring.begin(), ring.end(), [&](Vec2 p) {
-        return std::abs(cross(axis, p - first)) <= tolerance * norm(axis);
-    });
-    if (onOneLine)
-        throw InputError(name + " has zero area (its vertices lie on one line)");
-}
 
 struct EdgeRef {
     int ring, index;
@@ -405,15 +371,11 @@ void validatePlan(const Plan& plan, const RobotProfile& robot) {
     robot.validate();
     const RingTable table(plan);
     const int ringCount = static_cast<int>(table.rings.size());
-    for (int r = 0; r < ringCount; ++r) {
-        for (const Vec2& p : *table.rings[r])
-            if (!std::isfinite(p.x) || !std::isfinite(p.y))
-                checkRingShape(*table.rings[r], table.name(r), 0.0); // names the vertex
-    }
     const double tolerance = validation::planTolerance(plan);
     for (int r = 0; r < ringCount; ++r)
         checkRingShape(*table.rings[r], table.name(r), tolerance);
 
+    // The free space first: the room checks measure areas against it.
     EdgeChecks edgeChecks = checkEdges(table, tolerance);
     throwFirst(edgeChecks.selfIntersections, 0, table.firstRoom);
     checkDuplicateObstacles(plan);

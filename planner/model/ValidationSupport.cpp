@@ -32,6 +32,41 @@ double planTolerance(const Plan& plan) {
     return std::max({1e-9 * extent, 64.0 * DBL_EPSILON * largest, 1e-300});
 }
 
+void checkRingShape(const Ring& ring, const std::string& name, double tolerance) {
+    for (size_t i = 0; i < ring.size(); ++i) {
+        if (!std::isfinite(ring[i].x) || !std::isfinite(ring[i].y))
+            throw InputError(name + " has a non-finite coordinate at vertex " +
+                             std::to_string(i + 1));
+    }
+    std::vector<std::pair<double, double>> sorted;
+    for (const Vec2& p : ring)
+        sorted.emplace_back(p.x, p.y);
+    std::sort(sorted.begin(), sorted.end());
+    const size_t distinct = std::unique(sorted.begin(), sorted.end()) - sorted.begin();
+    if (distinct < 3)
+        throw InputError(name + " has only " + std::to_string(distinct) +
+                         " distinct vertices; a ring needs at least 3");
+    for (size_t i = 0; i < ring.size(); ++i) {
+        const Vec2 next = ring[(i + 1) % ring.size()];
+        if (distance(ring[i], next) <= tolerance)
+            throw InputError(name + " repeats vertex " + std::to_string(i + 1) + " at " +
+                             formatPoint(ring[i]));
+    }
+    // All vertices on one line (within the tolerance). A zero signed area alone is not
+    // enough: a bow-tie has one, and is reported as self-intersecting instead.
+    const Vec2 first = ring.front();
+    Vec2 farthest = first;
+    for (const Vec2& p : ring)
+        if (distance(p, first) > distance(farthest, first))
+            farthest = p;
+    const Vec2 axis = farthest - first;
+    const bool onOneLine = std::all_of(ring.begin(), ring.end(), [&](Vec2 p) {
+        return std::abs(cross(axis, p - first)) <= tolerance * norm(axis);
+    });
+    if (onOneLine)
+        throw InputError(name + " has zero area (its vertices lie on one line)");
+}
+
 std::string formatNumber(double value) {
     char buffer[64];
     std::snprintf(buffer, sizeof buffer, "%.3f", value);

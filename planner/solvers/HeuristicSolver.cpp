@@ -27,10 +27,14 @@ constexpr int kSmallInstance = 40;
 constexpr int kNeighbourCount = 10;
 // Perturbations of the proxy search: a few per cell, within bounds.
 int proxyKicks(int tasks) { return std::clamp(25 * tasks, 300, 6000); }
-// Settled nodes the true-cost polish may spend, per starting order.
-std::uint64_t polishWork(int tasks, int nodes) {
-    return std::clamp<std::uint64_t>(static_cast<std::uint64_t>(tasks) * tasks * nodes * 8,
-                                     200'000, 6'000'000);
+// Settled nodes the true-cost polish may spend per starting order: on small instances
+// enough for many perturbations, on large ones for the moves at the costliest steps.
+std::uint64_t polishWork(int tasks, int nodes, bool small) {
+    const auto n = static_cast<std::uint64_t>(tasks);
+    if (small)
+        return std::clamp<std::uint64_t>(8 * n * n * static_cast<std::uint64_t>(nodes),
+                                         200'000, 6'000'000);
+    return std::max<std::uint64_t>(2'500 * n, 2'000'000);
 }
 
 std::vector<int> tasksOf(const Problem& problem, const std::vector<int>& cells) {
@@ -65,29 +69,27 @@ Solution solveHeuristic(const CornerGraph& graph, const Query& query,
     reportProgress(control, 0.6);
 
     std::vector<int> best = tour.order();
-    double bestCost = evaluator.cost(best);
-    if (small) {
-        // Two different starting points for the true-cost polish: the proxy optimum and the
-        // greedy walk (which already reflects the covered state at every step).
-        std::vector<std::vector<int>> starts{best,
-                                             tasksOf(problem, solveGreedy(graph, query).cellOrder)};
-        const std::uint64_t budget = polishWork(tasks, problem.reachableNodeCount);
-        for (std::size_t s = 0; s < starts.size(); ++s) {
-            std::vector<int> order = starts[s];
-            OrderPolish polish(evaluator, distances, tasks, problem.seed + 7919 * (s + 1));
-            const double cost = polish.improve(order, evaluator.cost(order), budget, control);
-            if (cost < bestCost) {
-                best = order;
-                bestCost = cost;
-            }
-            reportProgress(control, 0.6 + 0.35 * static_cast<double>(s + 1) / starts.size());
+    double bestCost = evaluator.setBase(best);
+    // Starting points for the true-cost polish: the proxy optimum and, on small instances,
+    // the greedy walk (which already reflects the covered state at every step).
+    std::vector<std::vector<int>> starts{best};
+    if (small)
+        starts.push_back(tasksOf(problem, solveGreedy(graph, query).cellOrder));
+    const std::uint64_t budget = polishWork(tasks, problem.reachableNodeCount, small);
+    for (std::size_t s = 0; s < starts.size(); ++s) {
+        std::vector<int> order = starts[s];
+        OrderPolish polish(evaluator, distances, tasks, problem.seed + 7919 * (s + 1));
+        const double cost = polish.improve(order, budget, control);
+        if (cost < bestCost) {
+            best = order;
+            bestCost = cost;
         }
+        reportProgress(control, 0.6 + 0.35 * static_cast<double>(s + 1) / starts.size());
     }
     if (!(bestCost < kInfinity)) {
         // The proxy can prefer an order the covered state forbids (a transit that only
         // existed through a cell's coverage edge); the greedy order is always feasible.
         best = tasksOf(problem, solveGreedy(graph, query).cellOrder);
-        bestCost = evaluator.cost(best);
     }
     Solution solution = finishSolution(graph, query, kName, evaluator.walk(best));
     reportProgress(control, 1.0);

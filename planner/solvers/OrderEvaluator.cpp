@@ -1,6 +1,7 @@
 #include "solvers/OrderEvaluator.h"
 
 #include <algorithm>
+#include <cmath>
 
 namespace fc::solver_detail {
 
@@ -8,24 +9,29 @@ OrderEvaluator::OrderEvaluator(const TransitGraph& graph, TransitSearch& search)
     : graph_(graph), search_(search), covered_(graph.initialCoverage()),
       startSource_{{graph.problem->startNode, 0.0}} {}
 
-const std::vector<NodeCost>& OrderEvaluator::sourcesFor(std::size_t position) {
-    return position == 0 ? startSource_ : labels_[position - 1].exits;
+void OrderEvaluator::cover(int task, bool covered) {
+    covered_[graph_.problem->taskCells[task]] = covered ? 1 : 0;
 }
 
-void OrderEvaluator::advance(const std::vector<int>& order, std::size_t position) {
-    const Problem& problem = *graph_.problem;
+void OrderEvaluator::setCoveredPrefix(int position) {
+    while (coveredPrefix_ < position)
+        cover(base_[coveredPrefix_++], true);
+    while (coveredPrefix_ > position)
+        cover(base_[--coveredPrefix_], false);
+}
+
+const std::vector<NodeCost>& OrderEvaluator::baseSources(int position) const {
+    return position == 0 ? startSource_ : baseSteps_[position - 1].exits;
+}
+
+void OrderEvaluator::coverStep(const std::vector<NodeCost>& sources, int task,
+                               StepLabels& step) {
+    const std::vector<CoverOption>& options = graph_.problem->options[task];
     targets_.clear();
-    if (position == order.size()) {
-        targets_.push_back(problem.endNode);
-        search_.run(graph_.truePrices, covered_, sourcesFor(position), targets_);
-        return;
-    }
-    const std::vector<CoverOption>& options = problem.options[order[position]];
     for (const CoverOption& option : options)
         targets_.push_back(option.entry);
-    search_.run(graph_.truePrices, covered_, sourcesFor(position), targets_);
+    search_.run(graph_.truePrices, covered_, sources, targets_);
 
-    StepLabels& step = labels_[position];
     step.exits.clear();
     step.optionOfExit.clear();
     for (std::size_t o = 0; o < options.size(); ++o) {
@@ -44,62 +50,157 @@ void OrderEvaluator::advance(const std::vector<int>& order, std::size_t position
     }
 }
 
-double OrderEvaluator::cost(const std::vector<int>& order, double bound) {
-    const Problem& problem = *graph_.problem;
-    const std::size_t steps = order.size();
-    std::size_t reuse = std::min({validSteps_, steps, cachedOrder_.size()});
-    for (std::size_t i = 0; i < reuse; ++i) {
-        if (order[i] != cachedOrder_[i]) {
-            reuse = i;
+double OrderEvaluator::finish(const std::vector<NodeCost>& sources) {
+    targets_.assign(1, graph_.problem->endNode);
+    search_.run(graph_.truePrices, covered_, sources, targets_);
+    return search_.cost(graph_.problem->endNode);
+}
+
+double OrderEvaluator::setBase(const std::vector<int>& order) {
+    base_ = order;
+    const int steps = static_cast<int>(order.size());
+    baseSteps_.resize(steps);
+    for (int cell : graph_.problem->taskCells)
+        covered_[cell] = 0;
+    coveredPrefix_ = 0;
+    baseCost_ = kInfinity;
+    for (int k = 0; k < steps; ++k) {
+        coverStep(baseSources(k), order[k], baseSteps_[k]);
+        if (baseSteps_[k].exits.empty())
+            return baseCost_; // infeasible: a cell cannot be reached in this order
+        setCoveredPrefix(k + 1);
+    }
+    baseCost_ = finish(baseSources(steps));
+    return baseCost_;
+}
+
+double OrderEvaluator::baseStepCost(int position) const {
+    auto cheapest = [](const std::vector<NodeCost>& labels) {
+        double least = kInfinity;
+        for (const NodeCost& label : labels)
+            least = std::min(least, label.cost);
+        return least;
+    };
+    return cheapest(baseSteps_[position].exits) - cheapest(baseSources(position));
+}
+
+OrderEvaluator::Comparison OrderEvaluator::compareWithBase(const StepLabels& step,
+                                                           int position) const {
+    // Later steps depend monotonically on these costs: shifting them all by d shifts the
+    // final cost by d. So the final cost lies within the base's plus [min, max] difference.
+    const StepLabels& base = baseSteps_[position];
+    Comparison result;
+    if (base.exits.size() != step.exits.size() || step.exits.empty())
+        return result;
+    double low = kInfinity, high = -kInfinity, tolerance = 0.0;
+    for (std::size_t i = 0; i < step.exits.size(); ++i) {
+        if (step.exits[i].node != base.exits[i].node)
+            return result;
+        const double difference = step.exits[i].cost - base.exits[i].cost;
+        low = std::min(low, difference);
+        high = std::max(high, difference);
+        tolerance = std::max(tolerance, 1e-9 * (1.0 + std::abs(base.exits[i].cost)));
+    }
+    result.comparable = true;
+    result.lowerBound = baseCost_ + low;
+    result.synced = high - low <= tolerance;
+    return result;
+}
+
+double OrderEvaluator::candidateCost(const std::vector<int>& candidate, int first, int last,
+                                     double bound) {
+    const int steps = static_cast<int>(base_.size());
+    setCoveredPrefix(first);
+    candidateFirst_ = first;
+    candidateLast_ = last;
+    candidateWindow_.assign(candidate.begin() + first, candidate.begin() + last + 1);
+    candidateSynced_ = false;
+    candidateCost_ = kInfinity;
+    if (static_cast<int>(candidateSteps_.size()) < steps)
+        candidateSteps_.resize(steps);
+
+    double result = kInfinity;
+    bool stopped = false;
+    int k = first;
+    for (; k < steps; ++k) {
+        const std::vector<NodeCost>& sources =
+            k == first ? baseSources(first) : candidateSteps_[k - 1].exits;
+        StepLabels& step = candidateSteps_[k];
+        coverStep(sources, candidate[k], step);
+        cover(candidate[k], true);
+        double cheapest = kInfinity;
+        for (const NodeCost& exit : step.exits)
+            cheapest = std::min(cheapest, exit.cost);
+        if (!(cheapest < bound)) { // infeasible, or costs never fall enough to win
+            stopped = true;
+            ++k;
+            break;
+        }
+        if (k < last)
+            continue;
+        const Comparison comparison = compareWithBase(step, k);
+        if (comparison.comparable && !(comparison.lowerBound < bound)) {
+            stopped = true; // cannot win, whatever follows
+            ++k;
+            break;
+        }
+        if (comparison.synced) {
+            candidateSynced_ = true;
+            candidateOffset_ = comparison.lowerBound - baseCost_;
+            result = comparison.lowerBound;
+            stopped = true;
+            ++k;
             break;
         }
     }
-    cachedOrder_ = order;
-    validSteps_ = reuse;
-    if (labels_.size() < steps)
-        labels_.resize(steps);
+    if (!stopped)
+        result = finish(candidateSteps_[steps - 1].exits);
+    candidateStop_ = k;
+    for (int j = first; j < k; ++j) // back to the base's covered prefix at `first`
+        cover(candidate[j], false);
+    coveredPrefix_ = first;
+    candidateCost_ = result < bound ? result : kInfinity;
+    return candidateCost_;
+}
 
-    for (int cell : problem.taskCells)
-        covered_[cell] = 0;
-    for (std::size_t i = 0; i < reuse; ++i)
-        covered_[problem.taskCells[order[i]]] = 1;
-
-    for (std::size_t i = reuse; i < steps; ++i) {
-        advance(order, i);
-        validSteps_ = i + 1;
-        double cheapest = kInfinity;
-        for (const NodeCost& exit : labels_[i].exits)
-            cheapest = std::min(cheapest, exit.cost);
-        if (!(cheapest < bound)) // costs never fall, so this order cannot beat the bound
-            return kInfinity;
-        covered_[problem.taskCells[order[i]]] = 1;
-    }
-    advance(order, steps);
-    const double total = search_.cost(problem.endNode);
-    return total < bound ? total : kInfinity;
+void OrderEvaluator::acceptCandidate() {
+    for (int j = candidateFirst_; j < candidateStop_; ++j)
+        std::swap(baseSteps_[j], candidateSteps_[j]);
+    std::copy(candidateWindow_.begin(), candidateWindow_.end(), base_.begin() + candidateFirst_);
+    if (candidateSynced_) // later steps are the base's, shifted by a constant
+        for (std::size_t j = candidateStop_; j < baseSteps_.size(); ++j)
+            for (NodeCost& exit : baseSteps_[j].exits)
+                exit.cost += candidateOffset_;
+    baseCost_ = candidateCost_;
+    candidateSynced_ = false;
+    candidateStop_ = candidateFirst_; // a second accept would change nothing
+    candidateWindow_.clear();
 }
 
 Walk OrderEvaluator::walk(const std::vector<int>& order) {
     const Problem& problem = *graph_.problem;
     const CornerGraph& graph = *problem.graph;
-    if (!(cost(order) < kInfinity))
+    if (!(setBase(order) < kInfinity))
         throw SolverError("internal error: no walk covers the cells in the chosen order");
 
     // Walk back from the end, re-running each step's search under its covered set to
     // recover where its cheapest label came from.
-    const std::size_t steps = order.size();
+    const int steps = static_cast<int>(order.size());
     std::vector<std::vector<int>> transits(steps + 1);
     std::vector<int> coverEdges(steps);
+    StepLabels scratch;
     int target = problem.endNode;
-    for (std::size_t s = steps + 1; s-- > 0;) {
-        if (s < steps)
-            covered_[problem.taskCells[order[s]]] = 0;
-        advance(order, s);
+    for (int s = steps; s >= 0; --s) {
+        setCoveredPrefix(s);
+        if (s == steps)
+            finish(baseSources(s));
+        else
+            coverStep(baseSources(s), order[s], scratch);
         transits[s] = search_.edgesTo(target);
         if (s == 0)
             break;
         const int exit = search_.sourceOf(target);
-        const StepLabels& previous = labels_[s - 1];
+        const StepLabels& previous = baseSteps_[s - 1];
         const auto at = std::find_if(previous.exits.begin(), previous.exits.end(),
                                      [&](const NodeCost& x) { return x.node == exit; });
         const CoverOption& option =
@@ -107,7 +208,6 @@ Walk OrderEvaluator::walk(const std::vector<int>& order) {
         coverEdges[s - 1] = option.edge;
         target = option.entry;
     }
-    validSteps_ = 0; // the re-runs overwrote the last step's labels
 
     Walk walk;
     walk.nodes.push_back(problem.startNode);
@@ -115,7 +215,7 @@ Walk OrderEvaluator::walk(const std::vector<int>& order) {
         walk.edges.push_back(edge);
         walk.nodes.push_back(graph.edges[edge].other(walk.nodes.back()));
     };
-    for (std::size_t s = 0; s <= steps; ++s) {
+    for (int s = 0; s <= steps; ++s) {
         for (int edge : transits[s])
             append(edge);
         if (s < steps)

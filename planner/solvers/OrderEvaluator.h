@@ -2,6 +2,10 @@
 // is fixed (the cells already covered), so the best entry/exit corner per cell follows from
 // a dynamic programme along the order: one multi-source search per step, seeded with the
 // cost of standing at each exit corner of the previous cell.
+//
+// Local changes are evaluated incrementally against a base order: the steps before the
+// change are reused, and once past it, as soon as a step's costs equal the base's up to a
+// constant, every later step does too (same covered set, same cells), so the search stops.
 #pragma once
 
 #include "solvers/TransitSearch.h"
@@ -14,10 +18,19 @@ class OrderEvaluator {
 public:
     OrderEvaluator(const TransitGraph& graph, TransitSearch& search);
 
-    // Cost of the cheapest walk that covers the tasks in `order` (each task exactly once)
-    // and ends at the end node; +inf when infeasible or once it provably reaches `bound`.
-    // Reuses the steps shared with the previous call's order prefix.
-    double cost(const std::vector<int>& order, double bound = kInfinity);
+    // Makes `order` (tasks, each once) the base; returns its cost, +inf if infeasible.
+    double setBase(const std::vector<int>& order);
+    const std::vector<int>& baseOrder() const { return base_; }
+    double baseCost() const { return baseCost_; }
+    // What the base spends getting to the cell at `position` (roughly: its transit cost).
+    double baseStepCost(int position) const;
+
+    // Exact cost of `candidate`, a reordering of the base within positions [first, last];
+    // +inf when infeasible or once it provably reaches `bound`.
+    double candidateCost(const std::vector<int>& candidate, int first, int last,
+                         double bound = kInfinity);
+    // Makes the candidate evaluated last the base (its cost must have been finite).
+    void acceptCandidate();
 
     // The cheapest walk for the order (throws SolverError if the order is infeasible).
     Walk walk(const std::vector<int>& order);
@@ -31,19 +44,37 @@ private:
         std::vector<int> optionOfExit; // option index that reached each exit
     };
 
-    // Runs the transit into step `position` (the end node when position == order size)
-    // from the previous step's labels and fills labels_[position].
-    void advance(const std::vector<int>& order, std::size_t position);
-    const std::vector<NodeCost>& sourcesFor(std::size_t position);
+    // Runs the transit from `sources` into the cell of `task` and fills `step`.
+    void coverStep(const std::vector<NodeCost>& sources, int task, StepLabels& step);
+    double finish(const std::vector<NodeCost>& sources); // transit to the end node
+    const std::vector<NodeCost>& baseSources(int position) const;
+    void setCoveredPrefix(int position); // covered_ = base cells before `position`
+    void cover(int task, bool covered);
+    struct Comparison {
+        bool comparable = false; // same exit corners as the base at this position
+        bool synced = false;     // costs equal the base's up to a constant
+        double lowerBound = 0.0; // on the final cost
+    };
+    // Valid once the candidate's cells before and at `position` are the base's as a set.
+    Comparison compareWithBase(const StepLabels& step, int position) const;
 
     const TransitGraph& graph_;
     TransitSearch& search_;
     std::vector<char> covered_;
-    std::vector<int> cachedOrder_;
-    std::vector<StepLabels> labels_; // valid for cachedOrder_[0..validSteps_)
-    std::size_t validSteps_ = 0;
+    int coveredPrefix_ = 0;
     std::vector<NodeCost> startSource_;
     std::vector<int> targets_;
+
+    std::vector<int> base_;
+    std::vector<StepLabels> baseSteps_;
+    double baseCost_ = kInfinity;
+
+    // The last candidate: its window, recomputed steps [first, stop) and how it ended.
+    std::vector<int> candidateWindow_;
+    std::vector<StepLabels> candidateSteps_;
+    int candidateFirst_ = 0, candidateLast_ = -1, candidateStop_ = 0;
+    bool candidateSynced_ = false;
+    double candidateOffset_ = 0.0, candidateCost_ = kInfinity;
 };
 
 } // namespace fc::solver_detail

@@ -7,7 +7,9 @@ namespace fc::solver_detail {
 namespace {
 
 constexpr double kImprovement = 1e-7;
-constexpr int kEveryPairLimit = 14; // up to here every move is tried, not just near ones
+constexpr int kEveryPairLimit = 16; // up to here every move is tried, not just near ones
+constexpr int kPerturbLimit = 60;   // up to here perturbations follow the descent
+constexpr int kLongestWindow = 16;  // larger instances: positions one move may reorder
 
 } // namespace
 
@@ -16,24 +18,48 @@ OrderPolish::OrderPolish(OrderEvaluator& evaluator, const ProxyDistances& distan
     : evaluator_(evaluator), distances_(distances), count_(taskCount),
       everyPair_(taskCount <= kEveryPairLimit), random_(seed), indexOf_(taskCount, 0) {}
 
-bool OrderPolish::tryCandidate(std::vector<int>& order, double& cost) {
-    const double candidateCost = evaluator_.cost(candidate_, cost - kImprovement);
-    if (!(candidateCost < cost - kImprovement))
+bool OrderPolish::tryWindow(int first, int last) {
+    const std::vector<int>& base = evaluator_.baseOrder();
+    if (!everyPair_ && last - first + 1 > kLongestWindow) {
+        std::copy(base.begin() + first, base.begin() + last + 1, candidate_.begin() + first);
         return false;
-    order = candidate_;
-    cost = candidateCost;
-    return true;
+    }
+    const double cost =
+        evaluator_.candidateCost(candidate_, first, last, evaluator_.baseCost() - kImprovement);
+
+    if (cost < kInfinity) {
+        evaluator_.acceptCandidate();
+        return true;
+    }
+    std::copy(base.begin() + first, base.begin() + last + 1, candidate_.begin() + first);
+    return false;
 }
 
-std::vector<int> OrderPolish::partnerIndices(const std::vector<int>& order, int index) const {
-    // Gaps g in [0, n]: g sits between order[g - 1] and order[g].
+bool OrderPolish::tryMoveSegment(int index, int length, int gap, bool reversed) {
+    // Gap g sits before base[g]; the segment base[index .. index+length) moves there.
+    const std::vector<int>& base = evaluator_.baseOrder();
+    auto segmentAt = [&](int to) {
+        for (int s = 0; s < length; ++s)
+            candidate_[to + s] = base[reversed ? index + length - 1 - s : index + s];
+    };
+    if (gap < index) {
+        segmentAt(gap);
+        std::copy(base.begin() + gap, base.begin() + index, candidate_.begin() + gap + length);
+        return tryWindow(gap, index + length - 1);
+    }
+    std::copy(base.begin() + index + length, base.begin() + gap, candidate_.begin() + index);
+    segmentAt(gap - length);
+    return tryWindow(index, gap - 1);
+}
+
+std::vector<int> OrderPolish::partnerGaps(int index) const {
     std::vector<int> gaps;
     if (everyPair_) {
         for (int g = 0; g <= count_; ++g)
             gaps.push_back(g);
         return gaps;
     }
-    for (int mark : distances_.neighbours(order[index])) {
+    for (int mark : distances_.neighbours(evaluator_.baseOrder()[index])) {
         if (mark == kStartMark) {
             gaps.push_back(0);
         } else if (mark == kEndMark) {
@@ -48,95 +74,94 @@ std::vector<int> OrderPolish::partnerIndices(const std::vector<int>& order, int 
     return gaps;
 }
 
-bool OrderPolish::improvingPass(std::vector<int>& order, double& cost) {
-    // Late positions first: their candidates share the longest prefix with the order.
-    for (int i = count_ - 1; i >= 0 && !exhausted(); --i) {
-        for (int k = 0; k < count_; ++k)
-            indexOf_[order[k]] = k;
-        const std::vector<int> gaps = partnerIndices(order, i);
+bool OrderPolish::improveAt(int i) {
+    const std::vector<int>& base = evaluator_.baseOrder();
+    for (int k = 0; k < count_; ++k)
+        indexOf_[base[k]] = k;
+    const std::vector<int> gaps = partnerGaps(i);
 
-        // Or-opt: move order[i .. i+length) to another gap, either way round.
-        for (int length = 1; length <= 3 && i + length <= count_; ++length) {
-            for (int g : gaps) {
-                if (g >= i && g <= i + length)
-                    continue;
-                for (int reversed = 0; reversed < (length == 1 ? 1 : 2); ++reversed) {
-                    candidate_.clear();
-                    const int target = g < i ? g : g - length;
-                    for (int k = 0; k < count_; ++k) {
-                        if (k >= i && k < i + length)
-                            continue;
-                        if (static_cast<int>(candidate_.size()) == target)
-                            for (int s = 0; s < length; ++s)
-                                candidate_.push_back(order[reversed ? i + length - 1 - s : i + s]);
-                        candidate_.push_back(order[k]);
-                    }
-                    if (static_cast<int>(candidate_.size()) == target)
-                        for (int s = 0; s < length; ++s)
-                            candidate_.push_back(order[reversed ? i + length - 1 - s : i + s]);
-                    if (tryCandidate(order, cost))
+    // Or-opt: move base[i .. i+length) to another gap, either way round.
+    for (int length = 1; length <= 3 && i + length <= count_; ++length)
+        for (int g : gaps)
+            if (g < i || g > i + length)
+                for (int reversed = 0; reversed < (length == 1 ? 1 : 2); ++reversed)
+                    if (tryMoveSegment(i, length, g, reversed != 0))
                         return true;
-                }
-            }
-        }
 
-        // 2-opt (reverse a stretch so order[i] meets a partner, the start or the end) and
-        // swaps.
-        for (int g : gaps) {
-            const int j = std::min(g, count_ - 1);
-            const int low = std::min(i, j), high = std::max(i, j);
-            std::vector<std::pair<int, int>> stretches{{low + 1, high}, {low, high - 1}};
-            if (g == 0)
-                stretches.push_back({0, i});
-            if (g == count_)
-                stretches.push_back({i, count_ - 1});
-            for (const auto& [first, last] : stretches) {
-                if (last - first < 1)
-                    continue;
-                candidate_ = order;
-                std::reverse(candidate_.begin() + first, candidate_.begin() + last + 1);
-                if (tryCandidate(order, cost))
-                    return true;
-            }
-            if (j != i && std::abs(j - i) > 1) {
-                candidate_ = order;
-                std::swap(candidate_[i], candidate_[j]);
-                if (tryCandidate(order, cost))
-                    return true;
-            }
+    // 2-opt (reverse a stretch so base[i] meets a partner, the start or the end), swaps.
+    for (int g : gaps) {
+        const int j = std::min(g, count_ - 1);
+        const int low = std::min(i, j), high = std::max(i, j);
+        std::vector<std::pair<int, int>> stretches{{low + 1, high}, {low, high - 1}};
+        if (g == 0)
+            stretches.push_back({0, i});
+        if (g == count_)
+            stretches.push_back({i, count_ - 1});
+        for (const auto& [first, last] : stretches) {
+            if (last - first < 1)
+                continue;
+            std::reverse_copy(base.begin() + first, base.begin() + last + 1,
+                              candidate_.begin() + first);
+            if (tryWindow(first, last))
+                return true;
+        }
+        if (std::abs(j - i) > 1) {
+            std::swap(candidate_[i], candidate_[j]);
+            if (tryWindow(low, high))
+                return true;
         }
     }
     return false;
 }
 
-double OrderPolish::improve(std::vector<int>& order, double cost, std::uint64_t workBudget,
+void OrderPolish::descend(const SolveControl& control) {
+    std::vector<std::pair<double, int>> steps(count_);
+    for (bool improved = true; improved && !exhausted();) {
+        improved = false;
+        // Costliest steps first: moves that remove an expensive transit (typically a jump
+        // back across covered cells) are the ones that pay, so a tight budget finds them.
+        for (int i = 0; i < count_; ++i)
+            steps[i] = {-evaluator_.baseStepCost(i), i};
+        std::sort(steps.begin(), steps.end());
+        for (int k = 0; k < count_ && !exhausted(); ++k) {
+            const int position = steps[k].second; // stale after a move, still a good guess
+            if (improveAt(position) || (position > 0 && !exhausted() && improveAt(position - 1)))
+                improved = true;
+            if (k % 32 == 0)
+                throwIfCancelled(control, "heuristic");
+        }
+    }
+}
+
+double OrderPolish::improve(std::vector<int>& order, std::uint64_t workBudget,
                             const SolveControl& control) {
     workLimit_ = evaluator_.work() + workBudget;
-    auto descend = [&](std::vector<int>& current, double& currentCost) {
-        while (!exhausted() && improvingPass(current, currentCost))
-            throwIfCancelled(control, "heuristic");
-    };
-    descend(order, cost);
-    if (count_ < 4)
-        return cost;
-    while (!exhausted()) {
-        // Perturb: swap two adjacent stretches, sometimes reversing one (a double bridge).
-        std::vector<int> trial = order;
+    if (!(evaluator_.setBase(order) < kInfinity))
+        return kInfinity;
+    candidate_ = order;
+    descend(control);
+    std::vector<int> best = evaluator_.baseOrder();
+    double bestCost = evaluator_.baseCost();
+    while (count_ >= 4 && count_ <= kPerturbLimit && !exhausted()) {
+        // Perturb: swap two short adjacent stretches, sometimes reversing one.
+        std::vector<int> trial = best;
         const int a = random_.below(count_ - 2);
         const int b = a + 1 + random_.below(std::min(count_ - a - 2, 5));
         const int c = b + 1 + random_.below(std::min(count_ - b, 5));
         std::rotate(trial.begin() + a, trial.begin() + b, trial.begin() + c);
         if (random_.below(2) == 1)
             std::reverse(trial.begin() + a, trial.begin() + a + (c - b));
-        double trialCost = evaluator_.cost(trial);
-        descend(trial, trialCost);
-        if (trialCost < cost - kImprovement) {
-            order = trial;
-            cost = trialCost;
+        if (!(evaluator_.setBase(trial) < kInfinity))
+            continue;
+        candidate_ = trial;
+        descend(control);
+        if (evaluator_.baseCost() < bestCost - kImprovement) {
+            best = evaluator_.baseOrder();
+            bestCost = evaluator_.baseCost();
         }
-        throwIfCancelled(control, "heuristic");
     }
-    return cost;
+    order = best;
+    return bestCost;
 }
 
 } // namespace fc::solver_detail

@@ -1,4 +1,3 @@
-#include <cstdlib>
 #include "solvers/ProxyDistances.h"
 
 #include <algorithm>
@@ -33,7 +32,7 @@ ProxyDistances::ProxyDistances(const TransitGraph& graph, TransitSearch& search,
         const bool task = edge.cell >= 0 && problem.taskOfCell[edge.cell] >= 0;
         double price = edgeCost(edge, true); // covered: coverage and contour edges 3x
         if (task && edge.kind == EdgeKind::Contour)
-            price = edgeCost(edge, false) * (getenv("FC_F") ? atof(getenv("FC_F")) : 1.0);
+            price = edgeCost(edge, false); // floor/ceiling of a cell still to cover: 1x
         prices_.uncovered[edge.id] = price;
     }
     prices_.covered = prices_.uncovered;

@@ -53,7 +53,7 @@ TEST(CornerGraph, ParityRuleAndCornerOffsets) {
     const GraphEdge& c0 = even.edges[even.cells[0].coverageEdges[0]];
     EXPECT_EQ(c0.u, n[0]);
     EXPECT_EQ(c0.v, n[2]); // LB-RB
-    EXPECT_NEAR(c0.length, 4 * 2 + 3 * 1, 1e-9);
+    EXPECT_NEAR(c0.length, 4 * 2 + 3 * 1, 1e-4); // traced borders keep a tiny margin
 
     p.boundary = rect(0, 0, 5, 3); // 5 stripes (odd): LB-RT and LT-RB
     const CornerGraph odd = buildCornerGraph(decompose(p, {}));

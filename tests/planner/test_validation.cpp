@@ -201,7 +201,9 @@ TEST(Validation, RotatedRoomsAtUtmCoordinatesShareWallsWithinRounding) {
     plan.rooms = {{"West", {place(0, 0), bottom, top, place(0, 8)}},
                   {"East", {bottom, place(12, 0), place(12, 8), top}}};
     EXPECT_EQ(validationError(plan), "");
-    plan.rooms[1].outline[0] = place(3.3, 0); // now 2 m x 8 m of overlap
+    plan.rooms[1].outline[0] = place(3.3, 0); // a triangle of 2 m x 8 m / 2 overlaps
+    expectKeywords(validationError(plan), {"rooms \"West\" and \"East\" overlap by 8.00 m^2"});
+    plan.rooms[1].outline[3] = place(3.3, 8); // and now a 2 m x 8 m strip
     expectKeywords(validationError(plan), {"rooms \"West\" and \"East\" overlap by 16.00 m^2"});
 }
 
