@@ -1,5 +1,6 @@
 #include "decomposition/Decomposition.h"
 
+#include "decomposition/ClearRanges.h"
 #include "decomposition/FunctionClip.h"
 #include "decomposition/SlabSweep.h"
 #include "decomposition/StripePlanner.h"
@@ -49,6 +50,7 @@ struct RawCell {
 struct Piece {
     int cell = -1; // final cell id
     double x0 = 0, x1 = 0;
+    int layer = 0, layers = 1; // stacked sub-cells where the clear region splits in y
 };
 
 struct RawAdjacency {
@@ -134,67 +136,34 @@ std::vector<std::pair<double, double>> pieceRanges(double x0, double x1, bool le
     return {{x0, x1}};
 }
 
-// Splits a raw cell where its clear region is interrupted (a passage narrower than W):
-// returns x-ranges with a flag telling whether the robot fits there. Infeasible margins
-// at the cell's own ends (next to walls) are not interruptions.
-struct Range {
-    double x0, x1;
-    bool feasible;
-};
-
-std::vector<Range> feasibleRanges(const RawCell& raw, const ClearanceField& field) {
-    Cell probe;
-    probe.x0 = raw.x0, probe.x1 = raw.x1;
-    probe.floor = raw.floor, probe.ceiling = raw.ceiling;
-    const double r = field.radius();
-    const double step = 0.25 * r;
-    const int n = std::max(1, static_cast<int>(std::ceil((raw.x1 - raw.x0) / step)));
-    std::vector<double> xs(n);
-    std::vector<char> ok(n);
-    for (int i = 0; i < n; ++i) {
-        xs[i] = raw.x0 + (i + 0.5) * (raw.x1 - raw.x0) / n;
-        ok[i] = !detail::spanAt(probe, xs[i], field).empty();
-    }
-    auto boundary = [&](double good, double bad) { // bisection to the feasibility edge
-        for (int it = 0; it < 30; ++it) {
-            const double mid = 0.5 * (good + bad);
-            (detail::spanAt(probe, mid, field).empty() ? bad : good) = mid;
-        }
-        return good;
-    };
-    std::vector<Range> out;
-    double start = raw.x0;
-    int i = 0;
-    while (i < n) {
-        if (ok[i]) {
-            ++i;
+// The pieces of a raw cell on either side of x whose slice overlaps [y0, y1].
+std::vector<const Piece*> piecesAt(const std::vector<Piece>& pieces,
+                                   const std::vector<Cell>& cells, double x, bool leftOfX,
+                                   double y0, double y1) {
+    std::vector<const Piece*> out;
+    for (const Piece& p : pieces) {
+        const bool inside = leftOfX ? (p.x0 < x && x <= p.x1) : (p.x0 <= x && x < p.x1);
+        if (!inside)
             continue;
-        }
-        int j = i;
-        while (j < n && !ok[j])
-            ++j;
-        if (i > 0 && j < n) { // an interior interruption
-            const double a = boundary(xs[i - 1], xs[i]), b = boundary(xs[j], xs[j - 1]);
-            double cutA = std::min(a + r, raw.x1), cutB = std::max(b - r, raw.x0);
-            if (cutA >= cutB)
-                cutA = cutB = 0.5 * (a + b);
-            out.push_back({start, cutA, true});
-            if (cutB > cutA)
-                out.push_back({cutA, cutB, false});
-            start = cutB;
-        }
-        i = j;
+        const Cell& c = cells[p.cell];
+        if (std::min(c.ceilingAt(x), y1) - std::max(c.floorAt(x), y0) > 0)
+            out.push_back(&p);
     }
-    const bool anyFeasible = std::any_of(ok.begin(), ok.end(), [](char c) { return c != 0; });
-    out.push_back({start, raw.x1, anyFeasible});
     return out;
 }
 
-const Piece& pieceAt(const std::vector<Piece>& pieces, double x, bool leftOfX) {
-    for (const Piece& p : pieces)
-        if (leftOfX ? (p.x0 < x && x <= p.x1) : (p.x0 <= x && x < p.x1))
-            return p;
-    return leftOfX ? pieces.back() : pieces.front();
+Cell makeCell(int id, CellKind kind, int room, double x0, double x1, Polyline floor,
+              Polyline ceiling, double w) {
+    Cell c;
+    c.id = id;
+    c.kind = kind;
+    c.room = room;
+    c.x0 = x0, c.x1 = x1;
+    c.floor = std::move(floor);
+    c.ceiling = std::move(ceiling);
+    c.stripes = kind == CellKind::Transition ? std::vector<double>{0.5 * (x0 + x1)}
+                                             : stripePositions(x0, x1, w);
+    return c;
 }
 
 } // namespace
@@ -279,58 +248,87 @@ Decomposition decompose(const Plan& plan, const DecompositionOptions& options) {
             leftCritical[a.second] = 1;
     }
 
-    // Split at narrow passages, cut transition strips and create the final cells.
+    // Split where the clear region changes (narrow passages, spans stacked in y), cut
+    // transition strips and create the final cells.
     const ClearanceField field(out.freeSpace, 0.5 * w);
     std::vector<std::vector<Piece>> pieces(raw.size());
     std::vector<CellKind> kinds;
     for (size_t i = 0; i < raw.size(); ++i) {
         const RawCell& r = raw[i];
-        std::vector<std::pair<double, double>> ranges;
-        std::vector<CellKind> rangeKinds;
-        for (const Range& part : feasibleRanges(r, field)) {
+        Cell probe;
+        probe.x0 = r.x0, probe.x1 = r.x1, probe.floor = r.floor, probe.ceiling = r.ceiling;
+        for (const detail::ClearRange& part : detail::clearRanges(probe, field)) {
+            const Polyline floor = detail::clipFunction(r.floor, part.x0, part.x1);
+            const Polyline ceiling = detail::clipFunction(r.ceiling, part.x0, part.x1);
+            auto add = [&](Cell c, int layer, int layers) {
+                pieces[i].push_back({c.id, c.x0, c.x1, layer, layers});
+                out.cells.push_back(std::move(c));
+            };
+            if (part.layers >= 2) {
+                for (int k = 0; k < part.layers; ++k) {
+                    const int id = static_cast<int>(out.cells.size());
+                    add(makeCell(id, CellKind::Primary, r.room, part.x0, part.x1,
+                                 k == 0 ? floor : part.pinches[k - 1],
+                                 k + 1 == part.layers ? ceiling : part.pinches[k], w),
+                        k, part.layers);
+                }
+                continue;
+            }
             const bool left = part.x0 == r.x0 && leftCritical[i];
             const bool right = part.x1 == r.x1 && rightCritical[i];
-            if (options.transitionCells && part.feasible) {
-                const auto sub = pieceRanges(part.x0, part.x1, left, right, w, kinds);
-                ranges.insert(ranges.end(), sub.begin(), sub.end());
-                rangeKinds.insert(rangeKinds.end(), kinds.begin(), kinds.end());
-            } else {
-                ranges.push_back({part.x0, part.x1});
-                rangeKinds.push_back(CellKind::Primary);
+            std::vector<std::pair<double, double>> ranges{{part.x0, part.x1}};
+            kinds = {CellKind::Primary};
+            if (options.transitionCells && part.layers == 1)
+                ranges = pieceRanges(part.x0, part.x1, left, right, w, kinds);
+            for (size_t p = 0; p < ranges.size(); ++p) {
+                const auto [a, b] = ranges[p];
+                add(makeCell(static_cast<int>(out.cells.size()), kinds[p], r.room, a, b,
+                             detail::clipFunction(r.floor, a, b),
+                             detail::clipFunction(r.ceiling, a, b), w),
+                    0, 1);
             }
         }
-        kinds = rangeKinds;
-        for (size_t p = 0; p < ranges.size(); ++p) {
-            Cell c;
-            c.id = static_cast<int>(out.cells.size());
-            c.kind = kinds[p];
-            c.room = r.room;
-            c.x0 = ranges[p].first, c.x1 = ranges[p].second;
-            c.floor = detail::clipFunction(r.floor, c.x0, c.x1);
-            c.ceiling = detail::clipFunction(r.ceiling, c.x0, c.x1);
-            c.stripes = c.kind == CellKind::Transition ? std::vector<double>{0.5 * (c.x0 + c.x1)}
-                                                       : stripePositions(c.x0, c.x1, w);
-            pieces[i].push_back({c.id, c.x0, c.x1});
-            if (p > 0) {
-                const Cell& prev = out.cells.back();
-                out.adjacencies.push_back({Adjacency::Kind::AcrossSweep, prev.id, c.id,
-                                           {{c.x0, c.floorAt(c.x0)}, {c.x0, c.ceilingAt(c.x0)}}});
+        // Neighbouring pieces of one raw cell touch across the sweep where their slices
+        // overlap.
+        for (const Piece& l : pieces[i]) {
+            for (const Piece& rt : pieces[i]) {
+                if (l.x1 != rt.x0)
+                    continue;
+                const Cell& cl = out.cells[l.cell];
+                const Cell& cr = out.cells[rt.cell];
+                const double x = l.x1;
+                const double y0 = std::max(cl.floorAt(x), cr.floorAt(x));
+                const double y1 = std::min(cl.ceilingAt(x), cr.ceilingAt(x));
+                if (y1 - y0 > 1e-9 * extent)
+                    out.adjacencies.push_back(
+                        {Adjacency::Kind::AcrossSweep, l.cell, rt.cell, {{x, y0}, {x, y1}}});
             }
-            out.cells.push_back(std::move(c));
         }
     }
 
     for (const RawAdjacency& a : adj) {
         if (a.kind == Adjacency::Kind::AcrossSweep) {
-            const Piece& l = pieceAt(pieces[a.first], a.x0, true);
-            const Piece& r = pieceAt(pieces[a.second], a.x0, false);
-            out.adjacencies.push_back(
-                {a.kind, l.cell, r.cell, {{a.x0, a.y0}, {a.x0, a.y1}}});
             out.criticalSlices.push_back({a.x0, a.y0, a.y1});
+            for (const Piece* l : piecesAt(pieces[a.first], out.cells, a.x0, true, a.y0, a.y1)) {
+                for (const Piece* r :
+                     piecesAt(pieces[a.second], out.cells, a.x0, false, a.y0, a.y1)) {
+                    const Cell& cl = out.cells[l->cell];
+                    const Cell& cr = out.cells[r->cell];
+                    const double y0 = std::max({a.y0, cl.floorAt(a.x0), cr.floorAt(a.x0)});
+                    const double y1 = std::min({a.y1, cl.ceilingAt(a.x0), cr.ceilingAt(a.x0)});
+                    if (y1 - y0 > 1e-9 * extent)
+                        out.adjacencies.push_back(
+                            {a.kind, l->cell, r->cell, {{a.x0, y0}, {a.x0, y1}}});
+                }
+            }
             continue;
         }
         for (const Piece& lo : pieces[a.first]) {
+            if (lo.layer + 1 != lo.layers)
+                continue; // only the top layer touches the cell above
             for (const Piece& up : pieces[a.second]) {
+                if (up.layer != 0)
+                    continue;
                 const double x0 = std::max({a.x0, lo.x0, up.x0});
                 const double x1 = std::min({a.x1, lo.x1, up.x1});
                 if (x1 - x0 <= 1e-9 * extent)

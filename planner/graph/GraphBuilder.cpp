@@ -58,7 +58,7 @@ private:
         double deviation = 0;
         for (const Vec2& p : line)
             deviation = std::max(deviation, std::abs(p.y - y0));
-        if (deviation < 0.05 * w)
+        if (deviation < 0.2 * w)
             return;
         path.insert(path.end(), line.begin() + 1, line.end());
         path.insert(path.end(), line.rbegin() + 1, line.rend());

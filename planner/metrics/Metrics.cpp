@@ -287,11 +287,13 @@ Metrics computeMetrics(const MetricsInput& input) {
         }
     }
 
-    // Centre positions: distance between pixel centres >= W/2, which admits true wall
-    // distances down to W/2 minus half a pixel (the raster's tolerance).
+    // Centre positions: the nearest blocked pixel centre lies up to half a pixel beyond the
+    // wall, so require W/2 plus half a pixel; otherwise gaps slightly narrower than W
+    // would count as passable.
     const std::vector<float> distance2 = squaredDistanceToBlocked(free, grid.cols, grid.rows);
     const double halfWidthPixels = 0.5 * width / resolution;
-    const float minDistance2 = static_cast<float>(halfWidthPixels * halfWidthPixels - 1e-6);
+    const double minDistance = halfWidthPixels + 0.5;
+    const float minDistance2 = static_cast<float>(minDistance * minDistance - 1e-6);
     Mask centres(grid.size(), 0);
     for (size_t i = 0; i < centres.size(); ++i)
         centres[i] = free[i] && distance2[i] >= minDistance2;
@@ -309,7 +311,8 @@ Metrics computeMetrics(const MetricsInput& input) {
         pathInRegion ? floodFill(centres, grid.cols, grid.rows, walk.visitedPixels) : centres;
     // The head (W x W around a centre pixel) reaches pixels whose centres lie within W/2
     // minus the half pixel already granted to the centre region.
-    const int headRadius = std::max(0, static_cast<int>(std::ceil(halfWidthPixels - 1e-9)) - 1);
+    // (The centre region is half a pixel conservative, so the reach gets that half back.)
+    const int headRadius = std::max(0, static_cast<int>(std::ceil(halfWidthPixels - 1e-9)));
     const Mask headReach = dilateSquare(reachable, grid.cols, grid.rows, headRadius);
 
     double sweepablePixels = 0.0, coveredPixels = 0.0; // counts

@@ -12,6 +12,7 @@
 #include "solvers/TransitSearch.h"
 
 #include <algorithm>
+#include <cstdlib>
 
 namespace fc {
 
@@ -31,6 +32,8 @@ int proxyKicks(int tasks) { return std::clamp(25 * tasks, 300, 6000); }
 // enough for many perturbations, on large ones for the moves at the costliest steps.
 std::uint64_t polishWork(int tasks, int nodes, bool small) {
     const auto n = static_cast<std::uint64_t>(tasks);
+    if (small && std::getenv("FC_PW"))
+        return std::atof(std::getenv("FC_PW"));
     if (small)
         return std::clamp<std::uint64_t>(8 * n * n * static_cast<std::uint64_t>(nodes),
                                          200'000, 6'000'000);

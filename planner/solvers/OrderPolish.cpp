@@ -142,7 +142,11 @@ double OrderPolish::improve(std::vector<int>& order, std::uint64_t workBudget,
     descend(control);
     std::vector<int> best = evaluator_.baseOrder();
     double bestCost = evaluator_.baseCost();
-    while (count_ >= 4 && count_ <= kPerturbLimit && !exhausted()) {
+    // Perturbations stop when the budget is spent or many in a row found nothing.
+    const int patience = std::max(30, 5 * count_);
+    for (int failures = 0;
+         count_ >= 4 && count_ <= kPerturbLimit && failures < patience && !exhausted();
+         ++failures) {
         // Perturb: swap two short adjacent stretches, sometimes reversing one.
         std::vector<int> trial = best;
         const int a = random_.below(count_ - 2);
@@ -158,6 +162,7 @@ double OrderPolish::improve(std::vector<int>& order, std::uint64_t workBudget,
         if (evaluator_.baseCost() < bestCost - kImprovement) {
             best = evaluator_.baseOrder();
             bestCost = evaluator_.baseCost();
+            failures = -1;
         }
     }
     order = best;
