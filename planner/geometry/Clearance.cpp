@@ -84,6 +84,17 @@ ClearanceField::ClearanceField(const std::vector<Ring>& rings, double radius)
                 if (walls_.distanceToWalls(q) >= radius_ * 1.01) // strictly clear
                     cornerPoints_.push_back(q);
             }
+            // Points on the clearance arc around the corner, so that paths can hug it where
+            // the bisector point is blocked by another wall nearby (a bed near a wall).
+            const double angle0 = std::atan2(bis.y, bis.x);
+            for (int k = -3; k <= 3; ++k) {
+                if (k == 0)
+                    continue;
+                const double a = angle0 + k * M_PI / 6;
+                const Vec2 q = p + Vec2{std::cos(a), std::sin(a)} * (radius_ * 1.02);
+                if (walls_.distanceToWalls(q) >= radius_ * 1.01)
+                    cornerPoints_.push_back(q);
+            }
         }
     }
 }
@@ -128,7 +139,7 @@ bool ClearanceField::isClear(Vec2 p) const {
 }
 
 bool ClearanceField::segmentIsClear(Vec2 a, Vec2 b) const {
-    return walls_.segmentClearance(a, b) >= radius_ - acceptance_;
+    return walls_.segmentKeepsDistance(a, b, radius_ - acceptance_);
 }
 
 bool ClearanceField::polylineIsClear(const Polyline& line) const {
@@ -170,36 +181,40 @@ Polyline ClearanceField::searchWindow(Vec2 a, Vec2 b, const BoundingBox& window,
         if (c.x >= window.minX && c.x <= window.maxX && c.y >= window.minY && c.y <= window.maxY)
             pts.push_back(c);
     const int n = static_cast<int>(pts.size());
-    // A* with lazy edge checks: visibility is tested only when a node is expanded.
+    // Lazy A*: an entry (v reached from u) is pushed unchecked and its segment tested
+    // only when it is popped, so most of the n^2 visibility tests never run.
     std::vector<double> g(n, INFINITY);
     std::vector<int> from(n, -1);
     std::vector<char> closed(n, 0);
-    using Item = std::pair<double, int>;
-    std::priority_queue<Item, std::vector<Item>, std::greater<Item>> open;
+    struct Entry {
+        double f, g;
+        int v, parent;
+        bool operator>(const Entry& o) const { return f > o.f; }
+    };
+    std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> open;
     g[0] = 0;
-    open.push({distance(a, b), 0});
+    open.push({distance(a, b), 0, 0, -1});
     while (!open.empty()) {
-        const int u = open.top().second;
+        const Entry top = open.top();
         open.pop();
+        const int u = top.v;
         if (closed[u])
             continue;
+        if (top.parent >= 0 && !segmentIsClear(pts[top.parent], pts[u]))
+            continue; // blocked: u may still arrive through another parent
         closed[u] = 1;
+        g[u] = top.g;
+        from[u] = top.parent;
         if (u == 1)
             break;
         for (int v = 0; v < n; ++v) {
-            if (closed[v] || v == u)
+            if (closed[v])
                 continue;
             const double nd = g[u] + distance(pts[u], pts[v]);
-            if (nd >= g[v])
-                continue;
-            if (!segmentIsClear(pts[u], pts[v]))
-                continue;
-            g[v] = nd;
-            from[v] = u;
-            open.push({nd + distance(pts[v], b), v});
+            open.push({nd + distance(pts[v], b), nd, v, u});
         }
     }
-    if (from[1] < 0)
+    if (!closed[1])
         return {};
     Polyline path;
     for (int v = 1; v >= 0; v = from[v])

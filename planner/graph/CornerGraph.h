@@ -17,6 +17,14 @@ struct GraphNode {
     Vec2 position; // sweep frame
 };
 
+// A there-and-back piece of a coverage pattern that sweeps the W/2 margin at a stripe end
+// (geometry[begin] == geometry[end]); the path builder drops it where the rest of the path
+// already sweeps that margin.
+struct Excursion {
+    int begin = 0, end = 0;
+    bool towardsCeiling = false; // the wall is above the stripe end (sweep frame)
+};
+
 struct GraphEdge {
     int id = -1;
     int u = -1, v = -1;
@@ -25,6 +33,7 @@ struct GraphEdge {
     bool parallel = false; // contour edge along a stripe (LB-LT, RB-RT)
     double length = 0.0;   // collision-free travel length (coverage: the whole pattern)
     Polyline geometry;     // robot-centre polyline from u to v, sweep frame
+    std::vector<Excursion> excursions;
 
     int other(int node) const { return node == u ? v : u; }
 };

@@ -46,7 +46,8 @@ private:
     // A flat head end leaves a wedge under a slanted floor or ceiling. Where no connection
     // runs along the border on one side of a stripe end, drive half a column along the
     // border and back so the head reaches the wall there too.
-    void sealEnd(Polyline& path, const Cell& cell, const StripeRun& run, bool top, int side) {
+    void sealEnd(Polyline& path, const Cell& cell, const StripeRun& run, bool top, int side,
+                 bool evenIfFlat = false) {
         const double w = dec_.coverageWidth;
         const double xe = std::clamp(run.x + side * 0.5 * w, cell.x0, cell.x1);
         if (std::abs(xe - run.x) < 0.125 * w)
@@ -58,10 +59,12 @@ private:
         double deviation = 0;
         for (const Vec2& p : line)
             deviation = std::max(deviation, std::abs(p.y - y0));
-        if (deviation < 0.2 * w)
+        if (deviation < 0.2 * w && !evenIfFlat)
             return;
+        const int begin = static_cast<int>(path.size()) - 1;
         path.insert(path.end(), line.begin() + 1, line.end());
         path.insert(path.end(), line.rbegin() + 1, line.rend());
+        excursions_.push_back({begin, static_cast<int>(path.size()) - 1, top});
     }
 
     Polyline boustrophedon(const Cell& cell, const std::vector<StripeRun>& runs, bool fromBottom) {
@@ -94,18 +97,26 @@ private:
         return path;
     }
 
+    // A single stripe has no neighbour stripe whose connection sweeps the W/2 margin at
+    // its ends; where an end meets a wall, sweep that margin on both sides.
     Polyline transitionStripe(const Cell& cell, const StripeRun& run) {
-        Polyline path{{run.x, run.span.lo}};
-        sealEnd(path, cell, run, false, -1);
-        sealEnd(path, cell, run, false, +1);
-        if (run.span.hi != run.span.lo)
-            path.push_back({run.x, run.span.hi});
-        sealEnd(path, cell, run, true, -1);
-        sealEnd(path, cell, run, true, +1);
+        const double r = field_.radius();
+        const Vec2 bottom{run.x, run.span.lo}, top{run.x, run.span.hi};
+        const bool bottomAtWall = field_.walls().distanceToWalls(bottom) < r * 1.001;
+        const bool topAtWall = field_.walls().distanceToWalls(top) < r * 1.001;
+        Polyline path{bottom};
+        sealEnd(path, cell, run, false, -1, bottomAtWall);
+        sealEnd(path, cell, run, false, +1, bottomAtWall);
+        if (top != bottom)
+            path.push_back(top);
+        sealEnd(path, cell, run, true, -1, topAtWall);
+        sealEnd(path, cell, run, true, +1, topAtWall);
         return path;
     }
 
     void addEdge(int u, int v, EdgeKind kind, int cell, bool parallel, Polyline geometry) {
+        std::vector<Excursion> excursions;
+        excursions.swap(excursions_); // recorded while this edge's geometry was built
         if (geometry.empty())
             return; // no collision-free connection: the graph simply lacks this edge
         if (geometry.size() == 1)
@@ -114,6 +125,7 @@ private:
         e.u = u, e.v = v, e.kind = kind, e.cell = cell, e.parallel = parallel;
         e.length = polylineLength(geometry);
         e.geometry = std::move(geometry);
+        e.excursions = std::move(excursions);
         graph_.addEdge(std::move(e));
     }
 
@@ -252,6 +264,7 @@ private:
     ClearanceField field_;
     CornerGraph graph_;
     std::set<std::pair<int, int>> connected_; // inter-cell pairs already joined
+    std::vector<Excursion> excursions_;       // of the coverage pattern being built
 };
 
 } // namespace

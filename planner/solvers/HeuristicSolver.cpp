@@ -1,3 +1,4 @@
+#include <cstdlib>
 // Near-optimal solver for any size (SPEC sect. 4). The decision is the cell order: for a
 // given order the best corners follow exactly from OrderEvaluator's dynamic programme.
 // Orders are searched with fast proxy costs (TourSearch), then judged, and on small
@@ -12,7 +13,6 @@
 #include "solvers/TransitSearch.h"
 
 #include <algorithm>
-#include <cstdlib>
 
 namespace fc {
 
@@ -35,8 +35,8 @@ std::uint64_t polishWork(int tasks, int nodes, bool small) {
     if (small && std::getenv("FC_PW"))
         return std::atof(std::getenv("FC_PW"));
     if (small)
-        return std::clamp<std::uint64_t>(8 * n * n * static_cast<std::uint64_t>(nodes),
-                                         200'000, 6'000'000);
+        return std::min<std::uint64_t>(300'000 + 1'000 * n * static_cast<std::uint64_t>(nodes),
+                                       2'000'000);
     return std::max<std::uint64_t>(2'500 * n, 2'000'000);
 }
 

@@ -1,3 +1,4 @@
+#include <cstdlib>
 #include "solvers/OrderPolish.h"
 
 #include <algorithm>
@@ -16,7 +17,8 @@ constexpr int kLongestWindow = 16;  // larger instances: positions one move may 
 OrderPolish::OrderPolish(OrderEvaluator& evaluator, const ProxyDistances& distances,
                          int taskCount, std::uint64_t seed)
     : evaluator_(evaluator), distances_(distances), count_(taskCount),
-      everyPair_(taskCount <= kEveryPairLimit), random_(seed), indexOf_(taskCount, 0) {}
+      everyPair_(taskCount <= kEveryPairLimit), random_(seed), indexOf_(taskCount, 0),
+      dirty_(taskCount, 0) {}
 
 bool OrderPolish::tryWindow(int first, int last) {
     const std::vector<int>& base = evaluator_.baseOrder();
@@ -29,6 +31,10 @@ bool OrderPolish::tryWindow(int first, int last) {
 
     if (cost < kInfinity) {
         evaluator_.acceptCandidate();
+        for (int k = first; k <= last; ++k)
+            indexOf_[base[k]] = k;
+        for (int k = std::max(first - 1, 0); k <= std::min(last + 1, count_ - 1); ++k)
+            markDirty(base[k]);
         return true;
     }
     std::copy(base.begin() + first, base.begin() + last + 1, candidate_.begin() + first);
@@ -76,8 +82,6 @@ std::vector<int> OrderPolish::partnerGaps(int index) const {
 
 bool OrderPolish::improveAt(int i) {
     const std::vector<int>& base = evaluator_.baseOrder();
-    for (int k = 0; k < count_; ++k)
-        indexOf_[base[k]] = k;
     const std::vector<int> gaps = partnerGaps(i);
 
     // Or-opt: move base[i .. i+length) to another gap, either way round.
@@ -114,23 +118,33 @@ bool OrderPolish::improveAt(int i) {
     return false;
 }
 
-void OrderPolish::descend(const SolveControl& control) {
-    std::vector<std::pair<double, int>> steps(count_);
-    for (bool improved = true; improved && !exhausted();) {
-        improved = false;
-        // Costliest steps first: moves that remove an expensive transit (typically a jump
-        // back across covered cells) are the ones that pay, so a tight budget finds them.
-        for (int i = 0; i < count_; ++i)
-            steps[i] = {-evaluator_.baseStepCost(i), i};
-        std::sort(steps.begin(), steps.end());
-        for (int k = 0; k < count_ && !exhausted(); ++k) {
-            const int position = steps[k].second; // stale after a move, still a good guess
-            if (improveAt(position) || (position > 0 && !exhausted() && improveAt(position - 1)))
-                improved = true;
-            if (k % 32 == 0)
-                throwIfCancelled(control, "heuristic");
-        }
+void OrderPolish::markDirty(int task) {
+    if (!dirty_[task]) {
+        dirty_[task] = 1;
+        queue_.push_back(task);
     }
+}
+
+void OrderPolish::rebase(const std::vector<int>& order) {
+    candidate_ = order;
+    for (int k = 0; k < count_; ++k)
+        indexOf_[order[k]] = k;
+}
+
+void OrderPolish::descend(const SolveControl& control) {
+    // Tasks whose surroundings changed are re-examined until none yields a better order.
+    for (std::size_t next = 0; next < queue_.size() && !exhausted(); ++next) {
+        const int task = queue_[next];
+        dirty_[task] = 0;
+        const int position = indexOf_[task];
+        if (improveAt(position) || (position > 0 && !exhausted() && improveAt(position - 1)))
+            markDirty(task);
+        if (next % 32 == 0)
+            throwIfCancelled(control, "heuristic");
+    }
+    for (int task : queue_)
+        dirty_[task] = 0;
+    queue_.clear();
 }
 
 double OrderPolish::improve(std::vector<int>& order, std::uint64_t workBudget,
@@ -138,12 +152,21 @@ double OrderPolish::improve(std::vector<int>& order, std::uint64_t workBudget,
     workLimit_ = evaluator_.work() + workBudget;
     if (!(evaluator_.setBase(order) < kInfinity))
         return kInfinity;
-    candidate_ = order;
+    rebase(order);
+    // Costliest steps first: moves that remove an expensive transit (typically a jump back
+    // across covered cells) are the ones that pay, so a tight budget finds them early.
+    std::vector<std::pair<double, int>> steps(count_);
+    for (int k = 0; k < count_; ++k)
+        steps[k] = {-evaluator_.baseStepCost(k), order[k]};
+    std::sort(steps.begin(), steps.end());
+    for (const auto& step : steps)
+        markDirty(step.second);
     descend(control);
+
     std::vector<int> best = evaluator_.baseOrder();
     double bestCost = evaluator_.baseCost();
     // Perturbations stop when the budget is spent or many in a row found nothing.
-    const int patience = std::max(30, 5 * count_);
+    const int patience = getenv("FC_PAT") ? atoi(getenv("FC_PAT")) : std::max(30, 5 * count_);
     for (int failures = 0;
          count_ >= 4 && count_ <= kPerturbLimit && failures < patience && !exhausted();
          ++failures) {
@@ -157,7 +180,9 @@ double OrderPolish::improve(std::vector<int>& order, std::uint64_t workBudget,
             std::reverse(trial.begin() + a, trial.begin() + a + (c - b));
         if (!(evaluator_.setBase(trial) < kInfinity))
             continue;
-        candidate_ = trial;
+        rebase(trial);
+        for (int k = std::max(a - 1, 0); k <= std::min(c, count_ - 1); ++k)
+            markDirty(trial[k]);
         descend(control);
         if (evaluator_.baseCost() < bestCost - kImprovement) {
             best = evaluator_.baseOrder();

@@ -23,8 +23,11 @@ public:
                    const SolveControl& control);
 
 private:
-    // First-improvement moves until none improves or the budget is spent.
+    // First-improvement moves around the queued tasks until none improves or the budget is
+    // spent; an accepted move queues the tasks around it.
     void descend(const SolveControl& control);
+    void markDirty(int task);
+    void rebase(const std::vector<int>& order); // after the evaluator's base was replaced
     bool improveAt(int index);
     bool tryMoveSegment(int index, int length, int gap, bool reversed);
     bool tryWindow(int first, int last);
@@ -37,7 +40,9 @@ private:
     bool everyPair_; // small enough to try every move, not just those near neighbours
     SeededRandom random_;
     std::vector<int> candidate_; // equals the evaluator's base outside a move being tried
-    std::vector<int> indexOf_;
+    std::vector<int> indexOf_; // task -> position in the base order
+    std::vector<char> dirty_;
+    std::vector<int> queue_;
     std::uint64_t workLimit_ = 0;
 };
 

@@ -1,0 +1,112 @@
+#include "path/ExcursionPruning.h"
+
+#include <algorithm>
+#include <cmath>
+#include <unordered_map>
+
+namespace fc::detail {
+namespace {
+
+// Segments bucketed on a W-sized grid for local coverage queries.
+class SegmentGrid {
+public:
+    SegmentGrid(const Polyline& pts, double cell) : pts_(pts), cell_(cell) {
+        for (int i = 0; i + 1 < static_cast<int>(pts.size()); ++i) {
+            BoundingBox b;
+            b.add(pts[i]);
+            b.add(pts[i + 1]);
+            for (long gx = key(b.minX); gx <= key(b.maxX); ++gx)
+                for (long gy = key(b.minY); gy <= key(b.maxY); ++gy)
+                    buckets_[hash(gx, gy)].push_back(i);
+        }
+    }
+    // Segment indices near p (within one cell).
+    void near(Vec2 p, std::vector<int>& out) const {
+        out.clear();
+        for (long gx = key(p.x) - 1; gx <= key(p.x) + 1; ++gx)
+            for (long gy = key(p.y) - 1; gy <= key(p.y) + 1; ++gy) {
+                auto it = buckets_.find(hash(gx, gy));
+                if (it != buckets_.end())
+                    out.insert(out.end(), it->second.begin(), it->second.end());
+            }
+        std::sort(out.begin(), out.end());
+        out.erase(std::unique(out.begin(), out.end()), out.end());
+    }
+
+private:
+    long key(double v) const { return static_cast<long>(std::floor(v / cell_)); }
+    static long long hash(long gx, long gy) { return (static_cast<long long>(gx) << 32) ^ gy; }
+    const Polyline& pts_;
+    double cell_;
+    std::unordered_map<long long, std::vector<int>> buckets_;
+};
+
+// Is q inside the strip of half-width h around segment ab, between its ends extended by
+// `before` and `after`?
+bool inStrip(Vec2 q, Vec2 a, Vec2 b, double h, double before, double after) {
+    const Vec2 d = b - a;
+    const double len = norm(d);
+    if (len < 1e-12)
+        return false;
+    const Vec2 u = d * (1 / len);
+    const double t = dot(q - a, u), s = std::abs(cross(u, q - a));
+    return s <= h && t >= -before && t <= len + after;
+}
+
+} // namespace
+
+std::vector<char> prunableExcursions(const Polyline& pts,
+                                     const std::vector<PathExcursion>& excursions,
+                                     double width) {
+    std::vector<char> keep(pts.size(), 1);
+    std::vector<char> segmentActive(pts.size(), 1); // segment i = pts[i] -> pts[i + 1]
+    const SegmentGrid grid(pts, width);
+    const double h = 0.5 * width * (1 - 1e-6);
+    std::vector<int> nearby;
+    auto covered = [&](Vec2 q, int skipBegin, int skipEnd) {
+        grid.near(q, nearby);
+        for (int i : nearby) {
+            if (!segmentActive[i] || (i >= skipBegin && i < skipEnd))
+                continue;
+            if (inStrip(q, pts[i], pts[i + 1], h, 0, 0))
+                return true;
+            // Mitred join at the segment's end: inside both strips extended by W/2, and no
+            // further from the corner than a right-angle mitre reaches (sharper turns are
+            // bevelled, so their wide wedge is not swept).
+            const int j = i + 1;
+            if (j + 1 < static_cast<int>(pts.size()) && segmentActive[j] &&
+                dot(pts[j] - pts[i], pts[j + 1] - pts[j]) >= 0 && // at most a right angle
+                !(j >= skipBegin && j < skipEnd) && distance(q, pts[j]) <= h * std::sqrt(2.0) &&
+                inStrip(q, pts[i], pts[j], h, 0, h) && inStrip(q, pts[j], pts[j + 1], h, h, 0))
+                return true;
+        }
+        return false;
+    };
+    for (const PathExcursion& ex : excursions) {
+        // The margin this excursion sweeps: between its turning point and the wall side.
+        int tip = ex.begin;
+        for (int k = ex.begin; k <= ex.end; ++k)
+            if (distance(pts[k], pts[ex.begin]) > distance(pts[tip], pts[ex.begin]))
+                tip = k;
+        const Vec2 a = pts[ex.begin], b = pts[tip];
+        const double side = ex.towardsCeiling ? 1.0 : -1.0;
+        int total = 0, hit = 0;
+        for (int i = 0; i <= 8; ++i) {
+            const Vec2 along = a + (b - a) * (0.02 + 0.96 * i / 8.0);
+            for (int k = 1; k <= 4; ++k) {
+                const Vec2 q{along.x, along.y + side * 0.49 * width * k / 4.0};
+                ++total;
+                hit += covered(q, ex.begin, ex.end);
+            }
+        }
+        if (hit == total) {
+            for (int k = ex.begin; k < ex.end; ++k)
+                segmentActive[k] = 0;
+            for (int k = ex.begin + 1; k <= ex.end; ++k)
+                keep[k] = 0;
+        }
+    }
+    return keep;
+}
+
+} // namespace fc::detail
