@@ -98,42 +98,46 @@ std::vector<double> stripePositions(double x0, double x1, double w) {
     return xs;
 }
 
-// The x-pieces one raw cell becomes (SPEC sect. 2.3, our rule for narrow cells):
-// a cell gives up a W-wide transition strip at each critical side while a primary of
-// positive width remains; a cell with no more stripes than critical sides becomes
-// transition cells only (one per stripe; a one-stripe cell between two slices is one).
-std::vector<std::pair<double, double>> pieceRanges(double x0, double x1, bool left, bool right,
-                                                   double w, std::vector<CellKind>& kinds) {
-    const int k = int(left) + int(right);
-    const double width = x1 - x0;
-    const int stripes = std::max(1, static_cast<int>(std::ceil(width / w - 1e-9)));
-    kinds.clear();
-    if (k == 0) {
-        kinds = {CellKind::Primary};
-        return {{x0, x1}};
-    }
-    if (stripes >= k + 1) {
-        std::vector<std::pair<double, double>> out;
-        const double a = left ? x0 + w : x0, b = right ? x1 - w : x1;
+// The x-pieces one raw cell becomes (SPEC sect. 2.3, our rule for narrow cells). The
+// cell's stripes are placed once, evenly, the first and last W/2 inside its ends; at each
+// critical side the outermost stripe becomes a transition cell (a strip of width
+// W/2 + spacing/2 <= W, exactly W when the stripes are W apart) and the primary keeps the
+// stripes between. A cell with no more stripes than critical sides becomes transition
+// cells only: one per stripe.
+struct PieceSpec {
+    double x0, x1;
+    CellKind kind;
+    std::vector<double> stripes;
+};
+
+std::vector<PieceSpec> pieceSpecs(double x0, double x1, bool left, bool right, double w) {
+    const std::vector<double> stripes = stripePositions(x0, x1, w);
+    const size_t m = stripes.size();
+    const size_t k = size_t(left) + size_t(right);
+    if (k == 0)
+        return {{x0, x1, CellKind::Primary, stripes}};
+    if (m >= k + 1) {
+        std::vector<PieceSpec> out;
+        double a = x0, b = x1;
         if (left) {
-            out.push_back({x0, a});
-            kinds.push_back(CellKind::Transition);
+            a = 0.5 * (stripes[0] + stripes[1]);
+            out.push_back({x0, a, CellKind::Transition, {stripes[0]}});
         }
-        out.push_back({a, b});
-        kinds.push_back(CellKind::Primary);
-        if (right) {
-            out.push_back({b, x1});
-            kinds.push_back(CellKind::Transition);
-        }
+        if (right)
+            b = 0.5 * (stripes[m - 2] + stripes[m - 1]);
+        out.push_back({a, b, CellKind::Primary,
+                       std::vector<double>(stripes.begin() + (left ? 1 : 0),
+                                           stripes.end() - (right ? 1 : 0))});
+        if (right)
+            out.push_back({b, x1, CellKind::Transition, {stripes[m - 1]}});
         return out;
     }
-    if (stripes == 2 && k == 2) {
-        const double mid = 0.5 * (x0 + x1);
-        kinds = {CellKind::Transition, CellKind::Transition};
-        return {{x0, mid}, {mid, x1}};
+    if (m == 2) {
+        const double mid = 0.5 * (stripes[0] + stripes[1]);
+        return {{x0, mid, CellKind::Transition, {stripes[0]}},
+                {mid, x1, CellKind::Transition, {stripes[1]}}};
     }
-    kinds = {CellKind::Transition};
-    return {{x0, x1}};
+    return {{x0, x1, CellKind::Transition, stripes}};
 }
 
 // The pieces of a raw cell on either side of x whose slice overlaps [y0, y1].
@@ -153,7 +157,7 @@ std::vector<const Piece*> piecesAt(const std::vector<Piece>& pieces,
 }
 
 Cell makeCell(int id, CellKind kind, int room, double x0, double x1, Polyline floor,
-              Polyline ceiling, double w) {
+              Polyline ceiling, std::vector<double> stripes) {
     Cell c;
     c.id = id;
     c.kind = kind;
@@ -161,8 +165,7 @@ Cell makeCell(int id, CellKind kind, int room, double x0, double x1, Polyline fl
     c.x0 = x0, c.x1 = x1;
     c.floor = std::move(floor);
     c.ceiling = std::move(ceiling);
-    c.stripes = kind == CellKind::Transition ? std::vector<double>{0.5 * (x0 + x1)}
-                                             : stripePositions(x0, x1, w);
+    c.stripes = std::move(stripes);
     return c;
 }
 
@@ -252,7 +255,6 @@ Decomposition decompose(const Plan& plan, const DecompositionOptions& options) {
     // transition strips and create the final cells.
     const ClearanceField field(out.freeSpace, 0.5 * w);
     std::vector<std::vector<Piece>> pieces(raw.size());
-    std::vector<CellKind> kinds;
     for (size_t i = 0; i < raw.size(); ++i) {
         const RawCell& r = raw[i];
         Cell probe;
@@ -269,24 +271,21 @@ Decomposition decompose(const Plan& plan, const DecompositionOptions& options) {
                     const int id = static_cast<int>(out.cells.size());
                     add(makeCell(id, CellKind::Primary, r.room, part.x0, part.x1,
                                  k == 0 ? floor : part.pinches[k - 1],
-                                 k + 1 == part.layers ? ceiling : part.pinches[k], w),
+                                 k + 1 == part.layers ? ceiling : part.pinches[k],
+                                 stripePositions(part.x0, part.x1, w)),
                         k, part.layers);
                 }
                 continue;
             }
             const bool left = part.x0 == r.x0 && leftCritical[i];
             const bool right = part.x1 == r.x1 && rightCritical[i];
-            std::vector<std::pair<double, double>> ranges{{part.x0, part.x1}};
-            kinds = {CellKind::Primary};
-            if (options.transitionCells && part.layers == 1)
-                ranges = pieceRanges(part.x0, part.x1, left, right, w, kinds);
-            for (size_t p = 0; p < ranges.size(); ++p) {
-                const auto [a, b] = ranges[p];
-                add(makeCell(static_cast<int>(out.cells.size()), kinds[p], r.room, a, b,
-                             detail::clipFunction(r.floor, a, b),
-                             detail::clipFunction(r.ceiling, a, b), w),
+            const bool cut = options.transitionCells && part.layers == 1;
+            for (PieceSpec& spec : pieceSpecs(part.x0, part.x1, cut && left, cut && right, w))
+                add(makeCell(static_cast<int>(out.cells.size()), spec.kind, r.room, spec.x0,
+                             spec.x1, detail::clipFunction(r.floor, spec.x0, spec.x1),
+                             detail::clipFunction(r.ceiling, spec.x0, spec.x1),
+                             std::move(spec.stripes)),
                     0, 1);
-            }
         }
         // Neighbouring pieces of one raw cell touch across the sweep where their slices
         // overlap.
