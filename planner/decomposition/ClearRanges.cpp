@@ -67,6 +67,23 @@ std::vector<Polyline> pinchLines(const Cell& cell, double x0, double x1, int lay
 
 } // namespace
 
+double narrowStripeX(const Cell& cell, const ClearanceField& field) {
+    const double r = field.radius();
+    const double mid = 0.5 * (cell.x0 + cell.x1);
+    const double a = std::min(cell.x1 - r, mid), b = std::max(cell.x0 + r, mid);
+    double bestX = mid, best = -1;
+    for (int i = 0; i <= 16; ++i) {
+        const double x = a + (b - a) * i / 16;
+        double total = 0;
+        for (const Interval& span : spansAt(cell, x, field))
+            total += span.length() + 1e-9; // a zero-length span still counts
+        if (total > best + 1e-9 || (std::abs(total - best) <= 1e-9 &&
+                                    std::abs(x - mid) < std::abs(bestX - mid)))
+            best = total, bestX = x;
+    }
+    return bestX;
+}
+
 std::vector<ClearRange> clearRanges(const Cell& cell, const ClearanceField& field) {
     const double r = field.radius();
     const double step = 0.25 * r;
@@ -75,24 +92,15 @@ std::vector<ClearRange> clearRanges(const Cell& cell, const ClearanceField& fiel
     // says nothing about this cell.
     double from = cell.x0 + r, to = cell.x1 - r;
     if (to < from) {
-        // A cell narrower than W holds one stripe, wherever it fits: use the slice with
-        // the most clear spans (ties: nearest the middle), e.g. both sides of a bed.
-        const double mid = 0.5 * (cell.x0 + cell.x1);
-        double bestX = mid;
-        int best = -1;
-        for (int i = 0; i < 9; ++i) {
-            const double x = cell.x0 + (i + 0.5) * (cell.x1 - cell.x0) / 9;
-            const int c = countAt(cell, x, field);
-            if (c > best || (c == best && std::abs(x - mid) < std::abs(bestX - mid)))
-                best = c, bestX = x;
-        }
-        ClearRange whole{cell.x0, cell.x1, best, {}};
-        if (best >= 2) {
-            const std::vector<Interval> spans = spansAt(cell, bestX, field);
-            for (int k = 0; k + 1 < best; ++k) {
-                const double y = 0.5 * (spans[k].hi + spans[k + 1].lo);
-                whole.pinches.push_back({{cell.x0, y}, {cell.x1, y}});
-            }
+        // A cell narrower than W holds one stripe anywhere its head still spans the whole
+        // cell, x in [x1 - W/2, x0 + W/2] (possibly outside the cell, e.g. W/2 from a bed
+        // whose side is the cell's end): take the slice with the longest clear spans.
+        const double x = narrowStripeX(cell, field);
+        const std::vector<Interval> spans = spansAt(cell, x, field);
+        ClearRange whole{cell.x0, cell.x1, static_cast<int>(spans.size()), {}};
+        for (size_t k = 0; k + 1 < spans.size(); ++k) {
+            const double y = 0.5 * (spans[k].hi + spans[k + 1].lo);
+            whole.pinches.push_back({{cell.x0, y}, {cell.x1, y}});
         }
         return {whole};
     }

@@ -21,6 +21,9 @@ struct ClearRange {
 std::vector<Interval> spansAt(const Cell& cell, double x, const ClearanceField& field,
                               double margin = 0.0);
 
+// Where the single stripe of a cell narrower than W goes (see ClearRanges.cpp).
+double narrowStripeX(const Cell& cell, const ClearanceField& field);
+
 // Splits [cell.x0, cell.x1] where the number of clear spans changes. Margins next to the
 // cell's own ends where nothing is clear belong to the neighbouring range.
 std::vector<ClearRange> clearRanges(const Cell& cell, const ClearanceField& field);

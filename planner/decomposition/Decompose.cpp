@@ -255,8 +255,32 @@ Decomposition decompose(const Plan& plan, const DecompositionOptions& options) {
     // transition strips and create the final cells.
     const ClearanceField field(out.freeSpace, 0.5 * w);
     std::vector<std::vector<Piece>> pieces(raw.size());
+    // Where a cell meets another room along the sweep (a doorway), the slice connectivity
+    // of the whole free space changes at the doorway's ends: split there, as a
+    // decomposition of the whole floor would, so that corners sit next to the door.
+    std::vector<std::vector<double>> splits(raw.size());
+    for (const RawAdjacency& a : adj) {
+        if (a.kind != Adjacency::Kind::AlongSweep)
+            continue;
+        for (int c : {a.first, a.second})
+            for (double x : {a.x0, a.x1})
+                if (x > raw[c].x0 + 1e-9 * extent && x < raw[c].x1 - 1e-9 * extent)
+                    splits[c].push_back(x);
+    }
     for (size_t i = 0; i < raw.size(); ++i) {
-        const RawCell& r = raw[i];
+        const RawCell& whole = raw[i];
+        std::vector<double> cuts = splits[i];
+        cuts.push_back(whole.x0);
+        cuts.push_back(whole.x1);
+        std::sort(cuts.begin(), cuts.end());
+        cuts.erase(std::unique(cuts.begin(), cuts.end()), cuts.end());
+        for (size_t seg = 0; seg + 1 < cuts.size(); ++seg) {
+        RawCell r = whole;
+        r.x0 = cuts[seg], r.x1 = cuts[seg + 1];
+        r.floor = detail::clipFunction(whole.floor, r.x0, r.x1);
+        r.ceiling = detail::clipFunction(whole.ceiling, r.x0, r.x1);
+        const bool leftSlice = seg > 0 || leftCritical[i];
+        const bool rightSlice = seg + 2 < cuts.size() || rightCritical[i];
         Cell probe;
         probe.x0 = r.x0, probe.x1 = r.x1, probe.floor = r.floor, probe.ceiling = r.ceiling;
         for (const detail::ClearRange& part : detail::clearRanges(probe, field)) {
@@ -277,8 +301,8 @@ Decomposition decompose(const Plan& plan, const DecompositionOptions& options) {
                 }
                 continue;
             }
-            const bool left = part.x0 == r.x0 && leftCritical[i];
-            const bool right = part.x1 == r.x1 && rightCritical[i];
+            const bool left = part.x0 == r.x0 && leftSlice;
+            const bool right = part.x1 == r.x1 && rightSlice;
             const bool cut = options.transitionCells && part.layers == 1;
             for (PieceSpec& spec : pieceSpecs(part.x0, part.x1, cut && left, cut && right, w))
                 add(makeCell(static_cast<int>(out.cells.size()), spec.kind, r.room, spec.x0,
@@ -286,6 +310,7 @@ Decomposition decompose(const Plan& plan, const DecompositionOptions& options) {
                              detail::clipFunction(r.ceiling, spec.x0, spec.x1),
                              std::move(spec.stripes)),
                     0, 1);
+        }
         }
         // Neighbouring pieces of one raw cell touch across the sweep where their slices
         // overlap.

@@ -1,5 +1,7 @@
 #include "decomposition/StripePlanner.h"
 
+#include "decomposition/ClearRanges.h"
+
 #include <algorithm>
 #include <cmath>
 #include <functional>
@@ -145,6 +147,10 @@ void fitStripes(Cell& cell, const ClearanceField& field) {
     if (cell.stripes.empty())
         return;
     const double w = 2 * field.radius();
+    if (cell.stripes.size() == 1 && cell.width() < w) {
+        cell.stripes[0] = narrowStripeX(cell, field);
+        return;
+    }
     if (cell.stripes.size() == 1) { // one stripe: the nearest clear x to the planned one
         const double x = cell.stripes[0];
         if (!spanAt(cell, x, field).empty())

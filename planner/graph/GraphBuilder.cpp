@@ -78,14 +78,17 @@ private:
                 path.push_back(a);
             // The stripe's start end is joined on its left (from the previous stripe), its
             // finish end on its right (to the next one); seal the other sides.
+            // The outer half-columns of the first and last stripes are sealed even under a
+            // flat border: no turn of this pattern sweeps them (the path builder drops the
+            // seal where the arriving or leaving transit already does).
             if (i == 0)
-                sealEnd(path, cell, runs[i], !up, -1);
+                sealEnd(path, cell, runs[i], !up, -1, true);
             sealEnd(path, cell, runs[i], !up, +1);
             if (b != a)
                 path.push_back(b);
             sealEnd(path, cell, runs[i], up, -1);
             if (i == last)
-                sealEnd(path, cell, runs[i], up, +1);
+                sealEnd(path, cell, runs[i], up, +1, true);
             if (i + 1 < runs.size()) {
                 const Polyline step = border(cell, runs[i], runs[i + 1], up);
                 if (step.empty())
@@ -98,19 +101,16 @@ private:
     }
 
     // A single stripe has no neighbour stripe whose connection sweeps the W/2 margin at
-    // its ends; where an end meets a wall, sweep that margin on both sides.
+    // its ends: seal both sides of both ends (pruned later where the path covers them).
     Polyline transitionStripe(const Cell& cell, const StripeRun& run) {
-        const double r = field_.radius();
         const Vec2 bottom{run.x, run.span.lo}, top{run.x, run.span.hi};
-        const bool bottomAtWall = field_.walls().distanceToWalls(bottom) < r * 1.001;
-        const bool topAtWall = field_.walls().distanceToWalls(top) < r * 1.001;
         Polyline path{bottom};
-        sealEnd(path, cell, run, false, -1, bottomAtWall);
-        sealEnd(path, cell, run, false, +1, bottomAtWall);
+        sealEnd(path, cell, run, false, -1, true);
+        sealEnd(path, cell, run, false, +1, true);
         if (top != bottom)
             path.push_back(top);
-        sealEnd(path, cell, run, true, -1, topAtWall);
-        sealEnd(path, cell, run, true, +1, topAtWall);
+        sealEnd(path, cell, run, true, -1, true);
+        sealEnd(path, cell, run, true, +1, true);
         return path;
     }
 
