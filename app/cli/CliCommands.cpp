@@ -103,6 +103,8 @@ int commandPlan(const Arguments& args) {
         result = planCoverage(request);
     } catch (const InputError& e) {
         throw InputError(path + ": " + e.what());
+    } catch (const SolverError& e) {
+        throw InputError(path + ": " + e.what());
     }
     for (const std::string& w : result.warnings)
         std::cerr << "floorcover-cli: warning: " << path << ": " << w << "\n";

@@ -33,8 +33,15 @@ expect_bad_input() { # name, file, extra args: exit 2, one line naming the file
   fi
 }
 
-metrics_ok() { # the stdout JSON line has every SPEC key and coverage >= 0.99
-  python3 - "$work/out" <<'PY'
+cli() { # runs the CLI, keeping its stdout for metrics_ok
+  "$cli" "$@" >"$work/last"
+  local rc=$?
+  cat "$work/last"
+  return $rc
+}
+
+metrics_ok() { # the last CLI JSON line has every SPEC key and coverage >= 0.99
+  python3 - "$work/last" <<'PY'
 import json, sys
 line = open(sys.argv[1]).read().strip().splitlines()[-1]
 m = json.loads(line)
@@ -46,12 +53,12 @@ PY
 
 for plan in simple simple-diamond room-obstacle room-notches office ward; do
   for solver in heuristic greedy; do
-    check "plan $plan $solver" "$cli" plan "$plans/$plan.geojson" --solver "$solver" --out "$work/$plan-$solver.geojson"
+    check "plan $plan $solver" cli plan "$plans/$plan.geojson" --solver "$solver" --out "$work/$plan-$solver.geojson"
     check "metrics $plan $solver" metrics_ok
   done
 done
 for plan in simple simple-diamond room-obstacle room-notches; do
-  check "plan $plan exact" "$cli" plan "$plans/$plan.geojson" --solver exact
+  check "plan $plan exact" cli plan "$plans/$plan.geojson" --solver exact
   check "metrics $plan exact" metrics_ok
 done
 
@@ -67,10 +74,10 @@ if command -v ogrinfo >/dev/null; then
 fi
 
 # Options: rooms, start/end, angle, seed determinism.
-check "rooms subset" "$cli" plan "$plans/office.geojson" --rooms S01,Corridor,N03 --start 1,1 --end 29,19
+check "rooms subset" cli plan "$plans/office.geojson" --rooms S01,Corridor,N03 --start 1,1 --end 29,19
 check "metrics rooms subset" metrics_ok
 check "auto angle" "$cli" plan "$plans/room-notches.geojson" --angle auto
-check "slanted sweep" "$cli" plan "$plans/simple.geojson" --angle 30
+check "slanted sweep" cli plan "$plans/simple.geojson" --angle 30
 check "metrics slanted" metrics_ok
 a=$("$cli" plan "$plans/office.geojson" --seed 7 --out "$work/a.csv" | python3 -c "import json,sys; d=json.load(sys.stdin); print(d['graph_cost'])")
 b=$("$cli" plan "$plans/office.geojson" --seed 7 --out "$work/b.csv" | python3 -c "import json,sys; d=json.load(sys.stdin); print(d['graph_cost'])")
@@ -85,8 +92,8 @@ assert len(g['nodes']) == 20 and all(k in g for k in ('nodes','cells','edges'))
 assert {e['kind'] for e in g['edges']} == {'coverage','contour','inter'}"
 
 # Compare.
-check "compare" "$cli" compare "$plans/simple.geojson"
-check "compare lists solvers" grep -q heuristic "$work/out"
+check "compare" cli compare "$plans/simple.geojson"
+check "compare lists solvers" grep -q heuristic "$work/last"
 
 # Bad input: exit code 2 and one line naming the file.
 for f in "$data"/bad-*; do
