@@ -56,10 +56,17 @@ bool capsuleSpan(Vec2 a, Vec2 b, double x, double r, double& lo, double& hi) {
 
 ClearanceField::ClearanceField(const std::vector<Ring>& rings, double radius)
     : walls_(rings), radius_(radius), tolerance_(1e-7 * std::max(1.0, radius)),
-      acceptance_(3e-3 * radius) {
+      acceptance_(3e-3 * radius), rings_(rings) {
     for (const Ring& ring : rings)
         for (const Vec2& p : ring)
             extent_.add(p);
+}
+
+const std::vector<Vec2>& ClearanceField::cornerPoints() const {
+    if (cornersBuilt_)
+        return cornerPoints_;
+    cornersBuilt_ = true;
+    const std::vector<Ring>& rings = rings_;
     // Reflex corners of the free space: the interior angle seen from free space exceeds
     // 180 degrees. Orientation-free test: probe a point just off the corner along the
     // outward bisector and keep it if it is clear.
@@ -81,7 +88,7 @@ ClearanceField::ClearanceField(const std::vector<Ring>& rings, double radius)
             const double offset = radius_ * 1.02 / std::max(sinHalf, 0.2);
             for (int side = -1; side <= 1; side += 2) {
                 const Vec2 q = p + bis * (side * offset);
-                if (walls_.distanceToWalls(q) >= radius_ * 1.01) // strictly clear
+                if (walls_.pointKeepsDistance(q, radius_ * 1.01)) // strictly clear
                     cornerPoints_.push_back(q);
             }
             // Points on the clearance arc around the corner, so that paths can hug it where
@@ -92,11 +99,12 @@ ClearanceField::ClearanceField(const std::vector<Ring>& rings, double radius)
                     continue;
                 const double a = angle0 + k * M_PI / 6;
                 const Vec2 q = p + Vec2{std::cos(a), std::sin(a)} * (radius_ * 1.02);
-                if (walls_.distanceToWalls(q) >= radius_ * 1.01)
+                if (walls_.pointKeepsDistance(q, radius_ * 1.01))
                     cornerPoints_.push_back(q);
             }
         }
     }
+    return cornerPoints_;
 }
 
 std::vector<Interval> ClearanceField::clearPieces(double x, double yLow, double yHigh,
@@ -135,7 +143,7 @@ std::vector<Interval> ClearanceField::clearPieces(double x, double yLow, double 
 }
 
 bool ClearanceField::isClear(Vec2 p) const {
-    return walls_.distanceToWalls(p) >= radius_ - acceptance_;
+    return walls_.pointKeepsDistance(p, radius_ - acceptance_);
 }
 
 bool ClearanceField::segmentIsClear(Vec2 a, Vec2 b) const {
@@ -149,10 +157,11 @@ bool ClearanceField::polylineIsClear(const Polyline& line) const {
     return line.size() != 1 || isClear(line[0]);
 }
 
-Polyline ClearanceField::findPath(Vec2 a, Vec2 b, const std::vector<Vec2>& hints) const {
+Polyline ClearanceField::findPath(Vec2 a, Vec2 b, const std::vector<Vec2>& hints,
+                                  double maxMargin) const {
     if (segmentIsClear(a, b))
         return {a, b};
-    double margin = std::max(4 * radius_, 0.5 * distance(a, b));
+    double margin = std::min(std::max(4 * radius_, 0.5 * distance(a, b)), maxMargin);
     for (int round = 0; round < 8; ++round) {
         BoundingBox window;
         window.add(a);
@@ -164,9 +173,9 @@ Polyline ClearanceField::findPath(Vec2 a, Vec2 b, const std::vector<Vec2>& hints
             return path;
         const bool coversAll = window.minX <= extent_.minX && window.minY <= extent_.minY &&
                                window.maxX >= extent_.maxX && window.maxY >= extent_.maxY;
-        if (coversAll)
+        if (coversAll || margin >= maxMargin)
             break;
-        margin *= 3;
+        margin = std::min(3 * margin, maxMargin);
     }
     return {};
 }
@@ -177,7 +186,7 @@ Polyline ClearanceField::searchWindow(Vec2 a, Vec2 b, const BoundingBox& window,
     for (const Vec2& h : hints)
         if (isClear(h))
             pts.push_back(h);
-    for (const Vec2& c : cornerPoints_)
+    for (const Vec2& c : cornerPoints())
         if (c.x >= window.minX && c.x <= window.maxX && c.y >= window.minY && c.y <= window.maxY)
             pts.push_back(c);
     const int n = static_cast<int>(pts.size());

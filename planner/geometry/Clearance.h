@@ -5,11 +5,13 @@
 
 #include "geometry/SegmentIndex.h"
 
+#include <cmath>
 #include <utility>
 #include <vector>
 
 namespace fc {
 
+// Not thread-safe: corner waypoints are built lazily on the first path search.
 class ClearanceField {
 public:
     // rings: the free space (boundary and holes) in the frame used for queries.
@@ -35,7 +37,9 @@ public:
     // corners, searched in a window around a and b that grows when needed. Empty when a
     // and b are not connected within the largest window.
     // hints: extra clear waypoints worth trying (e.g. points inside a tight doorway).
-    Polyline findPath(Vec2 a, Vec2 b, const std::vector<Vec2>& hints = {}) const;
+    // maxMargin bounds how far beyond the box of a and b the search may look.
+    Polyline findPath(Vec2 a, Vec2 b, const std::vector<Vec2>& hints = {},
+                      double maxMargin = INFINITY) const;
 
 private:
     Polyline searchWindow(Vec2 a, Vec2 b, const BoundingBox& window,
@@ -45,7 +49,10 @@ private:
     double radius_;
     double tolerance_;
     double acceptance_;
-    std::vector<Vec2> cornerPoints_; // clear points hugging reflex corners of the free space
+    const std::vector<Vec2>& cornerPoints() const; // built on first use
+    std::vector<Ring> rings_;
+    mutable bool cornersBuilt_ = false;
+    mutable std::vector<Vec2> cornerPoints_; // clear points hugging wall corners
     BoundingBox extent_;
 };
 

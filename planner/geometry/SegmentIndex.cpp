@@ -82,6 +82,16 @@ double SegmentIndex::segmentClearance(Vec2 a, Vec2 b) const {
     return best;
 }
 
+bool SegmentIndex::pointKeepsDistance(Vec2 p, double d) const {
+    const BBox q(BPoint(p.x - d, p.y - d), BPoint(p.x + d, p.y + d));
+    for (auto it = tree_->rtree.qbegin(bgi::intersects(q)); it != tree_->rtree.qend(); ++it) {
+        const Segment& s = segments_[it->second];
+        if (pointSegmentDistance(p, s.a, s.b) < d)
+            return false;
+    }
+    return true;
+}
+
 bool SegmentIndex::segmentKeepsDistance(Vec2 a, Vec2 b, double d) const {
     const BBox q(BPoint(std::min(a.x, b.x) - d, std::min(a.y, b.y) - d),
                  BPoint(std::max(a.x, b.x) + d, std::max(a.y, b.y) + d));

@@ -25,6 +25,8 @@ public:
     double distanceToWalls(Vec2 p) const;
     // Smallest distance from the segment ab to any wall.
     double segmentClearance(Vec2 a, Vec2 b) const;
+    // True when every wall is at least d away from p (one box query, early exit).
+    bool pointKeepsDistance(Vec2 p, double d) const;
     // True when every wall is at least d away from the segment ab (fast: one box query,
     // stops at the first wall that is closer).
     bool segmentKeepsDistance(Vec2 a, Vec2 b, double d) const;

@@ -40,7 +40,7 @@ private:
         const Vec2 b{to.x, top ? to.span.hi : to.span.lo};
         if (line.size() >= 2 && field_.polylineIsClear(line))
             return line;
-        return field_.findPath(a, b);
+        return field_.findPath(a, b, {}, 8 * dec_.coverageWidth + distance(a, b));
     }
 
     // A flat head end leaves a wedge under a slanted floor or ceiling. Where no connection
@@ -232,6 +232,31 @@ private:
         return hints;
     }
 
+    // Through the best single waypoint on the shared border when that is clear (cheap,
+    // and what a robot would drive); otherwise the general path search.
+    Polyline connect(Vec2 p, Vec2 q, const std::vector<Vec2>& hints) const {
+        if (field_.segmentIsClear(p, q))
+            return {p, q};
+        std::vector<std::pair<double, Vec2>> byLength;
+        for (const Vec2& h : hints)
+            byLength.push_back({distance(p, h) + distance(h, q), h});
+        std::sort(byLength.begin(), byLength.end(),
+                  [](const auto& a, const auto& b) { return a.first < b.first; });
+        for (size_t i = 0; i < byLength.size() && i < 4; ++i) {
+            const Vec2 h = byLength[i].second;
+            // Straight to the waypoint, or first along the stripe direction (a long cell
+            // reached through an opening in its side).
+            for (const Polyline& route :
+                 {Polyline{p, h, q}, Polyline{p, {p.x, h.y}, h, q}, Polyline{p, h, {q.x, h.y}, q},
+                  Polyline{p, {p.x, h.y}, h, {q.x, h.y}, q}})
+                if (field_.polylineIsClear(route))
+                    return route;
+        }
+        // An inter-cell connection that needs a long detour is not one: the graph reaches
+        // those corners through other cells.
+        return field_.findPath(p, q, hints, 8 * dec_.coverageWidth + distance(p, q));
+    }
+
     void addAdjacency(const Adjacency& a) {
         std::vector<int> from, to;
         if (a.kind == Adjacency::Kind::AcrossSweep) {
@@ -255,7 +280,7 @@ private:
                     hints = borderHints(a);
                     hintsMade = true;
                 }
-                addEdge(u, v, EdgeKind::Inter, -1, false, field_.findPath(p, q, hints));
+                addEdge(u, v, EdgeKind::Inter, -1, false, connect(p, q, hints));
             }
         }
     }

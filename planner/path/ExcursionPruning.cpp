@@ -20,11 +20,11 @@ public:
                     buckets_[hash(gx, gy)].push_back(i);
         }
     }
-    // Segment indices near p (within one cell).
-    void near(Vec2 p, std::vector<int>& out) const {
+    // Segment indices whose grid cells meet the box grown by one cell.
+    void near(const BoundingBox& box, std::vector<int>& out) const {
         out.clear();
-        for (long gx = key(p.x) - 1; gx <= key(p.x) + 1; ++gx)
-            for (long gy = key(p.y) - 1; gy <= key(p.y) + 1; ++gy) {
+        for (long gx = key(box.minX) - 1; gx <= key(box.maxX) + 1; ++gx)
+            for (long gy = key(box.minY) - 1; gy <= key(box.maxY) + 1; ++gy) {
                 auto it = buckets_.find(hash(gx, gy));
                 if (it != buckets_.end())
                     out.insert(out.end(), it->second.begin(), it->second.end());
@@ -45,7 +45,7 @@ private:
 // `before` and `after`?
 bool inStrip(Vec2 q, Vec2 a, Vec2 b, double h, double before, double after) {
     const Vec2 d = b - a;
-    const double len = norm(d);
+    const double len = std::sqrt(dot(d, d));
     if (len < 1e-12)
         return false;
     const Vec2 u = d * (1 / len);
@@ -63,8 +63,7 @@ std::vector<char> prunableExcursions(const Polyline& pts,
     const SegmentGrid grid(pts, width);
     const double h = 0.5 * width * (1 - 1e-6);
     std::vector<int> nearby;
-    auto covered = [&](Vec2 q, int skipBegin, int skipEnd) {
-        grid.near(q, nearby);
+    auto covered = [&](Vec2 q, int skipBegin, int skipEnd) { // nearby: filled per excursion
         for (int i : nearby) {
             if (!segmentActive[i] || (i >= skipBegin && i < skipEnd))
                 continue;
@@ -90,14 +89,24 @@ std::vector<char> prunableExcursions(const Polyline& pts,
                 tip = k;
         const Vec2 a = pts[ex.begin], b = pts[tip];
         const double side = ex.towardsCeiling ? 1.0 : -1.0;
+        BoundingBox region;
+        region.add(a);
+        region.add(b);
+        region.add(a + Vec2{0, side * 0.5 * width});
+        region.add(b + Vec2{0, side * 0.5 * width});
+        grid.near(region, nearby);
         int total = 0, hit = 0;
         for (int i = 0; i <= 8; ++i) {
             const Vec2 along = a + (b - a) * (0.02 + 0.96 * i / 8.0);
             for (int k = 1; k <= 4; ++k) {
                 const Vec2 q{along.x, along.y + side * 0.49 * width * k / 4.0};
                 ++total;
-                hit += covered(q, ex.begin, ex.end);
+                if (!covered(q, ex.begin, ex.end))
+                    break;
+                ++hit;
             }
+            if (hit != total)
+                break;
         }
         if (hit == total) {
             for (int k = ex.begin; k < ex.end; ++k)

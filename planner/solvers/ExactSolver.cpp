@@ -113,7 +113,7 @@ Solution solveExact(const CornerGraph& graph, const Query& query, const ExactOpt
                           "; use `--solver heuristic` for this query");
 
     // Upper bound: any valid walk; the search never keeps states that cannot beat it.
-    Solution incumbent = solveHeuristic(graph, query, control);
+    Solution incumbent = solveGreedy(graph, query);
     const double upper = incumbent.graphCost * (1.0 + 1e-12) + 1e-9;
 
     const TransitGraph transit(problem);

@@ -1,4 +1,3 @@
-#include <cstdlib>
 // Near-optimal solver for any size (SPEC sect. 4). The decision is the cell order: for a
 // given order the best corners follow exactly from OrderEvaluator's dynamic programme.
 // Orders are searched with fast proxy costs (TourSearch), then judged, and on small
@@ -32,8 +31,6 @@ int proxyKicks(int tasks) { return std::clamp(25 * tasks, 300, 6000); }
 // enough for many perturbations, on large ones for the moves at the costliest steps.
 std::uint64_t polishWork(int tasks, int nodes, bool small) {
     const auto n = static_cast<std::uint64_t>(tasks);
-    if (small && std::getenv("FC_PW"))
-        return std::atof(std::getenv("FC_PW"));
     if (small)
         return std::min<std::uint64_t>(300'000 + 1'000 * n * static_cast<std::uint64_t>(nodes),
                                        2'000'000);

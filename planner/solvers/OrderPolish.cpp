@@ -1,4 +1,3 @@
-#include <cstdlib>
 #include "solvers/OrderPolish.h"
 
 #include <algorithm>
@@ -8,21 +7,22 @@ namespace fc::solver_detail {
 namespace {
 
 constexpr double kImprovement = 1e-7;
-constexpr int kEveryPairLimit = 16; // up to here every move is tried, not just near ones
+// Moves bring a cell next to one of its few nearest: a narrow neighbourhood leaves more of
+// the budget for perturbations, which pays better than wider moves.
+constexpr std::size_t kPartners = 5;
 constexpr int kPerturbLimit = 60;   // up to here perturbations follow the descent
-constexpr int kLongestWindow = 16;  // larger instances: positions one move may reorder
+constexpr int kLongestWindow = 16;  // positions one move may reorder
 
 } // namespace
 
 OrderPolish::OrderPolish(OrderEvaluator& evaluator, const ProxyDistances& distances,
                          int taskCount, std::uint64_t seed)
-    : evaluator_(evaluator), distances_(distances), count_(taskCount),
-      everyPair_(taskCount <= kEveryPairLimit), random_(seed), indexOf_(taskCount, 0),
-      dirty_(taskCount, 0) {}
+    : evaluator_(evaluator), distances_(distances), count_(taskCount), random_(seed),
+      indexOf_(taskCount, 0), dirty_(taskCount, 0) {}
 
 bool OrderPolish::tryWindow(int first, int last) {
     const std::vector<int>& base = evaluator_.baseOrder();
-    if (!everyPair_ && last - first + 1 > kLongestWindow) {
+    if (last - first + 1 > kLongestWindow) {
         std::copy(base.begin() + first, base.begin() + last + 1, candidate_.begin() + first);
         return false;
     }
@@ -60,12 +60,9 @@ bool OrderPolish::tryMoveSegment(int index, int length, int gap, bool reversed) 
 
 std::vector<int> OrderPolish::partnerGaps(int index) const {
     std::vector<int> gaps;
-    if (everyPair_) {
-        for (int g = 0; g <= count_; ++g)
-            gaps.push_back(g);
-        return gaps;
-    }
-    for (int mark : distances_.neighbours(evaluator_.baseOrder()[index])) {
+    const std::vector<int>& marks = distances_.neighbours(evaluator_.baseOrder()[index]);
+    for (std::size_t m = 0; m < std::min<std::size_t>(kPartners, marks.size()); ++m) {
+        const int mark = marks[m];
         if (mark == kStartMark) {
             gaps.push_back(0);
         } else if (mark == kEndMark) {
@@ -166,7 +163,7 @@ double OrderPolish::improve(std::vector<int>& order, std::uint64_t workBudget,
     std::vector<int> best = evaluator_.baseOrder();
     double bestCost = evaluator_.baseCost();
     // Perturbations stop when the budget is spent or many in a row found nothing.
-    const int patience = getenv("FC_PAT") ? atoi(getenv("FC_PAT")) : std::max(30, 5 * count_);
+    const int patience = std::max(10, count_);
     for (int failures = 0;
          count_ >= 4 && count_ <= kPerturbLimit && failures < patience && !exhausted();
          ++failures) {

@@ -37,7 +37,6 @@ private:
     OrderEvaluator& evaluator_;
     const ProxyDistances& distances_;
     int count_;
-    bool everyPair_; // small enough to try every move, not just those near neighbours
     SeededRandom random_;
     std::vector<int> candidate_; // equals the evaluator's base outside a move being tried
     std::vector<int> indexOf_; // task -> position in the base order
