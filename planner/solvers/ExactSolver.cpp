@@ -1,8 +1,8 @@
 // Provably optimal graph cost (SPEC sect. 4): A* over (covered subset of the required cells
 // x node). Moving along an edge costs its price under the current subset; the coverage edge
-// of an uncovered required cell costs 0 and adds the cell. The heuristic's walk gives an
-// upper bound that prunes the search, and a consistent lower bound (cheapest-price distances
-// to the end, and via every uncovered cell to the end) steers it.
+// of an uncovered required cell costs 0 and adds the cell. The greedy walk gives an upper
+// bound that keeps hopeless states out of memory, and a consistent lower bound
+// (cheapest-price distances to the end, and via every uncovered cell to the end) steers it.
 #include "solvers/FlatHashMap.h"
 #include "solvers/Solver.h"
 #include "solvers/SolverCommon.h"
@@ -40,9 +40,9 @@ EdgePrices cheapestPrices(const TransitGraph& transit) {
 }
 
 struct LowerBound {
-    std::vector<double> toEnd;                // node -> cheapest cost to the end
-    std::vector<std::vector<double>> toTask;  // task -> node -> cheapest cost to its corners
-    std::vector<double> taskToEnd;            // task -> cheapest cost from it to the end
+    std::vector<double> toEnd;               // node -> cheapest cost to the end
+    std::vector<std::vector<double>> toTask; // task -> node -> cheapest cost to its corners
+    std::vector<double> taskToEnd;           // task -> cheapest cost from it to the end
 
     // Consistent: each term is a shortest-path distance (plus a constant) under prices that
     // never exceed the true ones, and covering a task only drops its term.
@@ -107,12 +107,12 @@ Solution solveExact(const CornerGraph& graph, const Query& query, const ExactOpt
     const std::uint64_t stateLimit = std::min<std::uint64_t>(options.maxStates, UINT32_MAX);
     if (stateSpace > stateLimit)
         throw SolverError("exact solver: " + std::to_string(tasks) + " required cells x " +
-                          std::to_string(problem.reachableNodeCount) +
-                          " reachable nodes = " + withThousands(stateSpace) +
-                           " states exceed its limit of " + withThousands(stateLimit) +
-                          "; use `--solver heuristic` for this query");
+                          std::to_string(problem.reachableNodeCount) + " reachable nodes = " +
+                          withThousands(stateSpace) + " states exceed its limit of " +
+                          withThousands(stateLimit) + "; use `--solver heuristic` for this query");
 
-    // Upper bound: any valid walk; the search never keeps states that cannot beat it.
+    // Upper bound: any valid walk (the greedy one is instant and independent of the
+    // heuristic); the search never keeps states that cannot beat it.
     Solution incumbent = solveGreedy(graph, query);
     const double upper = incumbent.graphCost * (1.0 + 1e-12) + 1e-9;
 
@@ -182,8 +182,8 @@ Solution solveExact(const CornerGraph& graph, const Query& query, const ExactOpt
             const int task = taskOfEdge[e];
             const bool uncovered = task >= 0 && !((covered >> task) & 1);
             if (uncovered && graph.edges[e].kind == EdgeKind::Coverage) {
-                reach(covered | (std::uint64_t{1} << task), transit.adjacencyNode[i],
-                      item.cost, 2 * std::int64_t{e} + 1);
+                reach(covered | (std::uint64_t{1} << task), transit.adjacencyNode[i], item.cost,
+                      2 * std::int64_t{e} + 1);
             } else {
                 const double price =
                     uncovered ? transit.truePrices.uncovered[e] : transit.truePrices.covered[e];

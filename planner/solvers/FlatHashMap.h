@@ -9,8 +9,7 @@
 
 namespace fc::solver_detail {
 
-template <class Value>
-class FlatHashMap {
+template <class Value> class FlatHashMap {
 public:
     static constexpr std::uint64_t kReservedKey = ~std::uint64_t{0}; // marks empty slots
 

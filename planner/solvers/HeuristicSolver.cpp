@@ -1,8 +1,8 @@
 // Near-optimal solver for any size (SPEC sect. 4). The decision is the cell order: for a
 // given order the best corners follow exactly from OrderEvaluator's dynamic programme.
-// Orders are searched with fast proxy costs (TourSearch), then judged, and on small
-// instances polished, with the true state-dependent costs. Every budget is a count of moves
-// or of search work, never wall-clock time, so a seed always gives the same walk.
+// Orders are searched with fast proxy costs (TourSearch), then judged and polished with the
+// true state-dependent costs (OrderPolish). Every budget is a count of moves or of search
+// work, never wall-clock time, so a seed always gives the same walk.
 #include "solvers/OrderEvaluator.h"
 #include "solvers/OrderPolish.h"
 #include "solvers/ProxyDistances.h"
@@ -21,12 +21,14 @@ namespace {
 
 constexpr const char* kName = "heuristic";
 
-// Instances up to this many cells get complete neighbour lists and the true-cost polish.
+// Instances up to this many cells get complete neighbour lists and a second polish start.
 constexpr int kSmallInstance = 40;
 // Neighbours per cell considered by the moves on larger instances.
 constexpr int kNeighbourCount = 10;
 // Perturbations of the proxy search: a few per cell, within bounds.
-int proxyKicks(int tasks) { return std::clamp(25 * tasks, 300, 6000); }
+int proxyKicks(int tasks) {
+    return std::clamp(25 * tasks, 300, 6000);
+}
 // Settled nodes the true-cost polish may spend per starting order: on small instances
 // enough for many perturbations, on large ones for the moves at the costliest steps.
 std::uint64_t polishWork(int tasks, int nodes, bool small) {
@@ -46,8 +48,7 @@ std::vector<int> tasksOf(const Problem& problem, const std::vector<int>& cells) 
 
 } // namespace
 
-Solution solveHeuristic(const CornerGraph& graph, const Query& query,
-                        const SolveControl& control) {
+Solution solveHeuristic(const CornerGraph& graph, const Query& query, const SolveControl& control) {
     const Problem problem = makeProblem(graph, query, kName);
     const int tasks = problem.taskCount();
     const TransitGraph transit(problem);

@@ -6,8 +6,8 @@
 namespace fc::solver_detail {
 
 OrderEvaluator::OrderEvaluator(const TransitGraph& graph, TransitSearch& search)
-    : graph_(graph), search_(search), covered_(graph.initialCoverage()),
-      startSource_{{graph.problem->startNode, 0.0}} {}
+    : graph_(graph), search_(search),
+      covered_(graph.initialCoverage()), startSource_{{graph.problem->startNode, 0.0}} {}
 
 void OrderEvaluator::cover(int task, bool covered) {
     covered_[graph_.problem->taskCells[task]] = covered ? 1 : 0;
@@ -24,8 +24,7 @@ const std::vector<NodeCost>& OrderEvaluator::baseSources(int position) const {
     return position == 0 ? startSource_ : baseSteps_[position - 1].exits;
 }
 
-void OrderEvaluator::coverStep(const std::vector<NodeCost>& sources, int task,
-                               StepLabels& step) {
+void OrderEvaluator::coverStep(const std::vector<NodeCost>& sources, int task, StepLabels& step) {
     const std::vector<CoverOption>& options = graph_.problem->options[task];
     targets_.clear();
     for (const CoverOption& option : options)
@@ -112,7 +111,6 @@ double OrderEvaluator::candidateCost(const std::vector<int>& candidate, int firs
     const int steps = static_cast<int>(base_.size());
     setCoveredPrefix(first);
     candidateFirst_ = first;
-    candidateLast_ = last;
     candidateWindow_.assign(candidate.begin() + first, candidate.begin() + last + 1);
     candidateSynced_ = false;
     candidateCost_ = kInfinity;
@@ -120,40 +118,33 @@ double OrderEvaluator::candidateCost(const std::vector<int>& candidate, int firs
         candidateSteps_.resize(steps);
 
     double result = kInfinity;
-    bool stopped = false;
+    bool decided = false; // the result is known without computing to the end
     int k = first;
-    for (; k < steps; ++k) {
+    while (k < steps && !decided) {
+        const int position = k++;
         const std::vector<NodeCost>& sources =
-            k == first ? baseSources(first) : candidateSteps_[k - 1].exits;
-        StepLabels& step = candidateSteps_[k];
-        coverStep(sources, candidate[k], step);
-        cover(candidate[k], true);
+            position == first ? baseSources(first) : candidateSteps_[position - 1].exits;
+        StepLabels& step = candidateSteps_[position];
+        coverStep(sources, candidate[position], step);
+        cover(candidate[position], true);
         double cheapest = kInfinity;
         for (const NodeCost& exit : step.exits)
             cheapest = std::min(cheapest, exit.cost);
         if (!(cheapest < bound)) { // infeasible, or costs never fall enough to win
-            stopped = true;
-            ++k;
-            break;
-        }
-        if (k < last)
-            continue;
-        const Comparison comparison = compareWithBase(step, k);
-        if (comparison.comparable && !(comparison.lowerBound < bound)) {
-            stopped = true; // cannot win, whatever follows
-            ++k;
-            break;
-        }
-        if (comparison.synced) {
-            candidateSynced_ = true;
-            candidateOffset_ = comparison.lowerBound - baseCost_;
-            result = comparison.lowerBound;
-            stopped = true;
-            ++k;
-            break;
+            decided = true;
+        } else if (position >= last) {
+            const Comparison comparison = compareWithBase(step, position);
+            if (comparison.comparable && !(comparison.lowerBound < bound)) {
+                decided = true; // cannot win, whatever follows
+            } else if (comparison.synced) {
+                candidateSynced_ = true;
+                candidateOffset_ = comparison.lowerBound - baseCost_;
+                result = comparison.lowerBound;
+                decided = true;
+            }
         }
     }
-    if (!stopped)
+    if (!decided)
         result = finish(candidateSteps_[steps - 1].exits);
     candidateStop_ = k;
     for (int j = first; j < k; ++j) // back to the base's covered prefix at `first`

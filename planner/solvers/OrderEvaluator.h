@@ -72,7 +72,7 @@ private:
     // The last candidate: its window, recomputed steps [first, stop) and how it ended.
     std::vector<int> candidateWindow_;
     std::vector<StepLabels> candidateSteps_;
-    int candidateFirst_ = 0, candidateLast_ = -1, candidateStop_ = 0;
+    int candidateFirst_ = 0, candidateStop_ = 0;
     bool candidateSynced_ = false;
     double candidateOffset_ = 0.0, candidateCost_ = kInfinity;
 };

@@ -10,13 +10,13 @@ constexpr double kImprovement = 1e-7;
 // Moves bring a cell next to one of its few nearest: a narrow neighbourhood leaves more of
 // the budget for perturbations, which pays better than wider moves.
 constexpr std::size_t kPartners = 5;
-constexpr int kPerturbLimit = 60;   // up to here perturbations follow the descent
-constexpr int kLongestWindow = 16;  // positions one move may reorder
+constexpr int kPerturbLimit = 60;  // up to here perturbations follow the descent
+constexpr int kLongestWindow = 16; // positions one move may reorder
 
 } // namespace
 
-OrderPolish::OrderPolish(OrderEvaluator& evaluator, const ProxyDistances& distances,
-                         int taskCount, std::uint64_t seed)
+OrderPolish::OrderPolish(OrderEvaluator& evaluator, const ProxyDistances& distances, int taskCount,
+                         std::uint64_t seed)
     : evaluator_(evaluator), distances_(distances), count_(taskCount), random_(seed),
       indexOf_(taskCount, 0), dirty_(taskCount, 0) {}
 
@@ -28,7 +28,6 @@ bool OrderPolish::tryWindow(int first, int last) {
     }
     const double cost =
         evaluator_.candidateCost(candidate_, first, last, evaluator_.baseCost() - kImprovement);
-
     if (cost < kInfinity) {
         evaluator_.acceptCandidate();
         for (int k = first; k <= last; ++k)

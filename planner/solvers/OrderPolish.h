@@ -19,8 +19,7 @@ public:
 
     // Improves `order` by Or-opt, 2-opt and swap moves; on small instances then perturbs
     // and descends again while `workBudget` settled nodes remain. Returns the new cost.
-    double improve(std::vector<int>& order, std::uint64_t workBudget,
-                   const SolveControl& control);
+    double improve(std::vector<int>& order, std::uint64_t workBudget, const SolveControl& control);
 
 private:
     // First-improvement moves around the queued tasks until none improves or the budget is
@@ -39,7 +38,7 @@ private:
     int count_;
     SeededRandom random_;
     std::vector<int> candidate_; // equals the evaluator's base outside a move being tried
-    std::vector<int> indexOf_; // task -> position in the base order
+    std::vector<int> indexOf_;   // task -> position in the base order
     std::vector<char> dirty_;
     std::vector<int> queue_;
     std::uint64_t workLimit_ = 0;

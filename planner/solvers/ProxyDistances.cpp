@@ -17,8 +17,7 @@ constexpr int kExtendedSearch = 0;
 
 } // namespace
 
-ProxyDistances::ProxyDistances(const TransitGraph& graph, TransitSearch& search,
-                               int neighbourCount)
+ProxyDistances::ProxyDistances(const TransitGraph& graph, TransitSearch& search, int neighbourCount)
     : graph_(graph), search_(search), anyCoverage_(graph.initialCoverage()),
       markOfNode_(graph.nodeCount(), kNoMark), taskSeen_(graph.problem->taskCount(), 0),
       searched_(graph.nodeCount(), 0), reachedFrom_(graph.nodeCount()),

@@ -47,11 +47,11 @@ private:
     const TransitGraph& graph_;
     TransitSearch& search_;
     EdgePrices prices_;
-    std::vector<char> anyCoverage_; // prices are static, so the covered state is irrelevant
-    std::vector<int> markOfNode_;   // task of a corner, else kNoMark
+    std::vector<char> anyCoverage_;       // prices are static, so the covered state is irrelevant
+    std::vector<int> markOfNode_;         // task of a corner, else kNoMark
     std::vector<std::uint32_t> taskSeen_; // stamp per task for the current search
     std::uint32_t searchStamp_ = 0;
-    std::vector<char> searched_;    // node -> 0 none, 1 neighbourhood, 2 extended
+    std::vector<char> searched_;                    // node -> 0 none, 1 neighbourhood, 2 extended
     std::vector<std::vector<Reached>> reachedFrom_; // per corner searched for neighbours
     int neighbourCount_;
     int tasksPerSearch_;

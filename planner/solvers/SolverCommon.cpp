@@ -7,7 +7,9 @@ namespace fc::solver_detail {
 
 namespace {
 
-std::string prefix(const char* solverName) { return std::string(solverName) + " solver: "; }
+std::string prefix(const char* solverName) {
+    return std::string(solverName) + " solver: ";
+}
 
 // Nodes reachable from `start` over every edge (costs aside, any edge can be walked).
 std::vector<char> reachableFrom(const CornerGraph& graph, int start) {
@@ -42,8 +44,7 @@ Problem makeProblem(const CornerGraph& graph, const Query& query, const char* so
         query.endNode >= nodeCount)
         throw SolverError(prefix(solverName) + "start node " + std::to_string(query.startNode) +
                           " or end node " + std::to_string(query.endNode) +
-                          " is not a node of the graph (" + std::to_string(nodeCount) +
-                          " nodes)");
+                          " is not a node of the graph (" + std::to_string(nodeCount) + " nodes)");
     if (query.required.size() != graph.cells.size())
         throw SolverError(prefix(solverName) + "the query lists " +
                           std::to_string(query.required.size()) + " cells but the graph has " +

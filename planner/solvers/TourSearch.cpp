@@ -38,16 +38,6 @@ std::vector<int> TourSearch::order() const {
     return std::vector<int>(tour_.begin() + 1, tour_.end() - 1);
 }
 
-void TourSearch::setOrder(const std::vector<int>& order) {
-    tour_.assign(1, kStartMark);
-    tour_.insert(tour_.end(), order.begin(), order.end());
-    tour_.push_back(kEndMark);
-    refreshPositions(1, count_);
-    std::fill(option_.begin(), option_.end(), 0);
-    cost_ = fullCost();
-    optimiseOptions();
-}
-
 void TourSearch::buildNearestNeighbour() {
     const CornerGraph& graph = *problem_.graph;
     std::vector<char> visited(count_, 0);
@@ -77,8 +67,8 @@ void TourSearch::buildNearestNeighbour() {
                 if (visited[task])
                     continue;
                 for (const CoverOption& option : problem_.options[task]) {
-                    const double d = distance(graph.nodes[here].position,
-                                              graph.nodes[option.entry].position);
+                    const double d =
+                        distance(graph.nodes[here].position, graph.nodes[option.entry].position);
                     if (d < nearestDistance) {
                         nearest = task;
                         nearestDistance = d;
@@ -118,8 +108,8 @@ void TourSearch::runQueue() {
     while (queueHead_ < queue_.size()) {
         const int task = queue_[queueHead_++];
         queued_[task] = 0;
-        while (improve(task)) {
-        }
+        while (improve(task))
+            continue; // keep improving around this task while moves pay
     }
     queue_.clear();
     queueHead_ = 0;
@@ -187,16 +177,15 @@ bool TourSearch::tryOrOpt(int task) {
                     const int x = exitAt(g), y = entryAt(g + 1);
                     const double base = distances_.between(x, y);
                     auto insertion = [&](int entry, int exit) {
-                        const double first = distances_.between(x, entry) - base;
-                        if (first - removalGain >= 0.0)
+                        const double partial = distances_.between(x, entry) - base;
+                        if (partial - removalGain >= 0.0)
                             return kInfinity; // the second link cannot make up for it
-                        return first + distances_.between(exit, y);
+                        return partial + distances_.between(exit, y);
                     };
                     if (length == 1) {
                         for (std::size_t o = 0; o < problem_.options[task].size(); ++o) {
                             const CoverOption& option = problem_.options[task][o];
-                            const double delta =
-                                insertion(option.entry, option.exit) - removalGain;
+                            const double delta = insertion(option.entry, option.exit) - removalGain;
                             if (delta < -kImprovement) {
                                 moveSegment(first, last, g, false, static_cast<int>(o));
                                 cost_ += delta;
@@ -206,10 +195,9 @@ bool TourSearch::tryOrOpt(int task) {
                         continue;
                     }
                     for (int reversed = 0; reversed < 2; ++reversed) {
-                        const double delta =
-                            (reversed ? insertion(exitAt(last), entryAt(first))
-                                      : insertion(entryAt(first), exitAt(last))) -
-                            removalGain;
+                        const double delta = (reversed ? insertion(exitAt(last), entryAt(first))
+                                                       : insertion(entryAt(first), exitAt(last))) -
+                                             removalGain;
                         if (delta < -kImprovement) {
                             moveSegment(first, last, g, reversed != 0, -1);
                             cost_ += delta;
@@ -243,10 +231,13 @@ bool TourSearch::tryTwoOpt(int task) {
             const int i = low - shift, j = high - shift;
             if (i < 0 || j > count_ || i >= j)
                 continue;
-            const double firstPart = distances_.between(exitAt(i), exitAt(j)) - gap(i) - gap(j);
-            if (firstPart >= 0.0)
+            auto exitsLink = [&] { return distances_.between(exitAt(i), exitAt(j)); };
+            auto entriesLink = [&] { return distances_.between(entryAt(i + 1), entryAt(j + 1)); };
+            // The link at this task first: the other is only looked up if it could pay.
+            const double partial = (shift == 0 ? exitsLink() : entriesLink()) - gap(i) - gap(j);
+            if (partial >= 0.0)
                 continue;
-            const double delta = firstPart + distances_.between(entryAt(i + 1), entryAt(j + 1));
+            const double delta = partial + (shift == 0 ? entriesLink() : exitsLink());
             if (delta < -kImprovement) {
                 reverseRange(i + 1, j);
                 cost_ += delta;
@@ -268,19 +259,16 @@ void TourSearch::reverseRange(int first, int last) {
     refreshPositions(first, last);
 }
 
-void TourSearch::moveSegment(int first, int last, int gapAfter, bool reversed,
-                             int singleOption) {
+void TourSearch::moveSegment(int first, int last, int gapAfter, bool reversed, int singleOption) {
     const int length = last - first + 1;
     const int before = tour_[first - 1], after = tour_[last + 1];
     int newFirst;
     if (gapAfter > last) {
-        std::rotate(tour_.begin() + first, tour_.begin() + last + 1,
-                    tour_.begin() + gapAfter + 1);
+        std::rotate(tour_.begin() + first, tour_.begin() + last + 1, tour_.begin() + gapAfter + 1);
         newFirst = gapAfter - length + 1;
         refreshPositions(first, gapAfter);
     } else {
-        std::rotate(tour_.begin() + gapAfter + 1, tour_.begin() + first,
-                    tour_.begin() + last + 1);
+        std::rotate(tour_.begin() + gapAfter + 1, tour_.begin() + first, tour_.begin() + last + 1);
         newFirst = gapAfter + 1;
         refreshPositions(gapAfter + 1, last);
     }
@@ -318,8 +306,8 @@ void TourSearch::optimiseOptions() {
     double total = kInfinity;
     int choice = 0;
     for (std::size_t prev = 0; prev < best[count_].size(); ++prev) {
-        const int exit = count_ == 0 ? problem_.startNode
-                                     : problem_.options[tour_[count_]][prev].exit;
+        const int exit =
+            count_ == 0 ? problem_.startNode : problem_.options[tour_[count_]][prev].exit;
         const double c = best[count_][prev] + distances_.between(exit, problem_.endNode);
         if (c < total) {
             total = c;

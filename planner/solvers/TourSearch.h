@@ -15,7 +15,6 @@ public:
     TourSearch(const Problem& problem, ProxyDistances& distances, std::uint64_t seed);
 
     void buildNearestNeighbour();
-    void setOrder(const std::vector<int>& order); // options then chosen by optimiseOptions
     // Moves to a local optimum of the proxy cost.
     void optimise();
     // Iterated local search: `kicks` perturbations, each kept only if the result improves.
@@ -48,7 +47,7 @@ private:
     ProxyDistances& distances_;
     SeededRandom random_;
     int count_;
-    std::vector<int> tour_;   // [0] start mark, [1..n] tasks, [n+1] end mark
+    std::vector<int> tour_; // [0] start mark, [1..n] tasks, [n+1] end mark
     std::vector<int> position_;
     std::vector<int> option_; // per task
     double cost_ = 0.0;

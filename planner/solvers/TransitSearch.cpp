@@ -108,9 +108,8 @@ void TransitSearch::run(const EdgePrices& prices, const std::vector<char>& cover
         loop(prices, covered, [](int, double) { return false; });
         return;
     }
-    loop(prices, covered, [&](int node, double) {
-        return targetStamp_[node] == generation_ && --remaining == 0;
-    });
+    loop(prices, covered,
+         [&](int node, double) { return targetStamp_[node] == generation_ && --remaining == 0; });
 }
 
 int TransitSearch::sourceOf(int node) const {

@@ -99,8 +99,7 @@ private:
 };
 
 template <class Stop>
-void TransitSearch::loop(const EdgePrices& prices, const std::vector<char>& covered,
-                         Stop&& stop) {
+void TransitSearch::loop(const EdgePrices& prices, const std::vector<char>& covered, Stop&& stop) {
     while (!heap_.empty()) {
         std::pop_heap(heap_.begin(), heap_.end());
         const HeapItem item = heap_.back();

@@ -14,9 +14,8 @@ WalkEvaluation evaluateWalk(const CornerGraph& graph, const Query& query, const 
 
     WalkEvaluation result;
     bool connected = !walk.nodes.empty() && walk.nodes.size() == walk.edges.size() + 1 &&
-                     walk.nodes.front() == query.startNode &&
-                     walk.nodes.back() == query.endNode && validNode(query.startNode) &&
-                     validNode(query.endNode);
+                     walk.nodes.front() == query.startNode && walk.nodes.back() == query.endNode &&
+                     validNode(query.startNode) && validNode(query.endNode);
 
     // Non-required cells count as covered from the start.
     std::vector<char> covered(graph.cells.size(), 0);
@@ -36,8 +35,8 @@ WalkEvaluation evaluateWalk(const CornerGraph& graph, const Query& query, const 
             if (!((edge.u == a && edge.v == b) || (edge.u == b && edge.v == a)))
                 connected = false;
         }
-        const bool cellCovered = edge.cell < 0 || edge.cell >= static_cast<int>(covered.size()) ||
-                                 covered[edge.cell];
+        const bool cellCovered =
+            edge.cell < 0 || edge.cell >= static_cast<int>(covered.size()) || covered[edge.cell];
         result.graphCost += edgeCost(edge, cellCovered);
         if (edge.kind == EdgeKind::Coverage && !cellCovered) {
             covered[edge.cell] = 1;

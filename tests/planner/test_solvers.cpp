@@ -2,12 +2,11 @@
 // costs and an independent brute force over cell orders and cover options.
 #include "solvers/Solver.h"
 
-#include <gtest/gtest.h>
-
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <functional>
+#include <gtest/gtest.h>
 #include <queue>
 #include <random>
 
@@ -24,8 +23,9 @@ public:
     CornerGraph graph;
 
     // Returns the cell id; its nodes are LB, LT, RB, RT. `stretch` (>= 1) lengthens edges.
-    int primary(double x0, double x1, double y0, double y1, int stripes,
-                std::function<double()> stretch = [] { return 1.0; }) {
+    int primary(
+        double x0, double x1, double y0, double y1, int stripes,
+        std::function<double()> stretch = [] { return 1.0; }) {
         const int cell = newCell(CellKind::Primary);
         const int lb = graph.addNode(cell, CornerKind::LB, {x0, y0});
         const int lt = graph.addNode(cell, CornerKind::LT, {x0, y1});
@@ -56,8 +56,8 @@ public:
 
     // Every corner of `a` on side `aSide` to every corner of `b` on `bSide` (0 = left/bottom
     // corners, 1 = right/top; a transition cell has both of its nodes on every side).
-    void join(int a, int aSide, int b, int bSide,
-              std::function<double()> stretch = [] { return 1.0; }) {
+    void join(
+        int a, int aSide, int b, int bSide, std::function<double()> stretch = [] { return 1.0; }) {
         for (int u : side(a, aSide))
             for (int v : side(b, bSide))
                 edge(u, v, EdgeKind::Inter, -1, false,
@@ -112,8 +112,8 @@ Instance randomInstance(unsigned seed, int primaries, double requiredShare, int 
         const int row = i / columns, column = i % columns;
         const double x0 = column * 5.0 + uniform(0, 1), y0 = row * 7.0 + uniform(0, 1);
         const int stripes = 1 + static_cast<int>(rng() % 4);
-        grid.push_back(b.primary(x0, x0 + uniform(1.5, 3.5), y0, y0 + uniform(2, 5), stripes,
-                                 stretch));
+        grid.push_back(
+            b.primary(x0, x0 + uniform(1.5, 3.5), y0, y0 + uniform(2, 5), stripes, stretch));
         if (column > 0 && uniform(0, 1) < 0.3) {
             const int t = b.transition(x0 - 0.5, y0, y0 + 2);
             b.join(grid[i - 1], 1, t, 0, stretch);
@@ -211,9 +211,9 @@ void expectValid(const CornerGraph& g, const Query& q, const Solution& s) {
 // Two primary cells side by side: A (even stripes) then B (odd stripes).
 Instance twoCells() {
     GraphBuilder b;
-    const int a = b.primary(0, 2, 0, 4, 2);   // nodes 0-3, edges 0-5
-    const int c = b.primary(3, 5, 0, 4, 3);   // nodes 4-7, edges 6-11
-    b.joinAcross(a, c);                       // edges 12-15
+    const int a = b.primary(0, 2, 0, 4, 2); // nodes 0-3, edges 0-5
+    const int c = b.primary(3, 5, 0, 4, 3); // nodes 4-7, edges 6-11
+    b.joinAcross(a, c);                     // edges 12-15
     Instance inst{std::move(b.graph), {}};
     inst.query.required = {1, 1};
     return inst;
@@ -350,9 +350,9 @@ TEST(Solvers, CoverOnlyRequiredCells) {
         inst.query.required[0] = 1;
         Query expected = inst.query;
         expected.required[0] = 0;
-        for (const Solution& s : {solveExact(inst.graph, inst.query),
-                                  solveHeuristic(inst.graph, inst.query),
-                                  solveGreedy(inst.graph, inst.query)})
+        for (const Solution& s :
+             {solveExact(inst.graph, inst.query), solveHeuristic(inst.graph, inst.query),
+              solveGreedy(inst.graph, inst.query)})
             expectValid(inst.graph, expected, s);
     }
 }
@@ -365,9 +365,9 @@ TEST(Solvers, NothingRequiredIsTheCheapestTransit) {
     inst.query.required[0] = 0;
     const double none = bruteForceCost(inst.graph, inst.query);
     EXPECT_LE(none, oneCell);
-    for (const Solution& s : {solveExact(inst.graph, inst.query),
-                              solveHeuristic(inst.graph, inst.query),
-                              solveGreedy(inst.graph, inst.query)}) {
+    for (const Solution& s :
+         {solveExact(inst.graph, inst.query), solveHeuristic(inst.graph, inst.query),
+          solveGreedy(inst.graph, inst.query)}) {
         EXPECT_NEAR(s.graphCost, none, 1e-9) << s.solver;
         EXPECT_TRUE(s.cellOrder.empty());
     }
@@ -379,17 +379,16 @@ TEST(Solvers, ExplainUnreachableCellsAndEnds) {
     island.graph = t.graph;
     island.primary(20, 22, 0, 4, 2); // cell 2: no edges to the others
     Query q{{1, 1, 1}, 0, 2, 1};
-    for (auto solve : {+[](const CornerGraph& g, const Query& q) { return solveExact(g, q); },
-                       +[](const CornerGraph& g, const Query& q) { return solveHeuristic(g, q); },
-                       +[](const CornerGraph& g, const Query& q) { return solveGreedy(g, q); }}) {
+    for (auto solve : {+[](const CornerGraph&g, const Query&q) { return solveExact(g, q); },
+                       +[](const CornerGraph&g, const Query&q) { return solveHeuristic(g, q); },
+                       +[](const CornerGraph&g, const Query&q) { return solveGreedy(g, q); }}) {
         try {
             solve(island.graph, q);
             FAIL() << "expected an unreachable-cell error";
         } catch (const SolverError& e) {
-            EXPECT_NE(std::string(e.what()).find("1 required cell"), std::string::npos)
-                << e.what();
+            EXPECT_NE(std::string(e.what()).find("1 required cell"), std::string::npos) << e.what();
         }
-        EXPECT_THROW(solve(island.graph, Query{{1, 1, 0}, 0, 8, 1}), SolverError); // end
+        EXPECT_THROW(solve(island.graph, Query{{1, 1, 0}, 0, 8, 1}), SolverError);  // end
         EXPECT_THROW(solve(island.graph, Query{{1, 1, 0}, 0, 99, 1}), SolverError); // bad id
     }
 }
