@@ -7,10 +7,6 @@
 #include "path/PathBuilder.h"
 #include "pipeline/Planner.h"
 
-#include <sys/resource.h>
-#include <sys/wait.h>
-#include <unistd.h>
-
 #include <chrono>
 #include <cstdio>
 #include <cstring>
@@ -19,6 +15,9 @@
 #include <iostream>
 #include <sstream>
 #include <string>
+#include <sys/resource.h>
+#include <sys/wait.h>
+#include <unistd.h>
 #include <vector>
 
 using namespace fc;
@@ -89,9 +88,9 @@ std::string runCase(const Case& c) {
                       "| %s | %zu | %zu | %.3f | %.3f | %s | %.3f | %.3f | %.1f | %.1f | %d | "
                       "%.2f%% | %.2f |\n",
                       c.name.c_str(), prepared.decomposition.cells.size(),
-                      prepared.graph.nodes.size(), tPrepare - tGraph, tGraph, solver,
-                      tSolve, tPrepare + tSolve + tPath, m.length, m.extra, m.turns,
-                      100 * m.coverage, s.graphCost);
+                      prepared.graph.nodes.size(), tPrepare - tGraph, tGraph, solver, tSolve,
+                      tPrepare + tSolve + tPath, m.length, m.extra, m.turns, 100 * m.coverage,
+                      s.graphCost);
         rows << buf;
     }
     (void)again;
@@ -136,15 +135,16 @@ int main(int argc, char** argv) {
         cases.push_back({name, [plans, name] {
                              return loadProjectFile(plans + "/" + name + ".geojson").plan;
                          }});
-    cases.push_back({"hall 150x100, 15 obstacles",
-                     [] { return generateHallWithObstacles(150, 100, 15, 1); }});
+    cases.push_back(
+        {"hall 150x100, 15 obstacles", [] { return generateHallWithObstacles(150, 100, 15, 1); }});
     for (int rooms : quick ? std::vector<int>{10, 100} : std::vector<int>{10, 100, 1000})
         cases.push_back({"office " + std::to_string(rooms) + " rooms",
                          [rooms] { return generateOfficeFloor(rooms, 1); }});
 
     std::cout << "# Benchmarks\n\n"
               << "Produced by `build/bench/floorcover-bench > docs/benchmarks.md` (one process "
-                 "per case, single-threaded) on " << cpuModel() << ".\n"
+                 "per case, single-threaded) on "
+              << cpuModel() << ".\n"
               << "W = 1 m, L = 0.6 m, sweep angle 90°, all rooms, start and end at the default "
                  "corner. Times in seconds: *decompose* includes validation; *total* is "
                  "decomposition + graph + solver + path synthesis. Coverage is measured on a "

@@ -21,7 +21,7 @@ public:
     // Parsed values; throw InputError naming the option when malformed.
     std::optional<double> number(const std::string& name) const;
     std::optional<long long> integer(const std::string& name) const;
-    std::optional<Vec2> point(const std::string& name) const; // "X,Y"
+    std::optional<Vec2> point(const std::string& name) const;     // "X,Y"
     std::vector<std::string> list(const std::string& name) const; // "A,B"
     // Throws InputError for options not in the allowed list.
     void allowOnly(const std::vector<std::string>& allowed) const;

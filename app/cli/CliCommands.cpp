@@ -28,10 +28,20 @@ PLAN is a GeoJSON floor plan (.geojson) or a FloorCover project (.fcproj).
 Exit codes: 0 success, 2 bad input (one line on stderr), 1 internal error.
 )";
 
-const std::vector<std::string> kPlanOptions{
-    "--width", "--robot-diameter", "--cleaning-diameter", "--speed", "--turn-time", "--angle",
-    "--rooms", "--start", "--end", "--solver", "--model", "--seed", "--out",
-    "--no-transition-cells"};
+const std::vector<std::string> kPlanOptions{"--width",
+                                            "--robot-diameter",
+                                            "--cleaning-diameter",
+                                            "--speed",
+                                            "--turn-time",
+                                            "--angle",
+                                            "--rooms",
+                                            "--start",
+                                            "--end",
+                                            "--solver",
+                                            "--model",
+                                            "--seed",
+                                            "--out",
+                                            "--no-transition-cells"};
 
 // A request from the project file's settings, overridden by command-line options.
 PlanRequest requestFrom(const Project& project, const Arguments& args) {
@@ -161,9 +171,8 @@ int commandCompare(const Arguments& args) {
         throw InputError(path + ": " + e.what());
     }
     if (!json)
-        std::printf("%-14s %10s %10s %10s %6s %9s %10s %11s %9s\n", "solver", "length_m",
-                    "ideal_m", "extra_m", "turns", "coverage", "time_s", "graph_cost",
-                    "seconds");
+        std::printf("%-14s %10s %10s %10s %6s %9s %10s %11s %9s\n", "solver", "length_m", "ideal_m",
+                    "extra_m", "turns", "coverage", "time_s", "graph_cost", "seconds");
     int failures = 0;
     for (const std::string& solver : solvers) {
         request.solver = solver;
@@ -174,13 +183,13 @@ int commandCompare(const Arguments& args) {
                 std::cout << metricsJsonLine(solver, m) << std::endl;
             else
                 std::printf("%-14s %10.2f %10.2f %10.2f %6d %8.2f%% %10.1f %11.3f %9.3f\n",
-                            solver.c_str(), m.length, m.ideal, m.extra, m.turns,
-                            100.0 * m.coverage, m.time, m.graphCost, m.seconds);
+                            solver.c_str(), m.length, m.ideal, m.extra, m.turns, 100.0 * m.coverage,
+                            m.time, m.graphCost, m.seconds);
         } catch (const SolverError& e) {
             ++failures;
             if (json)
-                std::cout << "{\"solver\":\"" << solver << "\",\"error\":\"" << e.what()
-                          << "\"}" << std::endl;
+                std::cout << "{\"solver\":\"" << solver << "\",\"error\":\"" << e.what() << "\"}"
+                          << std::endl;
             else
                 std::printf("%-14s refused: %s\n", solver.c_str(), e.what());
         } catch (const InputError& e) {

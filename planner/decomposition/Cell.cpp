@@ -29,8 +29,12 @@ double valueAt(const Polyline& f, double x, bool upper) {
 
 } // namespace
 
-double Cell::floorAt(double x) const { return valueAt(floor, x, false); }
-double Cell::ceilingAt(double x) const { return valueAt(ceiling, x, true); }
+double Cell::floorAt(double x) const {
+    return valueAt(floor, x, false);
+}
+double Cell::ceilingAt(double x) const {
+    return valueAt(ceiling, x, true);
+}
 
 Ring Cell::outline() const {
     Ring ring(floor.begin(), floor.end());
@@ -46,12 +50,13 @@ Ring Cell::outline() const {
     return out;
 }
 
-double Cell::area() const { return ringArea(outline()); }
+double Cell::area() const {
+    return ringArea(outline());
+}
 
 int Decomposition::primaryCount() const {
-    return static_cast<int>(std::count_if(cells.begin(), cells.end(), [](const Cell& c) {
-        return c.kind == CellKind::Primary;
-    }));
+    return static_cast<int>(std::count_if(
+        cells.begin(), cells.end(), [](const Cell& c) { return c.kind == CellKind::Primary; }));
 }
 
 int Decomposition::transitionCount() const {

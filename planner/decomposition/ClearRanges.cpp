@@ -77,8 +77,8 @@ double narrowStripeX(const Cell& cell, const ClearanceField& field) {
         double total = 0;
         for (const Interval& span : spansAt(cell, x, field))
             total += span.length() + 1e-9; // a zero-length span still counts
-        if (total > best + 1e-9 || (std::abs(total - best) <= 1e-9 &&
-                                    std::abs(x - mid) < std::abs(bestX - mid)))
+        if (total > best + 1e-9 ||
+            (std::abs(total - best) <= 1e-9 && std::abs(x - mid) < std::abs(bestX - mid)))
             best = total, bestX = x;
     }
     return bestX;

@@ -1,6 +1,5 @@
-#include "decomposition/Decomposition.h"
-
 #include "decomposition/ClearRanges.h"
+#include "decomposition/Decomposition.h"
 #include "decomposition/FunctionClip.h"
 #include "decomposition/SlabSweep.h"
 #include "decomposition/StripePlanner.h"
@@ -56,8 +55,8 @@ struct Piece {
 struct RawAdjacency {
     Adjacency::Kind kind;
     int first, second;
-    double x0, x1;   // along: shared x-range; across: x0 == x1 == x
-    double y0, y1;   // across: shared y-range; along: border y at x0 and x1
+    double x0, x1; // along: shared x-range; across: x0 == x1 == x
+    double y0, y1; // across: shared y-range; along: border y at x0 and x1
 };
 
 std::vector<RawAdjacency> rawAdjacencies(const SlabSweep& sweep, const std::vector<int>& cellOf) {
@@ -141,9 +140,8 @@ std::vector<PieceSpec> pieceSpecs(double x0, double x1, bool left, bool right, d
 }
 
 // The pieces of a raw cell on either side of x whose slice overlaps [y0, y1].
-std::vector<const Piece*> piecesAt(const std::vector<Piece>& pieces,
-                                   const std::vector<Cell>& cells, double x, bool leftOfX,
-                                   double y0, double y1) {
+std::vector<const Piece*> piecesAt(const std::vector<Piece>& pieces, const std::vector<Cell>& cells,
+                                   double x, bool leftOfX, double y0, double y1) {
     std::vector<const Piece*> out;
     for (const Piece& p : pieces) {
         const bool inside = leftOfX ? (p.x0 < x && x <= p.x1) : (p.x0 <= x && x < p.x1);
@@ -275,42 +273,42 @@ Decomposition decompose(const Plan& plan, const DecompositionOptions& options) {
         std::sort(cuts.begin(), cuts.end());
         cuts.erase(std::unique(cuts.begin(), cuts.end()), cuts.end());
         for (size_t seg = 0; seg + 1 < cuts.size(); ++seg) {
-        RawCell r = whole;
-        r.x0 = cuts[seg], r.x1 = cuts[seg + 1];
-        r.floor = detail::clipFunction(whole.floor, r.x0, r.x1);
-        r.ceiling = detail::clipFunction(whole.ceiling, r.x0, r.x1);
-        const bool leftSlice = seg > 0 || leftCritical[i];
-        const bool rightSlice = seg + 2 < cuts.size() || rightCritical[i];
-        Cell probe;
-        probe.x0 = r.x0, probe.x1 = r.x1, probe.floor = r.floor, probe.ceiling = r.ceiling;
-        for (const detail::ClearRange& part : detail::clearRanges(probe, field)) {
-            const Polyline floor = detail::clipFunction(r.floor, part.x0, part.x1);
-            const Polyline ceiling = detail::clipFunction(r.ceiling, part.x0, part.x1);
-            auto add = [&](Cell c, int layer, int layers) {
-                pieces[i].push_back({c.id, c.x0, c.x1, layer, layers});
-                out.cells.push_back(std::move(c));
-            };
-            if (part.layers >= 2) {
-                for (int k = 0; k < part.layers; ++k) {
-                    const int id = static_cast<int>(out.cells.size());
-                    add(makeCell(id, CellKind::Primary, r.room, part.x0, part.x1,
-                                 k == 0 ? floor : part.pinches[k - 1],
-                                 k + 1 == part.layers ? ceiling : part.pinches[k],
-                                 stripePositions(part.x0, part.x1, w)),
-                        k, part.layers);
+            RawCell r = whole;
+            r.x0 = cuts[seg], r.x1 = cuts[seg + 1];
+            r.floor = detail::clipFunction(whole.floor, r.x0, r.x1);
+            r.ceiling = detail::clipFunction(whole.ceiling, r.x0, r.x1);
+            const bool leftSlice = seg > 0 || leftCritical[i];
+            const bool rightSlice = seg + 2 < cuts.size() || rightCritical[i];
+            Cell probe;
+            probe.x0 = r.x0, probe.x1 = r.x1, probe.floor = r.floor, probe.ceiling = r.ceiling;
+            for (const detail::ClearRange& part : detail::clearRanges(probe, field)) {
+                const Polyline floor = detail::clipFunction(r.floor, part.x0, part.x1);
+                const Polyline ceiling = detail::clipFunction(r.ceiling, part.x0, part.x1);
+                auto add = [&](Cell c, int layer, int layers) {
+                    pieces[i].push_back({c.id, c.x0, c.x1, layer, layers});
+                    out.cells.push_back(std::move(c));
+                };
+                if (part.layers >= 2) {
+                    for (int k = 0; k < part.layers; ++k) {
+                        const int id = static_cast<int>(out.cells.size());
+                        add(makeCell(id, CellKind::Primary, r.room, part.x0, part.x1,
+                                     k == 0 ? floor : part.pinches[k - 1],
+                                     k + 1 == part.layers ? ceiling : part.pinches[k],
+                                     stripePositions(part.x0, part.x1, w)),
+                            k, part.layers);
+                    }
+                    continue;
                 }
-                continue;
+                const bool left = part.x0 == r.x0 && leftSlice;
+                const bool right = part.x1 == r.x1 && rightSlice;
+                const bool cut = options.transitionCells && part.layers == 1;
+                for (PieceSpec& spec : pieceSpecs(part.x0, part.x1, cut && left, cut && right, w))
+                    add(makeCell(static_cast<int>(out.cells.size()), spec.kind, r.room, spec.x0,
+                                 spec.x1, detail::clipFunction(r.floor, spec.x0, spec.x1),
+                                 detail::clipFunction(r.ceiling, spec.x0, spec.x1),
+                                 std::move(spec.stripes)),
+                        0, 1);
             }
-            const bool left = part.x0 == r.x0 && leftSlice;
-            const bool right = part.x1 == r.x1 && rightSlice;
-            const bool cut = options.transitionCells && part.layers == 1;
-            for (PieceSpec& spec : pieceSpecs(part.x0, part.x1, cut && left, cut && right, w))
-                add(makeCell(static_cast<int>(out.cells.size()), spec.kind, r.room, spec.x0,
-                             spec.x1, detail::clipFunction(r.floor, spec.x0, spec.x1),
-                             detail::clipFunction(r.ceiling, spec.x0, spec.x1),
-                             std::move(spec.stripes)),
-                    0, 1);
-        }
         }
         // Neighbouring pieces of one raw cell touch across the sweep where their slices
         // overlap.
@@ -358,8 +356,8 @@ Decomposition decompose(const Plan& plan, const DecompositionOptions& options) {
                 if (x1 - x0 <= 1e-9 * extent)
                     continue;
                 const Cell& c = out.cells[lo.cell];
-                out.adjacencies.push_back({a.kind, lo.cell, up.cell,
-                                           {{x0, c.ceilingAt(x0)}, {x1, c.ceilingAt(x1)}}});
+                out.adjacencies.push_back(
+                    {a.kind, lo.cell, up.cell, {{x0, c.ceilingAt(x0)}, {x1, c.ceilingAt(x1)}}});
             }
         }
     }

@@ -28,7 +28,7 @@ struct Cell {
     std::vector<Interval> stripeSpans;
 
     double width() const { return x1 - x0; }
-    bool reachable() const; // at least one stripe with a clear span
+    bool reachable() const;           // at least one stripe with a clear span
     double floorAt(double x) const;   // lower value at a jump
     double ceilingAt(double x) const; // upper value at a jump
     double area() const;

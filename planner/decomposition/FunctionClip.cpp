@@ -42,8 +42,8 @@ void appendPiece(Polyline& f, double xa, double ya, double xb, double yb) {
     // Drop the middle point of three collinear ones to keep outlines small.
     if (f.size() >= 2) {
         const Vec2 p = f[f.size() - 2], q = f.back(), r{xb, yb};
-        if (p.x < q.x && std::abs(cross(q - p, r - q)) <= 1e-12 * (1 + norm(r - p)) *
-                                                             (1 + norm(q - p)))
+        if (p.x < q.x &&
+            std::abs(cross(q - p, r - q)) <= 1e-12 * (1 + norm(r - p)) * (1 + norm(q - p)))
             f.pop_back();
     }
     f.push_back({xb, yb});

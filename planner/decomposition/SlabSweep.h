@@ -30,8 +30,8 @@ struct TrapezoidStack {
 };
 
 struct SlabSweep {
-    std::vector<double> xs;                   // event x's, sorted and unique
-    std::vector<Trapezoid> trapezoids;        // grouped by slab, sorted by y in a slab
+    std::vector<double> xs;                    // event x's, sorted and unique
+    std::vector<Trapezoid> trapezoids;         // grouped by slab, sorted by y in a slab
     std::vector<std::vector<int>> slabMembers; // slab -> trapezoid ids (bottom to top)
     std::vector<TrapezoidLink> links;
     std::vector<TrapezoidStack> stacks;

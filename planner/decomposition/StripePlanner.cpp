@@ -158,9 +158,8 @@ void fitStripes(Cell& cell, const ClearanceField& field) {
         const double right = firstFeasible(cell, x, cell.x1, field);
         const double left = firstFeasible(cell, x, cell.x0, field);
         if (!std::isnan(right) || !std::isnan(left))
-            cell.stripes[0] = std::isnan(left) || (!std::isnan(right) && right - x < x - left)
-                                  ? right
-                                  : left;
+            cell.stripes[0] =
+                std::isnan(left) || (!std::isnan(right) && right - x < x - left) ? right : left;
         return;
     }
     double a = cell.stripes.front(), b = cell.stripes.back();
@@ -192,8 +191,8 @@ void planStripeSpans(Decomposition& dec) {
             Vec2 centre;
             for (const Vec2& p : outline)
                 centre = centre + p * (1.0 / outline.size());
-            dec.unreachable.push_back({cell.area(), dec.frame.toWorld(centre),
-                                       "narrower than the coverage width W"});
+            dec.unreachable.push_back(
+                {cell.area(), dec.frame.toWorld(centre), "narrower than the coverage width W"});
         }
     }
 }

@@ -13,8 +13,7 @@ Interval spanAt(const Cell& cell, double x, const ClearanceField& field, double 
 // The robot-centre polyline along the bottom (top = false) or top of the cell's clear
 // region from xa to xb (either order). Adaptive sampling keeps chords within ~W/1000 of
 // the exact offset curve. Empty when the clear region is interrupted.
-Polyline traceBorder(const Cell& cell, double xa, double xb, bool top,
-                     const ClearanceField& field);
+Polyline traceBorder(const Cell& cell, double xa, double xb, bool top, const ClearanceField& field);
 
 // Fills Cell::stripeSpans for every cell and Decomposition::unreachable.
 void planStripeSpans(Decomposition& decomposition);

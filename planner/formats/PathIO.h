@@ -20,7 +20,7 @@ struct PathExportInfo {
 
 std::string metricsJsonLine(const std::string& solver, const Metrics& metrics);
 std::string pathToGeoJson(const CoveragePath& path, const PathExportInfo& info);
-std::string pathToCsv(const CoveragePath& path);  // x,y,heading,kind
+std::string pathToCsv(const CoveragePath& path); // x,y,heading,kind
 std::string pathToJson(const CoveragePath& path, const PathExportInfo& info);
 std::string pathToRosYaml(const CoveragePath& path, const PathExportInfo& info);
 // Chooses the writer from the file extension; throws InputError for an unknown one.

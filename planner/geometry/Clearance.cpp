@@ -136,9 +136,9 @@ std::vector<Interval> ClearanceField::clearPieces(double x, double yLow, double 
     // A gap exactly as wide as the robot leaves a clear piece of zero length: keep it.
     if (cursor <= yHigh)
         pieces.push_back({cursor, yHigh});
-    pieces.erase(std::remove_if(pieces.begin(), pieces.end(),
-                                [](const Interval& i) { return i.hi < i.lo; }),
-                 pieces.end());
+    pieces.erase(
+        std::remove_if(pieces.begin(), pieces.end(), [](const Interval& i) { return i.hi < i.lo; }),
+        pieces.end());
     return pieces;
 }
 

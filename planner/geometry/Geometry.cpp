@@ -16,7 +16,9 @@ double signedArea(const Ring& ring) {
     return 0.5 * a;
 }
 
-double ringArea(const Ring& ring) { return std::abs(signedArea(ring)); }
+double ringArea(const Ring& ring) {
+    return std::abs(signedArea(ring));
+}
 
 double polylineLength(const Polyline& line) {
     double len = 0.0;

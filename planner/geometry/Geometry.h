@@ -20,11 +20,19 @@ struct Vec2 {
     bool operator!=(Vec2 o) const { return !(*this == o); }
 };
 
-inline double dot(Vec2 a, Vec2 b) { return a.x * b.x + a.y * b.y; }
-inline double cross(Vec2 a, Vec2 b) { return a.x * b.y - a.y * b.x; }
+inline double dot(Vec2 a, Vec2 b) {
+    return a.x * b.x + a.y * b.y;
+}
+inline double cross(Vec2 a, Vec2 b) {
+    return a.x * b.y - a.y * b.x;
+}
 // sqrt, not hypot: coordinates are metres near the origin, and hypot is several times slower.
-inline double norm(Vec2 a) { return std::sqrt(a.x * a.x + a.y * a.y); }
-inline double distance(Vec2 a, Vec2 b) { return norm(a - b); }
+inline double norm(Vec2 a) {
+    return std::sqrt(a.x * a.x + a.y * a.y);
+}
+inline double distance(Vec2 a, Vec2 b) {
+    return norm(a - b);
+}
 
 // A closed ring; the closing vertex is NOT repeated.
 using Ring = std::vector<Vec2>;

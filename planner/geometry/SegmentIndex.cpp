@@ -2,7 +2,6 @@
 
 #include <boost/geometry.hpp>
 #include <boost/geometry/index/rtree.hpp>
-
 #include <limits>
 
 namespace fc {
@@ -18,7 +17,9 @@ struct SegmentIndex::Tree {
 };
 
 SegmentIndex::SegmentIndex() : tree_(std::make_unique<Tree>()) {}
-SegmentIndex::SegmentIndex(const std::vector<Ring>& rings) : SegmentIndex() { build(rings); }
+SegmentIndex::SegmentIndex(const std::vector<Ring>& rings) : SegmentIndex() {
+    build(rings);
+}
 SegmentIndex::~SegmentIndex() = default;
 SegmentIndex::SegmentIndex(SegmentIndex&&) noexcept = default;
 SegmentIndex& SegmentIndex::operator=(SegmentIndex&&) noexcept = default;

@@ -148,7 +148,8 @@ private:
                 graph_.addNode(cell.id, CornerKind::Bottom, c);
                 graph_.addNode(cell.id, CornerKind::Top, c);
             } else {
-                for (CornerKind k : {CornerKind::LB, CornerKind::LT, CornerKind::RB, CornerKind::RT})
+                for (CornerKind k :
+                     {CornerKind::LB, CornerKind::LT, CornerKind::RB, CornerKind::RT})
                     graph_.addNode(cell.id, k, c);
             }
             return;

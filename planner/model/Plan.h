@@ -23,11 +23,11 @@ struct Room {
 };
 
 struct Plan {
-    Ring boundary;              // outer wall, any orientation
+    Ring boundary;               // outer wall, any orientation
     std::vector<Ring> obstacles; // holes
-    std::vector<Room> rooms;    // optional named regions
-    std::string name;           // display name (file stem)
-    std::optional<int> epsg;    // coordinate reference, when known
+    std::vector<Room> rooms;     // optional named regions
+    std::string name;            // display name (file stem)
+    std::optional<int> epsg;     // coordinate reference, when known
 
     BoundingBox bounds() const { return boundsOf(boundary); }
 };

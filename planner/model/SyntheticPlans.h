@@ -13,7 +13,6 @@ Plan generateOfficeFloor(int rooms, std::uint64_t seed = 1);
 
 // A width x height hall with `obstacles` random non-overlapping boxes (the comparison case
 // of polygon_coverage_planning: 150 x 100 m with 15 obstacles).
-Plan generateHallWithObstacles(double width, double height, int obstacles,
-                               std::uint64_t seed = 1);
+Plan generateHallWithObstacles(double width, double height, int obstacles, std::uint64_t seed = 1);
 
 } // namespace fc

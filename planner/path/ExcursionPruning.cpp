@@ -56,8 +56,7 @@ bool inStrip(Vec2 q, Vec2 a, Vec2 b, double h, double before, double after) {
 } // namespace
 
 std::vector<char> prunableExcursions(const Polyline& pts,
-                                     const std::vector<PathExcursion>& excursions,
-                                     double width) {
+                                     const std::vector<PathExcursion>& excursions, double width) {
     std::vector<char> keep(pts.size(), 1);
     std::vector<char> segmentActive(pts.size(), 1); // segment i = pts[i] -> pts[i + 1]
     const SegmentGrid grid(pts, width);

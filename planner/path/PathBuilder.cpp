@@ -45,9 +45,8 @@ Polyline joinFreePoint(const ClearanceField& field, Vec2 from, Vec2 to, const ch
 
 } // namespace
 
-CoveragePath buildCoveragePath(const Decomposition& dec, const CornerGraph& graph,
-                               const Walk& walk, std::optional<Vec2> startPoint,
-                               std::optional<Vec2> endPoint) {
+CoveragePath buildCoveragePath(const Decomposition& dec, const CornerGraph& graph, const Walk& walk,
+                               std::optional<Vec2> startPoint, std::optional<Vec2> endPoint) {
     CoveragePath local;
     const ClearanceField field(dec.freeSpace, 0.5 * dec.coverageWidth);
     if (walk.nodes.empty())

@@ -120,7 +120,9 @@ Query makeQuery(const PreparedPlan& prepared, const std::vector<std::string>& ro
     return q;
 }
 
-std::vector<std::string> solverNames() { return {"exact", "heuristic", "greedy"}; }
+std::vector<std::string> solverNames() {
+    return {"exact", "heuristic", "greedy"};
+}
 
 Solution runSolver(const std::string& name, const PreparedPlan& prepared, const Query& query,
                    const std::string& /*modelPath*/, const SolveControl& control) {
@@ -188,8 +190,8 @@ PlanResult planAtAngle(const PlanRequest& request, double angle, const SolveCont
     result.metrics = computeMetrics(in);
     result.metrics.graphCost = result.solution.graphCost;
     result.metrics.seconds = seconds;
-    result.metrics.cells = static_cast<int>(
-        std::count(result.query.required.begin(), result.query.required.end(), 1));
+    result.metrics.cells =
+        static_cast<int>(std::count(result.query.required.begin(), result.query.required.end(), 1));
     return result;
 }
 

@@ -11,9 +11,6 @@ constexpr int kNoMark = -3;
 // Neighbourhood searches run until this many more tasks than the neighbour count are met,
 // so that the lists drawn from a cell's different corners overlap well.
 constexpr int kSearchMargin = 4;
-// A node asked for a distance its neighbourhood search did not reach searches this many
-// times further (in tasks met) once, answering its later questions from the cache.
-constexpr int kExtendedSearch = 0;
 
 } // namespace
 
@@ -65,7 +62,7 @@ std::uint64_t ProxyDistances::keyOf(int a, int b) const {
     return low * static_cast<std::uint64_t>(graph_.nodeCount()) + high;
 }
 
-void ProxyDistances::searchAround(int node, int taskLimit, std::vector<Reached>* reached) {
+void ProxyDistances::searchAround(int node, std::vector<Reached>& reached) {
     const Problem& problem = *graph_.problem;
     if (++searchStamp_ == 0) {
         std::fill(taskSeen_.begin(), taskSeen_.end(), 0);
@@ -79,19 +76,18 @@ void ProxyDistances::searchAround(int node, int taskLimit, std::vector<Reached>*
         if (task == kNoMark && !start && !end)
             return false;
         cache_.emplace(keyOf(node, settled), cost);
-        if (reached && start)
-            reached->push_back({kStartMark, cost});
-        if (reached && end)
-            reached->push_back({kEndMark, cost});
+        if (start)
+            reached.push_back({kStartMark, cost});
+        if (end)
+            reached.push_back({kEndMark, cost});
         if (task >= 0 && taskSeen_[task] != searchStamp_) {
             taskSeen_[task] = searchStamp_;
-            if (reached)
-                reached->push_back({task, cost});
+            reached.push_back({task, cost});
             ++tasksMet;
         }
         ++terminalsMet;
         return terminalsMet == terminalCount_ ||
-               (tasksMet >= taskLimit && taskLimit < problem.taskCount());
+               (tasksMet >= tasksPerSearch_ && tasksPerSearch_ < problem.taskCount());
     });
 }
 
@@ -101,7 +97,7 @@ void ProxyDistances::listNeighbours(const std::vector<int>& nodes, int exclude,
     for (int node : nodes) {
         if (!searched_[node]) {
             searched_[node] = 1;
-            searchAround(node, tasksPerSearch_, &reachedFrom_[node]);
+            searchAround(node, reachedFrom_[node]);
         }
         for (const Reached& r : reachedFrom_[node])
             if (r.mark != exclude)
@@ -127,16 +123,9 @@ double ProxyDistances::between(int from, int to) {
     if (from == to)
         return 0.0;
     const std::uint64_t key = keyOf(from, to);
-    for (int node : {from, to}) {
-        if (const double* known = cache_.find(key))
-            return *known;
-        if (kExtendedSearch > 0 && searched_[node] < 2) {
-            searched_[node] = 2;
-            searchAround(node, kExtendedSearch * tasksPerSearch_, nullptr);
-        }
-    }
     if (const double* known = cache_.find(key))
         return *known;
+    // Beyond both neighbourhoods: one targeted search (cheaper than widening them).
     search_.run(prices_, anyCoverage_, {{from, 0.0}}, {to});
     const double cost = search_.cost(to);
     cache_.emplace(key, cost);

@@ -37,9 +37,10 @@ private:
         double cost;
     };
 
-    // Searches outward from `node` until `taskLimit` tasks are met (or every terminal: task
-    // corner, start, end), caching the cost of each terminal it settles.
-    void searchAround(int node, int taskLimit, std::vector<Reached>* reached);
+    // Searches outward from `node` until enough tasks are met (or every terminal: task
+    // corner, start, end), caching the cost of each terminal it settles and listing the
+    // nearest cost per mark in `reached`.
+    void searchAround(int node, std::vector<Reached>& reached);
     void listNeighbours(const std::vector<int>& nodes, int exclude, std::vector<int>& marks,
                         std::vector<double>& costs);
     std::uint64_t keyOf(int a, int b) const;
@@ -51,7 +52,7 @@ private:
     std::vector<int> markOfNode_;         // task of a corner, else kNoMark
     std::vector<std::uint32_t> taskSeen_; // stamp per task for the current search
     std::uint32_t searchStamp_ = 0;
-    std::vector<char> searched_;                    // node -> 0 none, 1 neighbourhood, 2 extended
+    std::vector<char> searched_;                    // node -> its neighbourhood search has run
     std::vector<std::vector<Reached>> reachedFrom_; // per corner searched for neighbours
     int neighbourCount_;
     int tasksPerSearch_;

@@ -1,9 +1,8 @@
 #include "decomposition/Decomposition.h"
 
-#include <gtest/gtest.h>
-
 #include <algorithm>
 #include <cmath>
+#include <gtest/gtest.h>
 
 using namespace fc;
 
@@ -162,8 +161,8 @@ TEST(Decomposition, DoorGapJoinsLongestBorderRoom) {
     // Two rooms stacked with a wall between them and a 1.2 m door; the door strip
     // (outside both rooms) borders both equally and the lower room index wins.
     Plan p;
-    p.boundary = {{0, 0}, {6, 0}, {6, 4}, {3.6, 4}, {3.6, 4.2}, {6, 4.2}, {6, 8}, {0, 8},
-                  {0, 4.2}, {2.4, 4.2}, {2.4, 4}, {0, 4}};
+    p.boundary = {{0, 0}, {6, 0}, {6, 4},   {3.6, 4},   {3.6, 4.2}, {6, 4.2},
+                  {6, 8}, {0, 8}, {0, 4.2}, {2.4, 4.2}, {2.4, 4},   {0, 4}};
     p.rooms = {{"South", rect(0, 0, 6, 4)}, {"North", rect(0, 4.2, 6, 8)}};
     const Decomposition d = decompose(p, {});
     EXPECT_EQ(d.roomNames.size(), 2u);
@@ -172,16 +171,15 @@ TEST(Decomposition, DoorGapJoinsLongestBorderRoom) {
         if (c.room == 0)
             south += c.area();
     EXPECT_NEAR(south, 24 + 1.2 * 0.2, 1e-9);
-    const bool along = std::any_of(d.adjacencies.begin(), d.adjacencies.end(), [](auto& a) {
-        return a.kind == Adjacency::Kind::AlongSweep;
-    });
+    const bool along = std::any_of(d.adjacencies.begin(), d.adjacencies.end(),
+                                   [](auto& a) { return a.kind == Adjacency::Kind::AlongSweep; });
     EXPECT_TRUE(along);
 }
 
 TEST(Decomposition, NarrowPassageReportedUnreachable) {
     Plan p; // two rooms joined by a 0.6 m wide corridor, W = 1
-    p.boundary = {{0, 0}, {4, 0}, {4, 1.7}, {8, 1.7}, {8, 0}, {12, 0}, {12, 4}, {8, 4},
-                  {8, 2.3}, {4, 2.3}, {4, 4}, {0, 4}};
+    p.boundary = {{0, 0},  {4, 0}, {4, 1.7}, {8, 1.7}, {8, 0}, {12, 0},
+                  {12, 4}, {8, 4}, {8, 2.3}, {4, 2.3}, {4, 4}, {0, 4}};
     const Decomposition d = decompose(p, {});
     EXPECT_FALSE(d.unreachable.empty());
     double lost = 0;

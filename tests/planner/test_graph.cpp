@@ -1,8 +1,7 @@
-#include "graph/CornerGraph.h"
 #include "geometry/SegmentIndex.h"
+#include "graph/CornerGraph.h"
 
 #include <gtest/gtest.h>
-
 #include <map>
 
 using namespace fc;
@@ -52,7 +51,7 @@ TEST(CornerGraph, ParityRuleAndCornerOffsets) {
     EXPECT_NEAR(even.nodes[n[3]].position.y, 2.5, 1e-9);
     const GraphEdge& c0 = even.edges[even.cells[0].coverageEdges[0]];
     EXPECT_EQ(c0.u, n[0]);
-    EXPECT_EQ(c0.v, n[2]); // LB-RB
+    EXPECT_EQ(c0.v, n[2]);                       // LB-RB
     EXPECT_NEAR(c0.length, 4 * 2 + 3 * 1, 1e-4); // traced borders keep a tiny margin
 
     p.boundary = rect(0, 0, 5, 3); // 5 stripes (odd): LB-RT and LT-RB
@@ -83,8 +82,8 @@ TEST(CornerGraph, AllEdgeGeometryIsCollisionFree) {
 
 TEST(CornerGraph, DoorConnectsStackedRooms) {
     Plan p;
-    p.boundary = {{0, 0}, {6, 0}, {6, 4}, {3.6, 4}, {3.6, 4.2}, {6, 4.2}, {6, 8}, {0, 8},
-                  {0, 4.2}, {2.4, 4.2}, {2.4, 4}, {0, 4}};
+    p.boundary = {{0, 0}, {6, 0}, {6, 4},   {3.6, 4},   {3.6, 4.2}, {6, 4.2},
+                  {6, 8}, {0, 8}, {0, 4.2}, {2.4, 4.2}, {2.4, 4},   {0, 4}};
     p.rooms = {{"South", rect(0, 0, 6, 4)}, {"North", rect(0, 4.2, 6, 8)}};
     const Decomposition d = decompose(p, {});
     const CornerGraph g = buildCornerGraph(d);

@@ -6,7 +6,6 @@
 #include "pipeline/Planner.h"
 
 #include <gtest/gtest.h>
-
 #include <string>
 
 using namespace fc;
@@ -48,7 +47,9 @@ struct Case {
     std::string solver;
 };
 
-void PrintTo(const Case& c, std::ostream* os) { *os << c.plan << "/" << c.solver; }
+void PrintTo(const Case& c, std::ostream* os) {
+    *os << c.plan << "/" << c.solver;
+}
 
 class SamplePlans : public ::testing::TestWithParam<Case> {};
 
@@ -92,7 +93,8 @@ TEST(Pipeline, HeuristicWithinOnePercentOfExact) {
         const auto& nodes = p.graph.nodes;
         for (size_t k = 0; k < 4; ++k) {
             const Vec2 s = p.decomposition.frame.toWorld(nodes[(k * 7) % nodes.size()].position);
-            const Vec2 e = p.decomposition.frame.toWorld(nodes[(k * 13 + 5) % nodes.size()].position);
+            const Vec2 e =
+                p.decomposition.frame.toWorld(nodes[(k * 13 + 5) % nodes.size()].position);
             const Query q = makeQuery(p, {}, s, e, 1, warnings);
             const Solution exact = runSolver("exact", p, q);
             const Solution heuristic = runSolver("heuristic", p, q);
