@@ -96,9 +96,17 @@ check "compare" cli compare "$plans/simple.geojson"
 check "compare lists solvers" grep -q heuristic "$work/last"
 
 # Bad input: exit code 2 and one line naming the file.
-for f in "$data"/bad-*; do
-  expect_bad_input "bad input $(basename "$f")" "$f"
+# Every fixture listed as refused in tests/data/README.md.
+for name in $(sed -n 's/^| `\([^`]*\)` |.*/\1/p' "$data/README.md"); do
+  expect_bad_input "bad input $name" "$data/$name"
 done
+# The valid fixtures plan.
+for name in simple.fcproj utm-offset.geojson rooms-with-hole.geojson; do
+  check "valid fixture $name" cli plan "$data/$name"
+  check "metrics $name" metrics_ok
+done
+check "utm path keeps its crs" cli plan "$data/utm-offset.geojson" --out "$work/utm.geojson"
+check "utm geojson names epsg" grep -q 32632 "$work/utm.geojson"
 expect_bad_input "missing file" "$work/does-not-exist.geojson"
 expect_bad_input "robot wider than W" "$plans/simple.geojson" --robot-diameter 2 --width 1
 expect_bad_input "negative width" "$plans/simple.geojson" --width -1
