@@ -62,7 +62,26 @@ std::vector<char> prunableExcursions(const Polyline& pts,
     const SegmentGrid grid(pts, width);
     const double h = 0.5 * width * (1 - 1e-6);
     std::vector<int> nearby;
+    // The join the path would make at an excursion's base if the excursion were dropped:
+    // between the nearest active segments before and after it.
+    auto virtualJoin = [&](Vec2 q, int begin, int end) {
+        int before = begin - 1, after = end;
+        while (before >= 0 && !segmentActive[before])
+            --before;
+        while (after + 1 < static_cast<int>(pts.size()) && !segmentActive[after])
+            ++after;
+        if (before < 0 || after + 1 >= static_cast<int>(pts.size()))
+            return false;
+        const Vec2 v = pts[begin];
+        if (distance(pts[before + 1], v) > 1e-9 || distance(pts[after], v) > 1e-9)
+            return false;
+        const Vec2 a = pts[before], c = pts[after + 1];
+        return dot(v - a, c - v) >= 0 && distance(q, v) <= h * std::sqrt(2.0) &&
+               inStrip(q, a, v, h, 0, h) && inStrip(q, v, c, h, h, 0);
+    };
     auto covered = [&](Vec2 q, int skipBegin, int skipEnd) { // nearby: filled per excursion
+        if (virtualJoin(q, skipBegin, skipEnd))
+            return true;
         for (int i : nearby) {
             if (!segmentActive[i] || (i >= skipBegin && i < skipEnd))
                 continue;

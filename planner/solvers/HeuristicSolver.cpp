@@ -1,3 +1,5 @@
+#include <cstdlib>
+static double envOr(const char* n, double d){ const char* v=std::getenv(n); return v?std::atof(v):d; }
 // Near-optimal solver for any size (SPEC sect. 4). The decision is the cell order: for a
 // given order the best corners follow exactly from OrderEvaluator's dynamic programme.
 // Orders are searched with fast proxy costs (TourSearch), then judged and polished with the
@@ -27,7 +29,7 @@ constexpr int kSmallInstance = 40;
 constexpr int kNeighbourCount = 10;
 // Perturbations of the proxy search: a few per cell, within bounds.
 int proxyKicks(int tasks) {
-    return std::clamp(25 * tasks, 300, 6000);
+    return static_cast<int>(envOr("FC_KM",1) * std::clamp(25 * tasks, 300, 6000));
 }
 // Settled nodes the true-cost polish may spend per starting order: on small instances
 // enough for many perturbations, on large ones for the moves at the costliest steps.
@@ -76,7 +78,7 @@ Solution solveHeuristic(const CornerGraph& graph, const Query& query, const Solv
     std::vector<std::vector<int>> starts{best};
     if (small)
         starts.push_back(tasksOf(problem, solveGreedy(graph, query).cellOrder));
-    const std::uint64_t budget = polishWork(tasks, problem.reachableNodeCount, small);
+    const std::uint64_t budget = static_cast<std::uint64_t>(envOr("FC_PM",1) * polishWork(tasks, problem.reachableNodeCount, small));
     for (std::size_t s = 0; s < starts.size(); ++s) {
         std::vector<int> order = starts[s];
         OrderPolish polish(evaluator, distances, tasks, problem.seed + 7919 * (s + 1));
@@ -85,7 +87,8 @@ Solution solveHeuristic(const CornerGraph& graph, const Query& query, const Solv
             best = order;
             bestCost = cost;
         }
-        reportProgress(control, 0.6 + 0.35 * static_cast<double>(s + 1) / starts.size());
+        reportProgress(control, 0.6 + 0.35 * static_cast<double>(s + 1) /
+                                          static_cast<double>(starts.size()));
     }
     if (!(bestCost < kInfinity)) {
         // The proxy can prefer an order the covered state forbids (a transit that only

@@ -1,3 +1,4 @@
+#include <cstdlib>
 #include "solvers/OrderPolish.h"
 
 #include <algorithm>
@@ -164,7 +165,7 @@ double OrderPolish::improve(std::vector<int>& order, std::uint64_t workBudget,
     // Perturbations stop when the budget is spent or many in a row found nothing.
     const int patience = std::max(10, count_);
     for (int failures = 0;
-         count_ >= 4 && count_ <= kPerturbLimit && failures < patience && !exhausted();
+         count_ >= 4 && count_ <= (std::getenv("FC_PL") ? std::atoi(std::getenv("FC_PL")) : kPerturbLimit) && failures < patience && !exhausted();
          ++failures) {
         // Perturb: swap two short adjacent stretches, sometimes reversing one.
         std::vector<int> trial = best;

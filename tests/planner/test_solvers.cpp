@@ -378,12 +378,15 @@ TEST(Solvers, ExplainUnreachableCellsAndEnds) {
     GraphBuilder island;
     island.graph = t.graph;
     island.primary(20, 22, 0, 4, 2); // cell 2: no edges to the others
-    Query q{{1, 1, 1}, 0, 2, 1};
-    for (auto solve : {+[](const CornerGraph&g, const Query&q) { return solveExact(g, q); },
-                       +[](const CornerGraph&g, const Query&q) { return solveHeuristic(g, q); },
-                       +[](const CornerGraph&g, const Query&q) { return solveGreedy(g, q); }}) {
+    const Query cutOff{{1, 1, 1}, 0, 2, 1};
+    using Solve = std::function<Solution(const CornerGraph&, const Query&)>;
+    const Solve solvers[] = {
+        [](const CornerGraph& g, const Query& query) { return solveExact(g, query); },
+        [](const CornerGraph& g, const Query& query) { return solveHeuristic(g, query); },
+        [](const CornerGraph& g, const Query& query) { return solveGreedy(g, query); }};
+    for (const Solve& solve : solvers) {
         try {
-            solve(island.graph, q);
+            solve(island.graph, cutOff);
             FAIL() << "expected an unreachable-cell error";
         } catch (const SolverError& e) {
             EXPECT_NE(std::string(e.what()).find("1 required cell"), std::string::npos) << e.what();
@@ -419,8 +422,9 @@ TEST(HeuristicSolver, IncrementalOrderCostsMatchFullEvaluation) {
     incremental.setBase(order);
     for (int trial = 0; trial < 300; ++trial) {
         std::vector<int> candidate = incremental.baseOrder();
-        const int first = static_cast<int>(rng() % candidate.size());
-        const int last = std::min<int>(candidate.size() - 1, first + 1 + rng() % 6);
+        const int size = static_cast<int>(candidate.size());
+        const int first = static_cast<int>(rng() % size);
+        const int last = std::min(size - 1, first + 1 + static_cast<int>(rng() % 6));
         if (trial % 2 == 0)
             std::reverse(candidate.begin() + first, candidate.begin() + last + 1);
         else
