@@ -6,6 +6,8 @@
 #include "pipeline/Planner.h"
 
 #include <gtest/gtest.h>
+#include <algorithm>
+#include <cmath>
 #include <string>
 
 using namespace fc;
@@ -144,4 +146,29 @@ TEST(Pipeline, SlantedSweepAndGeneratedFloors) {
         planCoverage(requestFor(generateHallWithObstacles(60, 40, 6, 2), "heuristic"));
     expectCollisionFree(hall, "generated hall");
     EXPECT_GE(hall.metrics.coverage, 0.99);
+}
+
+TEST(Pipeline, CurvedWallsOfManySegments) {
+    // A round pillar (64-gon) in a room whose north wall is an arc of 48 segments.
+    Plan p;
+    for (int i = 0; i <= 48; ++i) {
+        const double a = M_PI * i / 48;
+        p.boundary.push_back({10 + 10 * std::cos(a), 6 + 4 * std::sin(a)});
+    }
+    p.boundary.push_back({0, 0});
+    p.boundary.push_back({20, 0});
+    std::reverse(p.boundary.begin(), p.boundary.end());
+    Ring pillar;
+    for (int i = 0; i < 64; ++i) {
+        const double a = 2 * M_PI * i / 64;
+        pillar.push_back({8 + 1.5 * std::cos(a), 5 + 1.5 * std::sin(a)});
+    }
+    p.obstacles = {pillar};
+    for (double angle : {90.0, 20.0}) {
+        PlanRequest r = requestFor(p, "heuristic");
+        r.sweep.angleDeg = angle;
+        const PlanResult res = planCoverage(r);
+        expectCollisionFree(res, "curved walls");
+        EXPECT_GE(res.metrics.coverage, 0.99) << angle;
+    }
 }
