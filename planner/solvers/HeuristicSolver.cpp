@@ -1,5 +1,3 @@
-#include <cstdlib>
-static double envOr(const char* n, double d){ const char* v=std::getenv(n); return v?std::atof(v):d; }
 // Near-optimal solver for any size (SPEC sect. 4). The decision is the cell order: for a
 // given order the best corners follow exactly from OrderEvaluator's dynamic programme.
 // Orders are searched with fast proxy costs (TourSearch), then judged and polished with the
@@ -29,7 +27,7 @@ constexpr int kSmallInstance = 40;
 constexpr int kNeighbourCount = 10;
 // Perturbations of the proxy search: a few per cell, within bounds.
 int proxyKicks(int tasks) {
-    return static_cast<int>(envOr("FC_KM",1) * std::clamp(25 * tasks, 300, 6000));
+    return std::clamp(25 * tasks, 300, 6000);
 }
 // Settled nodes the true-cost polish may spend per starting order: on small instances
 // enough for many perturbations, on large ones for the moves at the costliest steps.
@@ -71,25 +69,23 @@ Solution solveHeuristic(const CornerGraph& graph, const Query& query, const Solv
     tour.iterate(proxyKicks(tasks), control);
     reportProgress(control, 0.6);
 
-    std::vector<int> best = tour.order();
-    double bestCost = evaluator.setBase(best);
-    // Starting points for the true-cost polish: the proxy optimum and, on small instances,
-    // the greedy walk (which already reflects the covered state at every step).
-    std::vector<std::vector<int>> starts{best};
-    if (small)
-        starts.push_back(tasksOf(problem, solveGreedy(graph, query).cellOrder));
-    const std::uint64_t budget = static_cast<std::uint64_t>(envOr("FC_PM",1) * polishWork(tasks, problem.reachableNodeCount, small));
-    for (std::size_t s = 0; s < starts.size(); ++s) {
-        std::vector<int> order = starts[s];
-        OrderPolish polish(evaluator, distances, tasks, problem.seed + 7919 * (s + 1));
+    // The true-cost polish of the proxy optimum and, on small instances, of the greedy walk
+    // (which already reflects the covered state at every step); the cheaper walk wins.
+    std::vector<int> best;
+    double bestCost = kInfinity;
+    const std::uint64_t budget = polishWork(tasks, problem.reachableNodeCount, small);
+    auto polishAndKeep = [&](std::vector<int> order, std::uint64_t seed) {
+        OrderPolish polish(evaluator, distances, tasks, seed);
         const double cost = polish.improve(order, budget, control);
         if (cost < bestCost) {
-            best = order;
+            best = std::move(order);
             bestCost = cost;
         }
-        reportProgress(control, 0.6 + 0.35 * static_cast<double>(s + 1) /
-                                          static_cast<double>(starts.size()));
-    }
+    };
+    polishAndKeep(tour.order(), problem.seed + 7919);
+    reportProgress(control, small ? 0.8 : 0.95);
+    if (small)
+        polishAndKeep(tasksOf(problem, solveGreedy(graph, query).cellOrder), problem.seed + 1);
     if (!(bestCost < kInfinity)) {
         // The proxy can prefer an order the covered state forbids (a transit that only
         // existed through a cell's coverage edge); the greedy order is always feasible.

@@ -36,6 +36,7 @@ public:
     Walk walk(const std::vector<int>& order);
 
     std::uint64_t work() const { return search_.settledTotal(); }
+    const Problem* problem() const { return graph_.problem; }
 
 private:
     // Cheapest cost of standing at each exit corner right after covering a step's cell.

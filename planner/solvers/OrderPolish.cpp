@@ -1,4 +1,3 @@
-#include <cstdlib>
 #include "solvers/OrderPolish.h"
 
 #include <algorithm>
@@ -12,7 +11,8 @@ constexpr double kImprovement = 1e-7;
 // the budget for perturbations, which pays better than wider moves.
 constexpr std::size_t kPartners = 5;
 constexpr int kPerturbLimit = 60;  // up to here perturbations follow the descent
-constexpr int kLongestWindow = 16; // positions one move may reorder
+constexpr int kLongestWindow = 16; // positions a neighbourhood move may reorder
+constexpr int kCrossingRounds = 4; // passes of cover-on-the-way moves
 
 } // namespace
 
@@ -21,9 +21,9 @@ OrderPolish::OrderPolish(OrderEvaluator& evaluator, const ProxyDistances& distan
     : evaluator_(evaluator), distances_(distances), count_(taskCount), random_(seed),
       indexOf_(taskCount, 0), dirty_(taskCount, 0) {}
 
-bool OrderPolish::tryWindow(int first, int last) {
+bool OrderPolish::tryWindow(int first, int last, bool anyLength) {
     const std::vector<int>& base = evaluator_.baseOrder();
-    if (last - first + 1 > kLongestWindow) {
+    if (!anyLength && last - first + 1 > kLongestWindow) {
         std::copy(base.begin() + first, base.begin() + last + 1, candidate_.begin() + first);
         return false;
     }
@@ -41,7 +41,7 @@ bool OrderPolish::tryWindow(int first, int last) {
     return false;
 }
 
-bool OrderPolish::tryMoveSegment(int index, int length, int gap, bool reversed) {
+bool OrderPolish::tryMoveSegment(int index, int length, int gap, bool reversed, bool anyLength) {
     // Gap g sits before base[g]; the segment base[index .. index+length) moves there.
     const std::vector<int>& base = evaluator_.baseOrder();
     auto segmentAt = [&](int to) {
@@ -51,11 +51,11 @@ bool OrderPolish::tryMoveSegment(int index, int length, int gap, bool reversed) 
     if (gap < index) {
         segmentAt(gap);
         std::copy(base.begin() + gap, base.begin() + index, candidate_.begin() + gap + length);
-        return tryWindow(gap, index + length - 1);
+        return tryWindow(gap, index + length - 1, anyLength);
     }
     std::copy(base.begin() + index + length, base.begin() + gap, candidate_.begin() + index);
     segmentAt(gap - length);
-    return tryWindow(index, gap - 1);
+    return tryWindow(index, gap - 1, anyLength);
 }
 
 std::vector<int> OrderPolish::partnerGaps(int index) const {
@@ -115,6 +115,48 @@ bool OrderPolish::improveAt(int i) {
     return false;
 }
 
+bool OrderPolish::coverOnTheWay(const SolveControl& control) {
+    // A transit that crosses a required cell (covered earlier at 3x along its floor, or to
+    // be covered later) suggests covering that cell right there instead: a long-range move
+    // that local neighbourhoods never propose (typically the way back to the end through
+    // cells covered long before).
+    const Problem& problem = *evaluator_.problem();
+    const CornerGraph& graph = *problem.graph;
+    const Walk walk = evaluator_.walk(evaluator_.baseOrder()); // the base is unchanged
+    std::vector<std::pair<int, int>> crossings; // (step, task crossed by its transit)
+    std::vector<char> covered(count_, 0);
+    int step = 0;
+    for (std::size_t i = 0; i < walk.edges.size(); ++i) {
+        const GraphEdge& edge = graph.edges[walk.edges[i]];
+        const int task = edge.cell >= 0 ? problem.taskOfCell[edge.cell] : -1;
+        if (edge.kind == EdgeKind::Coverage && task >= 0 && !covered[task]) {
+            covered[task] = 1;
+            ++step;
+            continue;
+        }
+        const int crossed = problem.taskOfCell[graph.nodes[walk.nodes[i + 1]].cell];
+        if (crossed >= 0 &&
+            (crossings.empty() || crossings.back() != std::make_pair(step, crossed)))
+            crossings.push_back({step, crossed});
+    }
+    bool improved = false;
+    for (const auto& [gap, task] : crossings) {
+        if (exhausted())
+            break;
+        throwIfCancelled(control, "heuristic");
+        const int index = indexOf_[task]; // positions shift after a move: gaps are guesses
+        if (gap >= index && gap <= index + 1)
+            continue;
+        improved = tryMoveSegment(index, 1, std::min(gap, count_), false, true) || improved;
+    }
+    return improved;
+}
+
+void OrderPolish::coverOnTheWayRounds(const SolveControl& control) {
+    for (int round = 0; round < kCrossingRounds && !exhausted() && coverOnTheWay(control); ++round)
+        descend(control); // around what moved
+}
+
 void OrderPolish::markDirty(int task) {
     if (!dirty_[task]) {
         dirty_[task] = 1;
@@ -150,22 +192,24 @@ double OrderPolish::improve(std::vector<int>& order, std::uint64_t workBudget,
     if (!(evaluator_.setBase(order) < kInfinity))
         return kInfinity;
     rebase(order);
-    // Costliest steps first: moves that remove an expensive transit (typically a jump back
-    // across covered cells) are the ones that pay, so a tight budget finds them early.
+    coverOnTheWayRounds(control); // few moves, and where the proxy erred most they pay most
+    // Then every task, costliest steps first: moves that remove an expensive transit are the
+    // ones that pay, so a tight budget finds them early.
     std::vector<std::pair<double, int>> steps(count_);
     for (int k = 0; k < count_; ++k)
-        steps[k] = {-evaluator_.baseStepCost(k), order[k]};
+        steps[k] = {-evaluator_.baseStepCost(k), evaluator_.baseOrder()[k]};
     std::sort(steps.begin(), steps.end());
     for (const auto& step : steps)
         markDirty(step.second);
     descend(control);
+    coverOnTheWayRounds(control);
 
     std::vector<int> best = evaluator_.baseOrder();
     double bestCost = evaluator_.baseCost();
     // Perturbations stop when the budget is spent or many in a row found nothing.
     const int patience = std::max(10, count_);
     for (int failures = 0;
-         count_ >= 4 && count_ <= (std::getenv("FC_PL") ? std::atoi(std::getenv("FC_PL")) : kPerturbLimit) && failures < patience && !exhausted();
+         count_ >= 4 && count_ <= kPerturbLimit && failures < patience && !exhausted();
          ++failures) {
         // Perturb: swap two short adjacent stretches, sometimes reversing one.
         std::vector<int> trial = best;

@@ -1,8 +1,9 @@
 // Local search on the cell order under the TRUE state-dependent graph cost: each candidate
-// is a local change evaluated exactly and incrementally by OrderEvaluator. The proxy costs
-// miss what the covered state does to transits (a jump back across covered cells costs 3x
-// along their floors), so this pass fixes what they get wrong. Budgeted by search work, so
-// results never depend on timing.
+// is a change evaluated exactly and incrementally by OrderEvaluator. The proxy costs miss
+// what the covered state does to transits (the way back across cells covered long before
+// costs 3x along their floors), so this pass fixes what they get wrong: cover-on-the-way
+// moves (a cell a transit crosses is covered right there), then Or-opt, 2-opt and swaps
+// near each cell's nearest neighbours. Budgeted by search work, never by time.
 #pragma once
 
 #include "solvers/OrderEvaluator.h"
@@ -17,8 +18,9 @@ public:
     OrderPolish(OrderEvaluator& evaluator, const ProxyDistances& distances, int taskCount,
                 std::uint64_t seed);
 
-    // Improves `order` by Or-opt, 2-opt and swap moves; on small instances then perturbs
-    // and descends again while `workBudget` settled nodes remain. Returns the new cost.
+    // Improves `order` (cover-on-the-way, Or-opt, 2-opt and swap moves); on small instances
+    // then perturbs and descends again while `workBudget` settled nodes remain. Returns the
+    // new cost (+inf, order unchanged, if the order is infeasible).
     double improve(std::vector<int>& order, std::uint64_t workBudget, const SolveControl& control);
 
 private:
@@ -28,8 +30,13 @@ private:
     void markDirty(int task);
     void rebase(const std::vector<int>& order); // after the evaluator's base was replaced
     bool improveAt(int index);
-    bool tryMoveSegment(int index, int length, int gap, bool reversed);
-    bool tryWindow(int first, int last);
+    // Moves that reorder more than kLongestWindow positions are only tried when anyLength.
+    bool tryMoveSegment(int index, int length, int gap, bool reversed, bool anyLength = false);
+    bool tryWindow(int first, int last, bool anyLength = false);
+    // Moves each cell that a transit of the base walk crosses to that transit's step;
+    // returns whether any move was kept. The rounds alternate it with descents.
+    bool coverOnTheWay(const SolveControl& control);
+    void coverOnTheWayRounds(const SolveControl& control);
     bool exhausted() const { return evaluator_.work() >= workLimit_; }
     std::vector<int> partnerGaps(int index) const;
 

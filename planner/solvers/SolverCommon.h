@@ -49,8 +49,8 @@ Solution finishSolution(const CornerGraph& graph, const Query& query, const char
 void throwIfCancelled(const SolveControl& control, const char* solverName);
 void reportProgress(const SolveControl& control, double fraction);
 
-// Deterministic pseudo-random numbers (std::mt19937_64 is fully specified by the standard;
-// the distributions are not, so bounded draws are done here).
+// Seeded pseudo-random numbers that are identical on every platform and standard library
+// (std:: distributions are not), so a seed always gives the same walk.
 class SeededRandom {
 public:
     explicit SeededRandom(std::uint64_t seed);
