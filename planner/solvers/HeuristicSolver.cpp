@@ -26,8 +26,10 @@ constexpr int kSmallInstance = 40;
 // Neighbours per cell considered by the moves on larger instances.
 constexpr int kNeighbourCount = 10;
 // Perturbations of the proxy search: a few per cell, within bounds.
+// Each kick's local search touches O(tasks) cells, so large floors get fewer kicks: the
+// product stays below ~3 million (a 1,000-room floor still gets a few hundred).
 int proxyKicks(int tasks) {
-    return std::clamp(25 * tasks, 300, 6000);
+    return std::clamp(std::min(25 * tasks, 3'000'000 / std::max(tasks, 1)), 100, 6000);
 }
 // Settled nodes the true-cost polish may spend per starting order: on small instances
 // enough for many perturbations, on large ones for the moves at the costliest steps.
@@ -36,7 +38,7 @@ std::uint64_t polishWork(int tasks, int nodes, bool small) {
     if (small)
         return std::min<std::uint64_t>(300'000 + 1'000 * n * static_cast<std::uint64_t>(nodes),
                                        2'000'000);
-    return std::max<std::uint64_t>(2'500 * n, 2'000'000);
+    return std::max<std::uint64_t>(600 * n, 2'000'000);
 }
 
 std::vector<int> tasksOf(const Problem& problem, const std::vector<int>& cells) {
@@ -84,6 +86,7 @@ Solution solveHeuristic(const CornerGraph& graph, const Query& query, const Solv
     };
     polishAndKeep(tour.order(), problem.seed + 7919);
     reportProgress(control, small ? 0.8 : 0.95);
+
     if (small)
         polishAndKeep(tasksOf(problem, solveGreedy(graph, query).cellOrder), problem.seed + 1);
     if (!(bestCost < kInfinity)) {

@@ -14,6 +14,8 @@ namespace fc::solver_detail {
 // Neighbour list entries that stand for the walk's start and end rather than a task.
 constexpr int kStartMark = -1;
 constexpr int kEndMark = -2;
+// Graphs with more nodes than this answer far proxy pairs from landmarks, not searches.
+constexpr int kLargeGraph = 6000;
 
 class ProxyDistances {
 public:

@@ -49,8 +49,8 @@ public:
 
 // Cooperative cancellation and progress for long solves (GUI workers).
 struct SolveControl {
-    std::function<bool()> cancelled;        // may be empty
-    std::function<void(double)> progress;   // 0..1, may be empty
+    std::function<bool()> cancelled;      // may be empty
+    std::function<void(double)> progress; // 0..1, may be empty
 };
 
 struct ExactOptions {

@@ -1,5 +1,8 @@
 #include "solvers/TransitSearch.h"
 
+#include <functional>
+#include <limits>
+
 namespace fc::solver_detail {
 
 TransitGraph::TransitGraph(const Problem& problem_) : problem(&problem_) {
@@ -41,6 +44,52 @@ TransitGraph::TransitGraph(const Problem& problem_) : problem(&problem_) {
             heuristicScale = std::min(heuristicScale, std::max(0.0, edge.length) / straight);
     }
     heuristicScale *= 1.0 - 1e-9; // keeps the estimate below the cost despite rounding
+    chooseLandmarks(nodes > 64 ? 8 : 0);
+}
+
+void TransitGraph::chooseLandmarks(int count) {
+    const int nodes = nodeCount();
+    const CornerGraph& graph = *problem->graph;
+    std::vector<double> minPrice(graph.edges.size());
+    for (const GraphEdge& edge : graph.edges)
+        minPrice[edge.id] = std::min(truePrices.uncovered[edge.id], truePrices.covered[edge.id]);
+    auto dijkstra = [&](int source) {
+        std::vector<double> dist(nodes, kInfinity);
+        using Item = std::pair<double, int>;
+        std::vector<Item> heap{{0.0, source}};
+        dist[source] = 0.0;
+        while (!heap.empty()) {
+            std::pop_heap(heap.begin(), heap.end(), std::greater<Item>());
+            const auto [d, u] = heap.back();
+            heap.pop_back();
+            if (d > dist[u])
+                continue;
+            for (int i = adjacencyOffset[u]; i < adjacencyOffset[u + 1]; ++i) {
+                const int v = adjacencyNode[i];
+                const double nd = d + minPrice[adjacencyEdge[i]];
+                if (nd < dist[v]) {
+                    dist[v] = nd;
+                    heap.push_back({nd, v});
+                    std::push_heap(heap.begin(), heap.end(), std::greater<Item>());
+                }
+            }
+        }
+        return dist;
+    };
+    // Farthest-point selection: each landmark is the node farthest from those chosen.
+    std::vector<double> nearest(nodes, kInfinity);
+    int next = 0;
+    for (int k = 0; k < count && nodes > 0; ++k) {
+        const std::vector<double> dist = dijkstra(next);
+        landmarkDistance.push_back(dist);
+        for (int n = 0; n < nodes; ++n)
+            if (dist[n] < kInfinity)
+                nearest[n] = std::min(nearest[n], dist[n]);
+        double far = -1;
+        for (int n = 0; n < nodes; ++n)
+            if (nearest[n] < kInfinity && nearest[n] > far)
+                far = nearest[n], next = n;
+    }
 }
 
 std::vector<char> TransitGraph::initialCoverage() const {
@@ -80,22 +129,33 @@ void TransitSearch::begin(const std::vector<NodeCost>& sources) {
 }
 
 double TransitSearch::estimate(int node) {
-    if (targetPositions_.empty() || graph_.heuristicScale <= 0.0)
+    if (targetPositions_.empty())
         return 0.0;
     const Vec2 p = graph_.positions[node];
-    double nearestSquared = kInfinity;
-    for (const Vec2& t : targetPositions_) {
-        const Vec2 d = p - t;
-        nearestSquared = std::min(nearestSquared, d.x * d.x + d.y * d.y);
+    double best = kInfinity; // lower bound to the nearest target
+    for (size_t i = 0; i < targetNodes_.size(); ++i) {
+        const Vec2 d = p - targetPositions_[i];
+        double bound = graph_.heuristicScale > 0.0
+                           ? graph_.heuristicScale * std::sqrt(d.x * d.x + d.y * d.y)
+                           : 0.0;
+        for (const std::vector<double>& dist : graph_.landmarkDistance) {
+            const double a = dist[node], b = dist[targetNodes_[i]];
+            if (a < kInfinity && b < kInfinity) // shrunk a little against rounding
+                bound = std::max(bound, std::abs(a - b) * (1.0 - 1e-9));
+        }
+        best = std::min(best, bound);
     }
-    return graph_.heuristicScale * std::sqrt(nearestSquared);
+    return best < kInfinity ? best : 0.0;
 }
 
 void TransitSearch::run(const EdgePrices& prices, const std::vector<char>& covered,
                         const std::vector<NodeCost>& sources, const std::vector<int>& targets) {
     targetPositions_.clear();
-    for (int t : targets)
+    targetNodes_.clear();
+    for (int t : targets) {
         targetPositions_.push_back(graph_.positions[t]);
+        targetNodes_.push_back(t);
+    }
     begin(sources);
     int remaining = 0;
     for (int t : targets) {

@@ -43,6 +43,13 @@ public:
     // A* scale: scale * straight-line distance never exceeds an edge's cost, even if a
     // graph's lengths are shorter than the distance between their end nodes.
     double heuristicScale = 0.0;
+    // ALT lower bounds: distances from a few far-apart landmark nodes under the cheapest
+    // price every edge can have; |d(L, t) - d(L, n)| never exceeds the true transit cost.
+    // Euclidean bounds are weak on floors where walls force detours through doors.
+    std::vector<std::vector<double>> landmarkDistance; // landmark -> node -> distance
+
+private:
+    void chooseLandmarks(int count);
 };
 
 // Dijkstra / A* with reusable buffers (reset by generation stamps, not by clearing).
@@ -94,6 +101,7 @@ private:
     std::vector<std::uint32_t> targetStamp_;
     std::vector<HeapItem> heap_;
     std::vector<Vec2> targetPositions_;
+    std::vector<int> targetNodes_;
     std::uint32_t generation_ = 0;
     std::uint64_t settledTotal_ = 0;
 };
