@@ -1,3 +1,4 @@
+#include "TestPlans.h"
 #include "decomposition/Decomposition.h"
 
 #include <algorithm>
@@ -5,17 +6,15 @@
 #include <gtest/gtest.h>
 
 using namespace fc;
+using fc::test::rectangle;
+using fc::test::shifted;
 
 namespace {
 
-Ring rect(double x0, double y0, double x1, double y1) {
-    return {{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}};
-}
-
 Plan simplePlan() { // the paper's Fig. 2 situation (shared/plans/simple)
     Plan p;
-    p.boundary = rect(0, 0, 12, 8);
-    p.obstacles = {rect(5, 3, 7, 5)};
+    p.boundary = rectangle(0, 0, 12, 8);
+    p.obstacles = {rectangle(5, 3, 7, 5)};
     return p;
 }
 
@@ -24,18 +23,6 @@ double totalArea(const Decomposition& d) {
     for (const Cell& c : d.cells)
         a += c.area();
     return a;
-}
-
-Plan shifted(Plan p, Vec2 by) {
-    for (Vec2& v : p.boundary)
-        v = v + by;
-    for (Ring& r : p.obstacles)
-        for (Vec2& v : r)
-            v = v + by;
-    for (Room& r : p.rooms)
-        for (Vec2& v : r.outline)
-            v = v + by;
-    return p;
 }
 
 } // namespace
@@ -84,7 +71,7 @@ TEST(Decomposition, StripesEvenlySpacedHalfWidthInside) {
 
 TEST(Decomposition, DiamondObstacle) {
     Plan p;
-    p.boundary = rect(0, 0, 12, 8);
+    p.boundary = rectangle(0, 0, 12, 8);
     p.obstacles = {{{6.2, 2.4}, {7.6, 3.7}, {6.0, 5.6}, {4.5, 4.0}}};
     DecompositionOptions o;
     o.transitionCells = false;
@@ -102,7 +89,7 @@ TEST(Decomposition, RectilinearNotchesDoNotSplit) {
     // shared/plans/room-notches: the notches make the floor/ceiling jump but never split.
     Plan p;
     p.boundary = {{20, 14}, {20, 3}, {15, 3}, {15, 0}, {0, 0}, {0, 10}, {4, 10}, {4, 14}};
-    p.obstacles = {rect(7, 5, 13, 8)};
+    p.obstacles = {rectangle(7, 5, 13, 8)};
     DecompositionOptions o;
     o.transitionCells = false;
     const Decomposition d = decompose(p, o);
@@ -112,8 +99,8 @@ TEST(Decomposition, RectilinearNotchesDoNotSplit) {
 
 TEST(Decomposition, SeveralHolesOnOneSlice) {
     Plan p;
-    p.boundary = rect(0, 0, 10, 10);
-    p.obstacles = {rect(4, 1, 6, 3), rect(4, 4, 6, 6), rect(4, 7, 6, 9)};
+    p.boundary = rectangle(0, 0, 10, 10);
+    p.obstacles = {rectangle(4, 1, 6, 3), rectangle(4, 4, 6, 6), rectangle(4, 7, 6, 9)};
     DecompositionOptions o;
     o.transitionCells = false;
     const Decomposition d = decompose(p, o);
@@ -145,8 +132,8 @@ TEST(Decomposition, LargeCoordinatesDecomposeLikeSmallOnes) {
 
 TEST(Decomposition, CellsNeverStraddleRooms) {
     Plan p;
-    p.boundary = rect(0, 0, 10, 6);
-    p.rooms = {{"West", rect(0, 0, 4, 6)}, {"East", rect(4, 0, 10, 6)}};
+    p.boundary = rectangle(0, 0, 10, 6);
+    p.rooms = {{"West", rectangle(0, 0, 4, 6)}, {"East", rectangle(4, 0, 10, 6)}};
     const Decomposition d = decompose(p, {});
     for (const Cell& c : d.cells) {
         if (c.room == 0)
@@ -163,7 +150,7 @@ TEST(Decomposition, DoorGapJoinsLongestBorderRoom) {
     Plan p;
     p.boundary = {{0, 0}, {6, 0}, {6, 4},   {3.6, 4},   {3.6, 4.2}, {6, 4.2},
                   {6, 8}, {0, 8}, {0, 4.2}, {2.4, 4.2}, {2.4, 4},   {0, 4}};
-    p.rooms = {{"South", rect(0, 0, 6, 4)}, {"North", rect(0, 4.2, 6, 8)}};
+    p.rooms = {{"South", rectangle(0, 0, 6, 4)}, {"North", rectangle(0, 4.2, 6, 8)}};
     const Decomposition d = decompose(p, {});
     EXPECT_EQ(d.roomNames.size(), 2u);
     double south = 0;
@@ -198,8 +185,8 @@ TEST(Decomposition, NarrowPassageReportedUnreachable) {
 TEST(Decomposition, NarrowCellRuleIsDeterministic) {
     // A cell 1.5 W wide between two critical slices becomes two transition cells.
     Plan p;
-    p.boundary = rect(0, 0, 10, 6);
-    p.obstacles = {rect(4, 2, 5.5, 4)};
+    p.boundary = rectangle(0, 0, 10, 6);
+    p.obstacles = {rectangle(4, 2, 5.5, 4)};
     const Decomposition d = decompose(p, {});
     int narrow = 0;
     for (const Cell& c : d.cells)

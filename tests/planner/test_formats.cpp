@@ -1,4 +1,5 @@
 // Plan and project files: reading, writing, error messages and atomic writes.
+#include "TestPlans.h"
 #include "formats/PlanIO.h"
 
 #include <algorithm>
@@ -11,6 +12,8 @@
 #include <vector>
 
 using namespace fc;
+using fc::test::rectangle;
+using fc::test::shifted;
 namespace fs = std::filesystem;
 
 namespace {
@@ -83,10 +86,6 @@ void expectSamePlan(const Plan& a, const Plan& b) {
         EXPECT_EQ(vertexSet(a.rooms[i].outline), vertexSet(b.rooms[i].outline));
     }
     EXPECT_EQ(a.epsg, b.epsg);
-}
-
-Ring rectangle(double x0, double y0, double x1, double y1) {
-    return {{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}};
 }
 
 } // namespace

@@ -1,3 +1,4 @@
+#include "TestPlans.h"
 #include "geometry/SegmentIndex.h"
 #include "graph/CornerGraph.h"
 
@@ -5,12 +6,10 @@
 #include <map>
 
 using namespace fc;
+using fc::test::rectangle;
+using fc::test::shifted;
 
 namespace {
-
-Ring rect(double x0, double y0, double x1, double y1) {
-    return {{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}};
-}
 
 std::map<EdgeKind, int> countKinds(const CornerGraph& g) {
     std::map<EdgeKind, int> n;
@@ -23,8 +22,8 @@ std::map<EdgeKind, int> countKinds(const CornerGraph& g) {
 
 TEST(CornerGraph, SimplePlanShape) {
     Plan p;
-    p.boundary = rect(0, 0, 12, 8);
-    p.obstacles = {rect(5, 3, 7, 5)};
+    p.boundary = rectangle(0, 0, 12, 8);
+    p.obstacles = {rectangle(5, 3, 7, 5)};
     const Decomposition d = decompose(p, {});
     const CornerGraph g = buildCornerGraph(d);
     ASSERT_EQ(d.primaryCount(), 2);
@@ -41,7 +40,7 @@ TEST(CornerGraph, SimplePlanShape) {
 
 TEST(CornerGraph, ParityRuleAndCornerOffsets) {
     Plan p; // one 4 x 3 room: 4 stripes (even): LB-RB and LT-RT
-    p.boundary = rect(0, 0, 4, 3);
+    p.boundary = rectangle(0, 0, 4, 3);
     const CornerGraph even = buildCornerGraph(decompose(p, {}));
     ASSERT_EQ(even.cells.size(), 1u);
     const auto& n = even.cells[0].nodes;
@@ -54,7 +53,7 @@ TEST(CornerGraph, ParityRuleAndCornerOffsets) {
     EXPECT_EQ(c0.v, n[2]);                       // LB-RB
     EXPECT_NEAR(c0.length, 4 * 2 + 3 * 1, 1e-4); // traced borders keep a tiny margin
 
-    p.boundary = rect(0, 0, 5, 3); // 5 stripes (odd): LB-RT and LT-RB
+    p.boundary = rectangle(0, 0, 5, 3); // 5 stripes (odd): LB-RT and LT-RB
     const CornerGraph odd = buildCornerGraph(decompose(p, {}));
     const auto& m = odd.cells[0].nodes;
     const GraphEdge& o0 = odd.edges[odd.cells[0].coverageEdges[0]];
@@ -69,7 +68,7 @@ TEST(CornerGraph, ParityRuleAndCornerOffsets) {
 TEST(CornerGraph, AllEdgeGeometryIsCollisionFree) {
     Plan p;
     p.boundary = {{20, 14}, {20, 3}, {15, 3}, {15, 0}, {0, 0}, {0, 10}, {4, 10}, {4, 14}};
-    p.obstacles = {rect(7, 5, 13, 8), {{16, 8}, {17.5, 9.5}, {16, 11}, {14.5, 9.5}}};
+    p.obstacles = {rectangle(7, 5, 13, 8), {{16, 8}, {17.5, 9.5}, {16, 11}, {14.5, 9.5}}};
     const Decomposition d = decompose(p, {});
     const CornerGraph g = buildCornerGraph(d);
     const SegmentIndex walls(d.freeSpace);
@@ -84,7 +83,7 @@ TEST(CornerGraph, DoorConnectsStackedRooms) {
     Plan p;
     p.boundary = {{0, 0}, {6, 0}, {6, 4},   {3.6, 4},   {3.6, 4.2}, {6, 4.2},
                   {6, 8}, {0, 8}, {0, 4.2}, {2.4, 4.2}, {2.4, 4},   {0, 4}};
-    p.rooms = {{"South", rect(0, 0, 6, 4)}, {"North", rect(0, 4.2, 6, 8)}};
+    p.rooms = {{"South", rectangle(0, 0, 6, 4)}, {"North", rectangle(0, 4.2, 6, 8)}};
     const Decomposition d = decompose(p, {});
     const CornerGraph g = buildCornerGraph(d);
     bool crossesRooms = false;

@@ -1,3 +1,4 @@
+#include "TestPlans.h"
 #include "decomposition/Decomposition.h"
 #include "metrics/Metrics.h"
 #include "metrics/Raster.h"
@@ -11,12 +12,10 @@
 #include <string>
 
 using namespace fc;
+using fc::test::rectangle;
+using fc::test::shifted;
 
 namespace {
-
-Ring rectangle(double x0, double y0, double x1, double y1) {
-    return {{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}};
-}
 
 Cell rectangleCell(int id, int room, double x0, double y0, double x1, double y1, double width) {
     Cell cell;

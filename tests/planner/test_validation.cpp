@@ -1,5 +1,6 @@
 // Plan validation: every geometric defect is an InputError naming the ring and the place,
 // at small and at UTM-sized coordinates, fast on large plans.
+#include "TestPlans.h"
 #include "formats/PlanIO.h"
 #include "model/Validation.h"
 
@@ -11,6 +12,8 @@
 #include <vector>
 
 using namespace fc;
+using fc::test::rectangle;
+using fc::test::shifted;
 namespace fs = std::filesystem;
 
 namespace {
@@ -18,22 +21,6 @@ namespace {
 const std::string kPlansDir = FC_PLANS_DIR;
 const std::string kDataDir = FC_TEST_DATA_DIR;
 const Vec2 kUtmOffset{500000.0, 5000000.0};
-
-Ring rectangle(double x0, double y0, double x1, double y1) {
-    return {{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}};
-}
-
-Plan shifted(Plan plan, Vec2 offset) {
-    for (Vec2& p : plan.boundary)
-        p = p + offset;
-    for (Ring& obstacle : plan.obstacles)
-        for (Vec2& p : obstacle)
-            p = p + offset;
-    for (Room& room : plan.rooms)
-        for (Vec2& p : room.outline)
-            p = p + offset;
-    return plan;
-}
 
 std::string validationError(const Plan& plan, const RobotProfile& robot = {}) {
     try {
