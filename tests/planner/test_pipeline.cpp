@@ -5,9 +5,9 @@
 #include "model/SyntheticPlans.h"
 #include "pipeline/Planner.h"
 
-#include <gtest/gtest.h>
 #include <algorithm>
 #include <cmath>
+#include <gtest/gtest.h>
 #include <string>
 
 using namespace fc;
