@@ -260,10 +260,22 @@ Decomposition decompose(const Plan& plan, const DecompositionOptions& options) {
     for (const RawAdjacency& a : adj) {
         if (a.kind != Adjacency::Kind::AlongSweep)
             continue;
-        for (int c : {a.first, a.second})
-            for (double x : {a.x0, a.x1})
-                if (x > raw[c].x0 + 1e-9 * extent && x < raw[c].x1 - 1e-9 * extent)
-                    splits[c].push_back(x);
+        for (int c : {a.first, a.second}) {
+            // Snap to the nearest midpoint of the cell's own stripe grid so that the split
+            // adds no stripe (a door column would otherwise get two stripes 0.2 m apart).
+            const std::vector<double> grid = stripePositions(raw[c].x0, raw[c].x1, w);
+            for (double x : {a.x0, a.x1}) {
+                double best = x, bestGap = INFINITY;
+                for (size_t k = 1; k < grid.size(); ++k) {
+                    const double mid = 0.5 * (grid[k - 1] + grid[k]);
+                    if (std::abs(mid - x) < bestGap)
+                        bestGap = std::abs(mid - x), best = mid;
+                }
+                if (grid.size() >= 2 && best > raw[c].x0 + 1e-9 * extent &&
+                    best < raw[c].x1 - 1e-9 * extent)
+                    splits[c].push_back(best);
+            }
+        }
     }
     for (size_t i = 0; i < raw.size(); ++i) {
         const RawCell& whole = raw[i];
