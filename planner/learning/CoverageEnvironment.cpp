@@ -176,9 +176,8 @@ void CoverageEnvironment::computeTransits() {
             const bool cellCovered = e.cell < 0 || covered_[e.cell];
             if (e.kind == EdgeKind::Coverage && !cellCovered)
                 continue; // covering a cell is a step, never part of a transit
-            const double price = isOverlap(e, cellCovered)
-                                     ? options_.coverageOverlapScale * e.length
-                                     : e.length;
+            const double price =
+                isOverlap(e, cellCovered) ? options_.coverageOverlapScale * e.length : e.length;
             const int next = e.other(node);
             if (cost + price < transitCost_[next]) {
                 transitCost_[next] = cost + price;

@@ -2,10 +2,12 @@
 // corner graph of SPEC sect. 3, with the rewards of SPEC sect. 5.
 //
 // Choices (where the paper's pseudocode is loose or differs from the SPEC):
-// - Overlap scale: the pseudocode uses 2, SPEC sect. 5 says "x 3 where it overlaps"; the SPEC
-//   wins. Transit costs are exactly the SPEC sect. 3 graph cost (edgeCost, factor 3), so the
-//   summed cost rewards of an episode equal -graphCost x costScale / maxEdgeLength of its walk
-//   as computed by evaluateWalk for episodeQuery().
+// - Overlap scale: the pseudocode's coverage_overlap_scale = 2 is charged on top of the plain
+//   cost (1 + 2); SPEC sect. 5 says "x 3 where it overlaps". Both give 3; here the option is
+//   the total factor (default 3, per the SPEC). Transit costs are then exactly the SPEC
+//   sect. 3 graph cost, so the summed cost rewards of an episode equal
+//   -graphCost x costScale / maxEdgeLength of its walk as computed by evaluateWalk for
+//   episodeQuery() (with a non-default factor they differ from evaluateWalk by design).
 // - A transit never traverses the coverage edge of an uncovered cell (that would cover it);
 //   the chosen cell's coverage edge is then traversed at cost 0.
 // - Observation channel 1 marks the pixels of every node of a covered cell, so all three
@@ -23,7 +25,6 @@
 #include "graph/CornerGraph.h"
 #include "solvers/Solver.h"
 
-#include <cstdint>
 #include <random>
 #include <vector>
 
@@ -35,7 +36,7 @@ struct EnvironmentOptions {
     double primaryCellReward = 0.05;
     double transitionCellReward = 0.005;
     double costScale = 0.1;
-    double coverageOverlapScale = kOverlapFactor; // SPEC sect. 5 (the pseudocode says 2)
+    double coverageOverlapScale = kOverlapFactor; // total factor (pseudocode: 1 + 2)
     int maxSteps = 0;                             // <= 0: 2 x cell count + 10
     // "Improved" variant: reward = -(added graph cost) / maxEdgeLength x costScale, without the
     // per-cell bonuses; finalReward is still added at the goal.
@@ -43,13 +44,13 @@ struct EnvironmentOptions {
 };
 
 struct StepInfo {
-    bool valid = false;        // the action covered a cell
-    bool reachedGoal = false;  // all required cells covered and the robot at the end corner
-    bool truncated = false;    // ended by maxSteps
-    int coveredCell = -1;      // cell covered by this step, -1 when none
-    double graphCost = 0.0;    // graph cost added to the walk (transits, incl. the final one)
-    double costReward = 0.0;   // -graphCost / maxEdgeLength x costScale
-    double bonusReward = 0.0;  // cell rewards and finalReward
+    bool valid = false;       // the action covered a cell
+    bool reachedGoal = false; // all required cells covered and the robot at the end corner
+    bool truncated = false;   // ended by maxSteps
+    int coveredCell = -1;     // cell covered by this step, -1 when none
+    double graphCost = 0.0;   // graph cost added to the walk (transits, incl. the final one)
+    double costReward = 0.0;  // -graphCost / maxEdgeLength x costScale
+    double bonusReward = 0.0; // cell rewards and finalReward
 };
 
 struct StepResult {
