@@ -118,6 +118,9 @@ int commandPlan(const Arguments& args) {
     }
     for (const std::string& w : result.warnings)
         std::cerr << "floorcover-cli: warning: " << path << ": " << w << "\n";
+    if (request.sweep.automatic)
+        std::cerr << "floorcover-cli: note: " << path << ": sweep angle " << result.stripeAngleDeg
+                  << " degrees chosen (shortest path)\n";
     if (auto out = args.text("--out")) {
         PathExportInfo info;
         info.solver = result.solution.solver;
