@@ -1,0 +1,239 @@
+#include "learning/torch/DqnAgent.h"
+
+#include "learning/torch/DqnNetwork.h"
+#include "learning/torch/DqnTargets.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+#include <string>
+
+namespace fc {
+
+namespace {
+
+// One intra-op thread: reproducible results, and Debian's generic BLAS gains nothing from
+// more. The OpenMP setting is per calling thread, so every entry point checks it (training
+// runs on worker threads).
+void useOneThread() {
+    if (at::get_num_threads() != 1)
+        at::set_num_threads(1);
+}
+
+int uniformChoice(const std::vector<char>& mask, int count, bool masked, std::mt19937_64& rng) {
+    std::vector<int> choices;
+    if (masked)
+        for (int a = 0; a < count; ++a)
+            if (mask[static_cast<std::size_t>(a)])
+                choices.push_back(a);
+    if (choices.empty()) {
+        std::uniform_int_distribution<int> pick(0, count - 1);
+        return pick(rng);
+    }
+    std::uniform_int_distribution<std::size_t> pick(0, choices.size() - 1);
+    return choices[pick(rng)];
+}
+
+} // namespace
+
+struct DqnAgent::Impl {
+    QNetwork online;
+    QNetwork target;
+    torch::optim::Adam optimizer;
+
+    Impl(int imageSize, int actionCount, const DqnHyperParameters& params)
+        : online(imageSize, actionCount, params), target(imageSize, actionCount, params),
+          optimizer(online->parameters(), torch::optim::AdamOptions(params.learningRate)) {
+        target->eval();
+        for (auto& p : target->parameters())
+            p.set_requires_grad(false);
+        copyWeights(online, target);
+    }
+};
+
+DqnAgent::DqnAgent(int imageSize, int actionCount, DqnHyperParameters params)
+    : imageSize_(imageSize), actionCount_(actionCount), params_(params),
+      memory_(static_cast<std::size_t>(params.replayCapacity > 0 ? params.replayCapacity : 1)),
+      rng_(params.seed) {
+    if (params.replayCapacity <= 0 || params.batchSize <= 0 || params.targetSyncInterval <= 0 ||
+        params.trainInterval <= 0)
+        throw std::invalid_argument("DqnAgent: capacity, batch and intervals must be positive");
+    useOneThread();
+    torch::manual_seed(params.seed);
+    impl_ = std::make_unique<Impl>(imageSize, actionCount, params_);
+}
+
+DqnAgent::~DqnAgent() = default;
+DqnAgent::DqnAgent(DqnAgent&&) noexcept = default;
+DqnAgent& DqnAgent::operator=(DqnAgent&&) noexcept = default;
+
+std::vector<float> DqnAgent::qValues(const std::vector<float>& observations, int batch) const {
+    return evaluate(false, observations, batch);
+}
+
+std::vector<float> DqnAgent::targetQValues(const std::vector<float>& observations,
+                                           int batch) const {
+    useOneThread();
+    return evaluate(true, observations, batch);
+}
+
+std::vector<float> DqnAgent::evaluate(bool target, const std::vector<float>& observations,
+                                      int batch) const {
+    const std::int64_t pixels = 3LL * imageSize_ * imageSize_;
+    if (batch <= 0 || static_cast<std::int64_t>(observations.size()) != batch * pixels)
+        throw std::invalid_argument("DqnAgent::qValues: observation size mismatch");
+    torch::NoGradGuard noGrad;
+    const torch::Tensor input =
+        torch::from_blob(const_cast<float*>(observations.data()),
+                         {batch, 3, imageSize_, imageSize_}, torch::kFloat32);
+    QNetwork& network = target ? impl_->target : impl_->online;
+    const torch::Tensor q = network->forward(input).contiguous();
+    return std::vector<float>(q.data_ptr<float>(), q.data_ptr<float>() + q.numel());
+}
+
+int DqnAgent::greedyAction(const std::vector<float>& observation,
+                           const std::vector<char>& mask) const {
+    const std::vector<float> q = qValues(observation, 1);
+    int best = -1;
+    if (params_.maskActions && static_cast<int>(mask.size()) == actionCount_)
+        best = maskedArgmax(q.data(), mask.data(), actionCount_);
+    if (best < 0)
+        best = maskedArgmax(q.data(), nullptr, actionCount_);
+    return best;
+}
+
+int DqnAgent::act(const std::vector<float>& observation, const std::vector<char>& mask,
+                  double epsilon, std::mt19937_64& rng) const {
+    if (params_.maskActions && static_cast<int>(mask.size()) != actionCount_)
+        throw std::invalid_argument("DqnAgent::act: mask size differs from the action count");
+    std::uniform_real_distribution<double> coin(0.0, 1.0);
+    if (coin(rng) < epsilon)
+        return uniformChoice(mask, actionCount_, params_.maskActions, rng);
+    return greedyAction(observation, mask);
+}
+
+void DqnAgent::remember(Transition transition) {
+    const std::size_t pixels = 3U * static_cast<std::size_t>(imageSize_ * imageSize_);
+    if (transition.observation.size() != pixels || transition.nextObservation.size() != pixels ||
+        transition.nextMask.size() != static_cast<std::size_t>(actionCount_) ||
+        transition.action < 0 || transition.action >= actionCount_)
+        throw std::invalid_argument("DqnAgent::remember: transition does not fit the agent");
+    memory_.push(std::move(transition));
+}
+
+double DqnAgent::trainStep() {
+    useOneThread();
+    const auto batch = static_cast<std::size_t>(params_.batchSize);
+    const std::vector<std::size_t> indices = memory_.sample(batch, rng_);
+    const std::size_t pixels = 3U * static_cast<std::size_t>(imageSize_ * imageSize_);
+    const auto actions = static_cast<std::size_t>(actionCount_);
+
+    std::vector<float> observations(batch * pixels);
+    std::vector<float> nextObservations(batch * pixels);
+    std::vector<std::int64_t> chosen(batch);
+    DoubleDqnBatch targetsInput;
+    targetsInput.actionCount = actionCount_;
+    targetsInput.rewards.resize(batch);
+    targetsInput.dones.resize(batch);
+    targetsInput.nextMask.resize(batch * actions);
+    for (std::size_t i = 0; i < batch; ++i) {
+        const Transition& t = memory_.at(indices[i]);
+        std::copy(t.observation.begin(), t.observation.end(), observations.begin() + i * pixels);
+        std::copy(t.nextObservation.begin(), t.nextObservation.end(),
+                  nextObservations.begin() + i * pixels);
+        std::copy(t.nextMask.begin(), t.nextMask.end(),
+                  targetsInput.nextMask.begin() + i * actions);
+        chosen[i] = t.action;
+        targetsInput.rewards[i] = t.reward;
+        targetsInput.dones[i] = t.done ? 1.0f : 0.0f;
+    }
+
+    const auto b = static_cast<std::int64_t>(batch);
+    const torch::Tensor next =
+        torch::from_blob(nextObservations.data(), {b, 3, imageSize_, imageSize_}, torch::kFloat32);
+    {
+        torch::NoGradGuard noGrad;
+        const torch::Tensor onlineQ = impl_->online->forward(next).contiguous();
+        const torch::Tensor targetQ = impl_->target->forward(next).contiguous();
+        targetsInput.nextOnlineQ.assign(onlineQ.data_ptr<float>(),
+                                        onlineQ.data_ptr<float>() + onlineQ.numel());
+        targetsInput.nextTargetQ.assign(targetQ.data_ptr<float>(),
+                                        targetQ.data_ptr<float>() + targetQ.numel());
+    }
+    std::vector<float> y =
+        doubleDqnTargets(targetsInput, static_cast<float>(params_.gamma), params_.maskTargetArgmax);
+
+    const torch::Tensor input =
+        torch::from_blob(observations.data(), {b, 3, imageSize_, imageSize_}, torch::kFloat32);
+    const torch::Tensor actionIndex = torch::from_blob(chosen.data(), {b, 1}, torch::kInt64);
+    const torch::Tensor targets = torch::from_blob(y.data(), {b}, torch::kFloat32);
+
+    impl_->online->train();
+    const torch::Tensor q = impl_->online->forward(input).gather(1, actionIndex).squeeze(1);
+    const torch::Tensor loss =
+        torch::huber_loss(q, targets, at::Reduction::Mean, params_.huberDelta);
+    impl_->optimizer.zero_grad();
+    loss.backward();
+    if (params_.gradientClipNorm > 0.0)
+        torch::nn::utils::clip_grad_norm_(impl_->online->parameters(), params_.gradientClipNorm);
+    impl_->optimizer.step();
+    ++trainSteps_;
+    return loss.item<double>();
+}
+
+void DqnAgent::syncTarget() {
+    copyWeights(impl_->online, impl_->target);
+}
+
+double DqnAgent::epsilon() const {
+    if (params_.epsilonDecaySteps <= 0 || steps_ >= params_.epsilonDecaySteps)
+        return params_.epsilonEnd;
+    const double fraction =
+        static_cast<double>(steps_) / static_cast<double>(params_.epsilonDecaySteps);
+    return params_.epsilonStart + fraction * (params_.epsilonEnd - params_.epsilonStart);
+}
+
+double DqnAgent::observe(Transition transition) {
+    remember(std::move(transition));
+    ++steps_;
+    double loss = std::numeric_limits<double>::quiet_NaN();
+    if (steps_ >= params_.learningStarts && steps_ % params_.trainInterval == 0)
+        loss = trainStep();
+    if (steps_ % params_.targetSyncInterval == 0)
+        syncTarget();
+    return loss;
+}
+
+void DqnAgent::saveWeights(std::ostream& out) const {
+    torch::serialize::OutputArchive archive;
+    impl_->online->save(archive);
+    archive.save_to(out);
+}
+
+void DqnAgent::loadWeights(std::istream& in) {
+    // InputArchive replaces tensors of any shape: load into a scratch network, check the shapes,
+    // then copy, so that a model of another architecture leaves this agent untouched.
+    QNetwork loaded(imageSize_, actionCount_, params_);
+    try {
+        torch::serialize::InputArchive archive;
+        archive.load_from(in);
+        loaded->load(archive);
+    } catch (const c10::Error& e) {
+        throw std::runtime_error(std::string("DqnAgent: cannot load weights: ") +
+                                 e.what_without_backtrace());
+    }
+    const auto expected = impl_->online->named_parameters(true);
+    const auto actual = loaded->named_parameters(true);
+    if (expected.size() != actual.size())
+        throw std::runtime_error("DqnAgent: weights of another architecture");
+    for (const auto& item : expected) {
+        const torch::Tensor* other = actual.find(item.key());
+        if (other == nullptr || other->sizes() != item.value().sizes())
+            throw std::runtime_error("DqnAgent: weights of another architecture");
+    }
+    copyWeights(loaded, impl_->online);
+    syncTarget();
+}
+
+} // namespace fc

@@ -1,0 +1,112 @@
+// Double-DQN agent (SPEC sect. 5; van Hasselt et al. 2016) over the CoverageEnvironment's
+// 3 x SIZE x SIZE observations, one action per corner-graph node. LibTorch stays behind a
+// pimpl: this header exposes no torch types.
+//
+// Faithful defaults (the paper's network and optimiser): 3 convolution + 2 dense layers, Adam
+// with lr 2.5e-4, gamma 0.99, batch 32, replay 50,000, epsilon 1.0 -> 0.05 linearly, target
+// sync every 1,000 steps, learning after 500 steps. Improvements are switches: action masking
+// when acting and in the Double-DQN argmax (on by default), gradient-norm clipping (off).
+#pragma once
+
+#include "learning/torch/ReplayMemory.h"
+
+#include <cstdint>
+#include <iosfwd>
+#include <memory>
+#include <random>
+#include <vector>
+
+namespace fc {
+
+struct DqnHyperParameters {
+    // Network: conv 3 -> conv1 -> conv2 -> conv3 (3x3, padding 1, ReLU), dense -> hidden ->
+    // actions.
+    int conv1Channels = 32;
+    int conv2Channels = 64;
+    int conv3Channels = 64;
+    int hiddenUnits = 256;
+    // Learning.
+    double learningRate = 2.5e-4;
+    double gamma = 0.99;
+    int batchSize = 32;
+    int replayCapacity = 50'000;
+    double huberDelta = 1.0;
+    double gradientClipNorm = 0.0; // <= 0: no clipping
+    // Exploration: linear from epsilonStart to epsilonEnd over epsilonDecaySteps steps.
+    double epsilonStart = 1.0;
+    double epsilonEnd = 0.05;
+    long epsilonDecaySteps = 100'000;
+    // Schedule (in environment steps).
+    int targetSyncInterval = 1'000;
+    int learningStarts = 500;
+    int trainInterval = 1; // one gradient step every trainInterval environment steps
+    std::uint64_t seed = 1;
+    // Improvements over the paper.
+    bool maskActions = true;      // act only among valid actions
+    bool maskTargetArgmax = true; // Double-DQN argmax only among valid next actions
+};
+
+class DqnAgent {
+public:
+    // Seeds torch (global generator) and the agent's own generator from params.seed. Every
+    // torch call runs with one intra-op thread (at::set_num_threads(1) on the calling thread).
+    DqnAgent(int imageSize, int actionCount, DqnHyperParameters params = {});
+    ~DqnAgent();
+    DqnAgent(DqnAgent&&) noexcept;
+    DqnAgent& operator=(DqnAgent&&) noexcept;
+    DqnAgent(const DqnAgent&) = delete;
+    DqnAgent& operator=(const DqnAgent&) = delete;
+
+    // Epsilon-greedy: with probability epsilon a uniformly random action (a valid one when
+    // masking), otherwise the (masked) argmax of the online network. The mask has one entry
+    // per action; when masking and no action is valid, the unmasked choice is made.
+    int act(const std::vector<float>& observation, const std::vector<char>& mask, double epsilon,
+            std::mt19937_64& rng) const;
+    // Greedy action (epsilon 0).
+    int greedyAction(const std::vector<float>& observation, const std::vector<char>& mask) const;
+
+    // Online Q values for `batch` observations laid out back to back: batch x actionCount.
+    std::vector<float> qValues(const std::vector<float>& observations, int batch) const;
+    // The same from the target network.
+    std::vector<float> targetQValues(const std::vector<float>& observations, int batch) const;
+
+    void remember(Transition transition);
+    // One Double-DQN gradient step on a batch sampled from the replay memory; returns the Huber
+    // loss. Throws std::logic_error when the memory is empty.
+    double trainStep();
+    // Copies the online network's parameters and buffers into the target network.
+    void syncTarget();
+
+    // The whole schedule for one environment step: remember the transition, count the step,
+    // train when due (after learningStarts, every trainInterval steps, returning the loss),
+    // sync the target every targetSyncInterval steps. Returns NaN when no training happened.
+    double observe(Transition transition);
+    double epsilon() const; // at the current step count
+    long stepCount() const { return steps_; }
+    long trainStepCount() const { return trainSteps_; }
+
+    // Online network weights (torch::save format) to/from a stream; loading also syncs the
+    // target. Throws std::runtime_error on a stream that does not fit this architecture.
+    void saveWeights(std::ostream& out) const;
+    void loadWeights(std::istream& in);
+
+    int imageSize() const { return imageSize_; }
+    int actionCount() const { return actionCount_; }
+    const DqnHyperParameters& parameters() const { return params_; }
+    const ReplayMemory& memory() const { return memory_; }
+
+private:
+    struct Impl;
+    std::vector<float> evaluate(bool target, const std::vector<float>& observations,
+                                int batch) const;
+    std::unique_ptr<Impl> impl_;
+    int imageSize_ = 0;
+    int actionCount_ = 0;
+    DqnHyperParameters params_;
+    ReplayMemory memory_;
+    std::mt19937_64 rng_; // replay sampling
+    long steps_ = 0;
+    long trainSteps_ = 0;
+};
+
+} // namespace fc
