@@ -1,5 +1,6 @@
 // The Double-DQN agent (SPEC sect. 5): the target arithmetic by hand, the network's output
 // shape on a real corner graph, masked acting, and a short reproducible training run.
+#include "../planner/TestGraphs.h"
 #include "decomposition/Decomposition.h"
 #include "graph/CornerGraph.h"
 #include "learning/CoverageEnvironment.h"
@@ -14,68 +15,9 @@
 #include <thread>
 
 using namespace fc;
+using namespace fc::test;
 
 namespace {
-
-int addEdge(CornerGraph& g, int u, int v, EdgeKind kind, int cell, bool parallel, double length) {
-    GraphEdge e;
-    e.u = u;
-    e.v = v;
-    e.kind = kind;
-    e.cell = cell;
-    e.parallel = parallel;
-    e.length = length;
-    return g.addEdge(e);
-}
-
-int newCell(CornerGraph& g, CellKind kind) {
-    GraphCell cell;
-    cell.id = static_cast<int>(g.cells.size());
-    cell.kind = kind;
-    g.cells.push_back(cell);
-    return cell.id;
-}
-
-void primary(CornerGraph& g, double x0, double x1, double y0, double y1, int stripes) {
-    const int cell = newCell(g, CellKind::Primary);
-    const int lb = g.addNode(cell, CornerKind::LB, {x0, y0});
-    const int lt = g.addNode(cell, CornerKind::LT, {x0, y1});
-    const int rb = g.addNode(cell, CornerKind::RB, {x1, y0});
-    const int rt = g.addNode(cell, CornerKind::RT, {x1, y1});
-    const double sweep = stripes * (y1 - y0) + (x1 - x0);
-    const bool even = stripes % 2 == 0;
-    addEdge(g, lb, even ? rb : rt, EdgeKind::Coverage, cell, false, sweep);
-    addEdge(g, lt, even ? rt : rb, EdgeKind::Coverage, cell, false, sweep);
-    addEdge(g, lb, rb, EdgeKind::Contour, cell, false, x1 - x0);
-    addEdge(g, lt, rt, EdgeKind::Contour, cell, false, x1 - x0);
-    addEdge(g, lb, lt, EdgeKind::Contour, cell, true, y1 - y0);
-    addEdge(g, rb, rt, EdgeKind::Contour, cell, true, y1 - y0);
-}
-
-void transition(CornerGraph& g, double x, double y0, double y1) {
-    const int cell = newCell(g, CellKind::Transition);
-    const int bottom = g.addNode(cell, CornerKind::Bottom, {x, y0});
-    const int top = g.addNode(cell, CornerKind::Top, {x, y1});
-    addEdge(g, bottom, top, EdgeKind::Coverage, cell, false, y1 - y0);
-}
-
-void join(CornerGraph& g, const std::vector<int>& a, const std::vector<int>& b) {
-    for (int u : a)
-        for (int v : b)
-            addEdge(g, u, v, EdgeKind::Inter, -1, false,
-                    distance(g.nodes[u].position, g.nodes[v].position));
-}
-
-// The 3-cell graph of test_environment.cpp: primary, transition, primary; 10 nodes.
-CornerGraph threeCells() {
-    CornerGraph g;
-    primary(g, 0, 2, 0, 2, 2);
-    transition(g, 3, 0, 2);
-    primary(g, 4, 7, 0, 2, 3);
-    join(g, {2, 3}, {4, 5});
-    join(g, {4, 5}, {6, 7});
-    return g;
-}
 
 // Small network and schedule so that the tests run in seconds.
 DqnHyperParameters smallParameters(std::uint64_t seed) {
