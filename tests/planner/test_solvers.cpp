@@ -1,5 +1,6 @@
 // Graph solvers (SPEC sect. 3-4) on hand-built corner graphs, checked against hand-computed
 // costs and an independent brute force over cell orders and cover options.
+#include "TestGraphs.h"
 #include "solvers/OrderEvaluator.h"
 #include "solvers/Solver.h"
 
@@ -68,14 +69,7 @@ public:
     void joinAcross(int left, int right) { join(left, 1, right, 0); }
 
     int edge(int u, int v, EdgeKind kind, int cell, bool parallel, double length) {
-        GraphEdge e;
-        e.u = u;
-        e.v = v;
-        e.kind = kind;
-        e.cell = cell;
-        e.parallel = parallel;
-        e.length = length;
-        return graph.addEdge(e);
+        return fc::test::addEdge(graph, u, v, kind, cell, parallel, length);
     }
 
 private:
