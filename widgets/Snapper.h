@@ -1,0 +1,22 @@
+// Snapping of cursor positions: to the vertices of the plan within a few screen pixels,
+// otherwise to the grid shown on the canvas.
+#pragma once
+
+#include <QPointF>
+
+namespace fc::ui {
+
+class Document;
+
+class Snapper {
+public:
+    bool snapToGrid = true;
+    bool snapToVertices = true;
+    double vertexTolerancePixels = 10.0;
+
+    // gridStep: the grid spacing in metres; metresPerPixel: the view's scale.
+    QPointF snap(QPointF position, const Document* document, double gridStep,
+                 double metresPerPixel) const;
+};
+
+} // namespace fc::ui
