@@ -28,7 +28,7 @@ constexpr double kMinGridPixels = 16.0; // minor grid lines closer than this are
 } // namespace
 
 CanvasView::CanvasView(QWidget* parent) : QGraphicsView(parent) {
-    setTransformationAnchor(QGraphicsView::AnchorUnderMouse);
+    setTransformationAnchor(QGraphicsView::AnchorViewCenter); // the wheel anchors itself
     setResizeAnchor(QGraphicsView::AnchorViewCenter);
     setRenderHint(QPainter::Antialiasing);
     setViewportUpdateMode(QGraphicsView::FullViewportUpdate); // the grid moves with panning
@@ -78,7 +78,16 @@ void CanvasView::wheelEvent(QWheelEvent* event) {
     const int delta = event->angleDelta().y();
     if (delta == 0)
         return;
+    // Keep the plan point under the cursor where it is (QGraphicsView's AnchorUnderMouse
+    // needs the view's own mouse tracking, which the tools replace).
+    const QPoint cursor = event->position().toPoint();
+    const QPointF anchor = mapToScene(cursor);
+    setTransformationAnchor(QGraphicsView::NoAnchor);
     zoomBy(std::pow(1.0015, delta));
+    setTransformationAnchor(QGraphicsView::AnchorViewCenter);
+    const QPoint drift = mapFromScene(anchor) - cursor;
+    horizontalScrollBar()->setValue(horizontalScrollBar()->value() + drift.x());
+    verticalScrollBar()->setValue(verticalScrollBar()->value() + drift.y());
     event->accept();
 }
 

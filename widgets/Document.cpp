@@ -13,6 +13,9 @@ namespace fc::ui {
 namespace {
 
 const char* const kFloorRoom = "Floor"; // the planner's name for a plan without rooms
+// Command ids for QUndoStack merging (ProjectChangeCommand::id()).
+constexpr int kSweepMergeId = 1;
+constexpr int kRobotMergeId = 10; // + the field's index
 
 std::vector<std::string>::iterator findName(std::vector<std::string>& names,
                                             const std::string& name) {
@@ -275,9 +278,18 @@ bool Document::setRobot(const RobotProfile& robot) {
     } catch (const InputError& e) {
         return reject(fromStd(e.what()));
     }
+    // Steps of one spin box merge into one command; a change of another field does not.
+    const RobotProfile& old = project_.robot;
+    const double RobotProfile::*fields[] = {
+        &RobotProfile::robotDiameter, &RobotProfile::cleaningDiameter, &RobotProfile::coverageWidth,
+        &RobotProfile::speed, &RobotProfile::turnTime};
+    int mergeId = -1;
+    for (int i = 0; i < 5; ++i)
+        if (old.*fields[i] != robot.*fields[i])
+            mergeId = mergeId == -1 ? kRobotMergeId + i : -2;
     Project changed = project_;
     changed.robot = robot;
-    return pushChange(changed, RobotChange, tr("Change robot profile"), 1);
+    return pushChange(changed, RobotChange, tr("Change robot profile"), std::max(mergeId, -1));
 }
 
 bool Document::setSweep(const SweepOptions& sweep) {
@@ -285,7 +297,7 @@ bool Document::setSweep(const SweepOptions& sweep) {
         return reject(tr("The sweep angle must be a finite number of degrees."));
     Project changed = project_;
     changed.sweep = sweep;
-    return pushChange(changed, SweepChange, tr("Change sweep angle"), 2);
+    return pushChange(changed, SweepChange, tr("Change sweep angle"), kSweepMergeId);
 }
 
 bool Document::setSolver(const QString& solver) {

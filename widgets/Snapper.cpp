@@ -43,4 +43,17 @@ QPointF Snapper::snap(QPointF position, const Document* document, double gridSte
     return position;
 }
 
+QPointF snapToRightAngle(QPointF position, QPointF last, std::optional<QPointF> previous) {
+    Vec2 along(1, 0);
+    if (previous && *previous != last) {
+        const Vec2 d = toVec2(last - *previous);
+        along = d * (1.0 / norm(d));
+    }
+    const Vec2 across(-along.y, along.x);
+    const Vec2 offset = toVec2(position - last);
+    const Vec2 onAlong = along * dot(offset, along), onAcross = across * dot(offset, across);
+    // Keep the larger component: the cursor is closer to that line.
+    return last + toQt(norm(onAlong) >= norm(onAcross) ? onAlong : onAcross);
+}
+
 } // namespace fc::ui

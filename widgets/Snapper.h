@@ -3,6 +3,7 @@
 #pragma once
 
 #include <QPointF>
+#include <optional>
 
 namespace fc::ui {
 
@@ -18,5 +19,10 @@ public:
     QPointF snap(QPointF position, const Document* document, double gridStep,
                  double metresPerPixel) const;
 };
+
+// The point nearest `position` on a line through `last` that is parallel or perpendicular
+// to the segment previous -> last (axis-parallel when there is no previous segment):
+// drawing with right angles.
+QPointF snapToRightAngle(QPointF position, QPointF last, std::optional<QPointF> previous);
 
 } // namespace fc::ui

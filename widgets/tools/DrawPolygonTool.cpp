@@ -3,6 +3,7 @@
 #include "Conversions.h"
 #include "PlanScene.h"
 #include "SceneStyle.h"
+#include "Snapper.h"
 
 #include <QGraphicsPathItem>
 #include <QKeyEvent>
@@ -60,7 +61,7 @@ DrawPolygonTool::DrawPolygonTool(PolygonRole role, QObject* parent)
 
 QString DrawPolygonTool::usageHint() const {
     return tr("%1: click vertices and click the first one to close, or drag a rectangle. "
-              "Backspace removes a vertex, Esc cancels.")
+              "Shift keeps right angles, Backspace removes a vertex, Esc cancels.")
         .arg(name());
 }
 
@@ -101,8 +102,16 @@ void DrawPolygonTool::mousePressed(const ToolMouseEvent& event) {
     }
 }
 
+QPointF DrawPolygonTool::target(const ToolMouseEvent& event) const {
+    if (!(event.modifiers & Qt::ShiftModifier) || points_.isEmpty())
+        return event.snapped;
+    const std::optional<QPointF> previous =
+        points_.size() >= 2 ? std::optional<QPointF>(points_[points_.size() - 2]) : std::nullopt;
+    return snapToRightAngle(event.position, points_.last(), previous);
+}
+
 void DrawPolygonTool::mouseMoved(const ToolMouseEvent& event) {
-    cursor_ = event.snapped;
+    cursor_ = target(event);
     hasCursor_ = true;
     metresPerPixel_ = event.metresPerPixel;
     if (pressed_ && (event.buttons & Qt::LeftButton) &&
@@ -127,8 +136,9 @@ void DrawPolygonTool::mouseReleased(const ToolMouseEvent& event) {
         finish(points_);
         return;
     }
-    if (points_.isEmpty() || points_.last() != event.snapped)
-        points_ << event.snapped;
+    const QPointF point = target(event);
+    if (points_.isEmpty() || points_.last() != point)
+        points_ << point;
     updatePreview();
 }
 

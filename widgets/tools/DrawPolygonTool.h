@@ -1,6 +1,7 @@
 // Draws a boundary, obstacle or room: click vertices and close by clicking the first one
-// (or Enter), or drag for a rectangle. Backspace removes the last vertex, Escape cancels.
-// A polygon the planner's validation refuses stays on the canvas in red with the message.
+// (or Enter), or drag for a rectangle; Shift keeps the new edge at a right angle to the last.
+// Backspace removes the last vertex, Escape cancels. A polygon the planner's validation refuses
+// stays on the canvas in red with the message.
 #pragma once
 
 #include "AbstractTool.h"
@@ -29,6 +30,8 @@ public:
     QPolygonF sketch() const { return points_; }
 
 private:
+    // Where a click puts the next vertex: snapped, and with Shift at a right angle.
+    QPointF target(const ToolMouseEvent& event) const;
     void finish(const QPolygonF& polygon);
     void updatePreview();
     void clearSketch();

@@ -57,6 +57,8 @@ void EditVerticesTool::deactivate() {
     handles_ = nullptr;
     delete dragPreview_;
     dragPreview_ = nullptr;
+    delete hover_;
+    hover_ = nullptr;
     dragging_ = false;
     selected_.reset();
     AbstractTool::deactivate();
@@ -92,19 +94,33 @@ void EditVerticesTool::rebuildHandles() {
     handles_ = new QGraphicsItemGroup;
     handles_->setZValue(z::Tool);
     scene()->addItem(handles_);
+    if (!selected_)
+        return;
+    // Handles on the selected polygon only, as in Tiled: a whole plan of handles hides it.
+    const Ring& ring = document()->ring(*selected_);
+    for (size_t i = 0; i < ring.size(); ++i)
+        addHandle(handles_, toQt(ring[i]), static_cast<int>(i) == selectedVertex_);
+}
+
+QGraphicsItem* EditVerticesTool::addHandle(QGraphicsItem* parent, QPointF position, bool current) {
     const QColor colour = style::palette().color(QPalette::Highlight);
-    for (const PolygonRef& ref : polygonsByPriority(*document(), std::nullopt)) {
-        const Ring& ring = document()->ring(ref);
-        for (size_t i = 0; i < ring.size(); ++i) {
-            const bool current = selected_ && *selected_ == ref && int(i) == selectedVertex_;
-            const double half = current ? 5.0 : 3.5; // pixels
-            auto* handle = new QGraphicsRectItem(-half, -half, 2 * half, 2 * half, handles_);
-            handle->setFlag(QGraphicsItem::ItemIgnoresTransformations);
-            handle->setPos(toQt(ring[i]));
-            handle->setPen(QPen(colour, 1));
-            handle->setBrush(current ? colour : style::palette().color(QPalette::Base));
-        }
-    }
+    const double half = current ? 5.0 : 3.5; // pixels
+    auto* handle = new QGraphicsRectItem(-half, -half, 2 * half, 2 * half, parent);
+    handle->setFlag(QGraphicsItem::ItemIgnoresTransformations);
+    handle->setPos(position);
+    handle->setPen(QPen(colour, 1));
+    handle->setBrush(current ? colour : style::palette().color(QPalette::Base));
+    handle->setZValue(z::Tool);
+    return handle;
+}
+
+void EditVerticesTool::showHover(std::optional<VertexRef> vertex) {
+    delete hover_;
+    hover_ = nullptr;
+    if (!vertex || !scene())
+        return;
+    hover_ = addHandle(nullptr, toQt(document()->ring(vertex->polygon)[vertex->index]), true);
+    scene()->addItem(hover_);
 }
 
 void EditVerticesTool::mousePressed(const ToolMouseEvent& event) {
@@ -120,6 +136,7 @@ void EditVerticesTool::mousePressed(const ToolMouseEvent& event) {
     if (event.button != Qt::LeftButton)
         return;
     if (vertex) {
+        showHover(std::nullopt);
         select(vertex->polygon, vertex->index);
         dragging_ = true;
         dragOrigin_ = event.position;
@@ -144,8 +161,12 @@ void EditVerticesTool::showDragPreview(QPointF position) {
 }
 
 void EditVerticesTool::mouseMoved(const ToolMouseEvent& event) {
-    if (dragging_ && selected_ && selectedVertex_ >= 0)
+    if (dragging_ && selected_ && selectedVertex_ >= 0) {
         showDragPreview(event.snapped);
+        return;
+    }
+    if (document())
+        showHover(vertexAt(event.position, kHitPixels * event.metresPerPixel));
 }
 
 void EditVerticesTool::endDrag() {

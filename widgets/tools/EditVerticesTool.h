@@ -8,6 +8,7 @@
 
 #include <optional>
 
+class QGraphicsItem;
 class QGraphicsItemGroup;
 class QGraphicsPathItem;
 
@@ -38,6 +39,8 @@ private:
     std::optional<VertexRef> vertexAt(QPointF point, double tolerance) const;
     void select(std::optional<PolygonRef> polygon, int vertex = -1);
     void rebuildHandles();
+    static QGraphicsItem* addHandle(QGraphicsItem* parent, QPointF position, bool current);
+    void showHover(std::optional<VertexRef> vertex);
     void showDragPreview(QPointF position);
     void endDrag();
 
@@ -47,6 +50,7 @@ private:
     QPointF dragOrigin_;
     QGraphicsItemGroup* handles_ = nullptr;
     QGraphicsPathItem* dragPreview_ = nullptr;
+    QGraphicsItem* hover_ = nullptr; // the vertex under the cursor
 };
 
 } // namespace fc::ui
