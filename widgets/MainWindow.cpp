@@ -3,6 +3,7 @@
 #include "CanvasView.h"
 #include "Document.h"
 #include "DocumentFiles.h"
+#include "LegendDock.h"
 #include "PlanScene.h"
 #include "PlanningController.h"
 #include "PlanningDock.h"
@@ -134,6 +135,10 @@ void MainWindow::createViewMenu() {
     }
     viewMenu->addSeparator();
     viewMenu->addAction(planningDock_->toggleViewAction());
+    legendDock_ = new LegendDock(overlayActions_, this);
+    addDockWidget(Qt::RightDockWidgetArea, legendDock_);
+    tabifyDockWidget(legendDock_, planningDock_); // the planning panel in front
+    viewMenu->addAction(legendDock_->toggleViewAction());
 }
 
 void MainWindow::createStatusBar() {

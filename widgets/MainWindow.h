@@ -18,6 +18,7 @@ namespace fc::ui {
 
 class CanvasView;
 class Document;
+class LegendDock;
 class PlanScene;
 class PlanningController;
 class PlanningDock;
@@ -35,6 +36,7 @@ public:
     ToolManager* toolManager() const { return tools_; }
     PlanningController* planningController() const { return planner_; }
     PlanningDock* planningDock() const { return planningDock_; }
+    LegendDock* legendDock() const { return legendDock_; }
     QAction* overlayAction(OverlayKind kind) const {
         return overlayActions_[static_cast<int>(kind)];
     }
@@ -86,6 +88,7 @@ private:
     PlanningController* planner_;
     ToolManager* tools_;
     PlanningDock* planningDock_;
+    LegendDock* legendDock_ = nullptr;
     QMenu* recentFilesMenu_ = nullptr;
     QLabel* coordinates_ = nullptr;
     QLabel* problem_ = nullptr;

@@ -52,6 +52,33 @@ QString overlayName(OverlayKind kind) {
     return QCoreApplication::translate("fc::ui::OverlayLayer", names[static_cast<int>(kind)]);
 }
 
+OverlayStyle overlayStyle(OverlayKind kind) {
+    switch (kind) {
+    case OverlayKind::PrimaryCells: // each room has its own hue; this is the first one
+        return {style::cosmeticPen(style::roomHue(0, 255), 1.0), style::roomHue(0, 90)};
+    case OverlayKind::TransitionCells: // hatched grey, distinct from primary cells
+        return {style::cosmeticPen(QColor(120, 120, 120), 1.0),
+                QBrush(QColor(110, 110, 110, 140), Qt::FDiagPattern)};
+    case OverlayKind::CriticalSlices:
+        return {style::cosmeticPen(QColor(200, 60, 160), 1.5, Qt::DashLine), Qt::NoBrush};
+    case OverlayKind::CornerNodes:
+        return {style::cosmeticPen(QColor(20, 20, 20), 1.0), QColor(250, 220, 40)};
+    case OverlayKind::CoverageEdges:
+        return {style::cosmeticPen(QColor(30, 150, 70), 1.5, Qt::DashLine), Qt::NoBrush};
+    case OverlayKind::ContourEdges:
+        return {style::cosmeticPen(QColor(230, 140, 20), 1.5), Qt::NoBrush};
+    case OverlayKind::InterEdges:
+        return {style::cosmeticPen(QColor(140, 60, 200), 1.0, Qt::DotLine), Qt::NoBrush};
+    case OverlayKind::Path:
+        return {style::cosmeticPen(QColor(210, 50, 30), 1.8), QColor(150, 20, 10)};
+    case OverlayKind::Overlaps: // blue like the paper's figures, see-through over the path
+        return {style::cosmeticPen(QColor(30, 90, 255, 170), 4.0), Qt::NoBrush};
+    case OverlayKind::Unreachable:
+        break;
+    }
+    return {style::cosmeticPen(QColor(220, 30, 30), 2.5), Qt::NoBrush};
+}
+
 bool overlayVisibleByDefault(OverlayKind kind) {
     return kind != OverlayKind::CoverageEdges && kind != OverlayKind::ContourEdges &&
            kind != OverlayKind::InterEdges;
@@ -131,8 +158,8 @@ void OverlayLayer::addCells(const PreparedPlan& prepared) {
                             text);
         } else {
             // Transition strips: hatched and outlined in grey, distinct from primary cells.
-            addPathItem(transition, path, style::cosmeticPen(QColor(120, 120, 120), 1.0),
-                        QBrush(QColor(110, 110, 110, 140), Qt::FDiagPattern));
+            const OverlayStyle look = overlayStyle(OverlayKind::TransitionCells);
+            addPathItem(transition, path, look.pen, look.brush);
         }
     }
 }
@@ -143,7 +170,7 @@ void OverlayLayer::addCriticalSlices(const PreparedPlan& prepared) {
     for (const CriticalSlice& slice : dec.criticalSlices)
         addPolyline(path, dec.frame.toWorld(Polyline{{slice.x, slice.y0}, {slice.x, slice.y1}}));
     addPathItem(groups_[static_cast<int>(OverlayKind::CriticalSlices)], path,
-                style::cosmeticPen(QColor(200, 60, 160), 1.5, Qt::DashLine));
+                overlayStyle(OverlayKind::CriticalSlices).pen);
 }
 
 void OverlayLayer::addGraph(const PreparedPlan& prepared) {
@@ -168,13 +195,14 @@ void OverlayLayer::addGraph(const PreparedPlan& prepared) {
     for (const GraphNode& node : graph.nodes)
         nodes.addEllipse(toQt(frame.toWorld(node.position)), radius, radius);
     addPathItem(groups_[static_cast<int>(OverlayKind::CoverageEdges)], coverage,
-                style::cosmeticPen(QColor(30, 150, 70), 1.5, Qt::DashLine));
+                overlayStyle(OverlayKind::CoverageEdges).pen);
     addPathItem(groups_[static_cast<int>(OverlayKind::ContourEdges)], contour,
-                style::cosmeticPen(QColor(230, 140, 20), 1.5));
+                overlayStyle(OverlayKind::ContourEdges).pen);
     addPathItem(groups_[static_cast<int>(OverlayKind::InterEdges)], inter,
-                style::cosmeticPen(QColor(140, 60, 200), 1.0, Qt::DotLine));
+                overlayStyle(OverlayKind::InterEdges).pen);
     addPathItem(groups_[static_cast<int>(OverlayKind::CornerNodes)], nodes,
-                style::cosmeticPen(QColor(20, 20, 20), 1.0), QColor(250, 220, 40));
+                overlayStyle(OverlayKind::CornerNodes).pen,
+                overlayStyle(OverlayKind::CornerNodes).brush);
 }
 
 void OverlayLayer::addUnreachable(const PreparedPlan& prepared) {
@@ -187,7 +215,7 @@ void OverlayLayer::addUnreachable(const PreparedPlan& prepared) {
         cross.lineTo(c + QPointF(size, size));
         cross.moveTo(c + QPointF(-size, size));
         cross.lineTo(c + QPointF(size, -size));
-        auto* item = addPathItem(group, cross, style::cosmeticPen(QColor(220, 30, 30), 2.5));
+        auto* item = addPathItem(group, cross, overlayStyle(OverlayKind::Unreachable).pen);
         item->setToolTip(
             tr("Unreachable: %1 (%2 m²)").arg(fromStd(area.reason)).arg(area.area, 0, 'f', 2));
     }
@@ -216,18 +244,20 @@ void OverlayLayer::addPath(const PlanResult& result) {
             sinceArrow = 0;
         }
     }
-    addPathItem(group, sweeping, style::cosmeticPen(QColor(210, 50, 30), 1.8));
-    addPathItem(group, travelling, style::cosmeticPen(QColor(210, 50, 30), 1.5, Qt::DashLine));
-    addPathItem(group, arrows, Qt::NoPen, QColor(150, 20, 10));
+    const QPen pathPen = overlayStyle(OverlayKind::Path).pen;
+    addPathItem(group, sweeping, pathPen);
+    QPen transitPen = pathPen; // travel between cells: dashed
+    transitPen.setStyle(Qt::DashLine);
+    addPathItem(group, travelling, transitPen);
+    addPathItem(group, arrows, Qt::NoPen, overlayStyle(OverlayKind::Path).brush);
 
     QPainterPath overlaps;
     for (const Segment& s : result.metrics.overlaps) {
         overlaps.moveTo(toQt(s.a));
         overlaps.lineTo(toQt(s.b));
     }
-    // Blue like the paper's figures; semi-transparent so the path stays visible below.
     addPathItem(groups_[static_cast<int>(OverlayKind::Overlaps)], overlaps,
-                style::cosmeticPen(QColor(30, 90, 255, 170), 4.0));
+                overlayStyle(OverlayKind::Overlaps).pen);
 }
 
 } // namespace fc::ui

@@ -3,7 +3,9 @@
 // new decomposition or plan; each kind is a group that the View menu shows or hides.
 #pragma once
 
+#include <QBrush>
 #include <QObject>
+#include <QPen>
 #include <QPointer>
 #include <QString>
 #include <array>
@@ -36,6 +38,12 @@ constexpr int kOverlayKindCount = 10;
 
 // Menu text of an overlay kind (translated).
 QString overlayName(OverlayKind kind);
+// How an overlay kind is drawn (also the legend's swatches).
+struct OverlayStyle {
+    QPen pen;
+    QBrush brush;
+};
+OverlayStyle overlayStyle(OverlayKind kind);
 // Shown unless the user hides them; the graph's edges would hide the cells by default.
 bool overlayVisibleByDefault(OverlayKind kind);
 

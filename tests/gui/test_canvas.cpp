@@ -1,8 +1,12 @@
 // Canvas and editing details through the real view: zoom, pan, cursor coordinates,
 // vertex insertion and deletion, polygon deletion, right angles, renaming, merging.
 #include "EditorFixture.h"
+#include "LegendDock.h"
+#include "PlanScene.h"
 #include "PlanningDock.h"
 
+#include <QAction>
+#include <QCheckBox>
 #include <QDoubleSpinBox>
 #include <QLabel>
 #include <QListWidget>
@@ -30,6 +34,7 @@ private slots:
     void shiftKeepsRightAngles();
     void renameRoomInList();
     void spinBoxStepsMergeIntoOneCommand();
+    void legendAndViewMenuToggleOverlays();
 };
 
 std::unique_ptr<MainWindow> CanvasTest::floorWithObstacle() {
@@ -164,6 +169,19 @@ void CanvasTest::spinBoxStepsMergeIntoOneCommand() {
     QCOMPARE(window->document()->project().robot.coverageWidth, 0.9);
     window->document()->undoStack()->undo();
     QCOMPARE(window->document()->project().robot.coverageWidth, 1.0);
+}
+
+void CanvasTest::legendAndViewMenuToggleOverlays() {
+    auto window = floorWithObstacle();
+    OverlayLayer* overlays = window->scene()->overlays();
+    QCheckBox* box = window->legendDock()->checkBox(OverlayKind::PrimaryCells);
+    QVERIFY(box->isChecked() && overlays->isVisible(OverlayKind::PrimaryCells));
+    box->setChecked(false);
+    QVERIFY(!overlays->isVisible(OverlayKind::PrimaryCells));
+    QVERIFY(!window->overlayAction(OverlayKind::PrimaryCells)->isChecked());
+    window->overlayAction(OverlayKind::InterEdges)->setChecked(true);
+    QVERIFY(overlays->isVisible(OverlayKind::InterEdges));
+    QVERIFY(window->legendDock()->checkBox(OverlayKind::InterEdges)->isChecked());
 }
 
 QTEST_MAIN(CanvasTest)
