@@ -4,6 +4,8 @@
 #include "Document.h"
 #include "DocumentFiles.h"
 #include "LegendDock.h"
+#include "PathPreview.h"
+#include "PathPreviewBar.h"
 #include "PlanScene.h"
 #include "PlanningController.h"
 #include "PlanningDock.h"
@@ -36,6 +38,8 @@ MainWindow::MainWindow(QWidget* parent)
     scene_->setPlanningController(planner_);
     planningDock_->setPlanningController(planner_);
     addDockWidget(Qt::RightDockWidgetArea, planningDock_);
+    preview_ = new PathPreview(scene_, planner_, this);
+    planningDock_->addSection(new PathPreviewBar(preview_));
     // The training dock (issue 4, item 6: live reward curve, start/pause/stop, save/load
     // model) docks here, tabified with the planning dock, once the DQN trainer API lands.
 
@@ -48,6 +52,7 @@ MainWindow::MainWindow(QWidget* parent)
 }
 
 MainWindow::~MainWindow() {
+    delete preview_; // its robot item lives in the scene
     // The scene and the tools refer to the document: detach them before it goes.
     tools_->setContext(nullptr, nullptr);
     scene_->setDocument(nullptr);

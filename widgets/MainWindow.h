@@ -19,6 +19,7 @@ namespace fc::ui {
 class CanvasView;
 class Document;
 class LegendDock;
+class PathPreview;
 class PlanScene;
 class PlanningController;
 class PlanningDock;
@@ -37,6 +38,7 @@ public:
     PlanningController* planningController() const { return planner_; }
     PlanningDock* planningDock() const { return planningDock_; }
     LegendDock* legendDock() const { return legendDock_; }
+    PathPreview* pathPreview() const { return preview_; }
     QAction* overlayAction(OverlayKind kind) const {
         return overlayActions_[static_cast<int>(kind)];
     }
@@ -89,6 +91,7 @@ private:
     ToolManager* tools_;
     PlanningDock* planningDock_;
     LegendDock* legendDock_ = nullptr;
+    PathPreview* preview_ = nullptr;
     QMenu* recentFilesMenu_ = nullptr;
     QLabel* coordinates_ = nullptr;
     QLabel* problem_ = nullptr;

@@ -41,7 +41,7 @@ void setValueQuietly(QDoubleSpinBox* box, double value) {
 PlanningDock::PlanningDock(QWidget* parent) : QDockWidget(tr("Planning"), parent) {
     setObjectName(QStringLiteral("PlanningDock"));
     auto* content = new QWidget;
-    auto* layout = new QVBoxLayout(content);
+    auto* layout = layout_ = new QVBoxLayout(content);
     layout->addWidget(createRobotGroup());
     layout->addWidget(createSweepGroup());
 
@@ -245,6 +245,10 @@ void PlanningDock::commitSweep() {
     sweep.automatic = autoAngle_->isChecked();
     angle_->setEnabled(!sweep.automatic);
     document_->setSweep(sweep);
+}
+
+void PlanningDock::addSection(QWidget* section) {
+    layout_->insertWidget(layout_->count() - 1, section); // above the stretch
 }
 
 QString PlanningDock::metricText(const QString& key) const {

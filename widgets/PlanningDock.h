@@ -12,6 +12,7 @@ class QLabel;
 class QListWidget;
 class QListWidgetItem;
 class QPushButton;
+class QVBoxLayout;
 
 namespace fc::ui {
 
@@ -32,6 +33,8 @@ public:
     QComboBox* solverBox() const { return solver_; }
     // The metric labels by key: length, extra, turns, coverage, time (tests).
     QString metricText(const QString& key) const;
+    // Adds a section (e.g. the path preview) below the metrics.
+    void addSection(QWidget* section);
 
 private:
     QWidget* createRobotGroup();
@@ -60,6 +63,7 @@ private:
     QListWidget* rooms_;
     QPushButton* planButton_;
     QLabel* status_;
+    QVBoxLayout* layout_;
     QMap<QString, QLabel*> metrics_;
 };
 

@@ -2,7 +2,10 @@
 // vertex insertion and deletion, polygon deletion, right angles, renaming, merging.
 #include "EditorFixture.h"
 #include "LegendDock.h"
+#include "PathPreview.h"
+#include "PathPreviewBar.h"
 #include "PlanScene.h"
+#include "PlanningController.h"
 #include "PlanningDock.h"
 
 #include <QAction>
@@ -10,7 +13,9 @@
 #include <QDoubleSpinBox>
 #include <QLabel>
 #include <QListWidget>
+#include <QPushButton>
 #include <QScrollBar>
+#include <QSlider>
 #include <QStatusBar>
 #include <QUndoStack>
 
@@ -35,6 +40,7 @@ private slots:
     void renameRoomInList();
     void spinBoxStepsMergeIntoOneCommand();
     void legendAndViewMenuToggleOverlays();
+    void previewDrivesRobotAlongPath();
 };
 
 std::unique_ptr<MainWindow> CanvasTest::floorWithObstacle() {
@@ -182,6 +188,28 @@ void CanvasTest::legendAndViewMenuToggleOverlays() {
     window->overlayAction(OverlayKind::InterEdges)->setChecked(true);
     QVERIFY(overlays->isVisible(OverlayKind::InterEdges));
     QVERIFY(window->legendDock()->checkBox(OverlayKind::InterEdges)->isChecked());
+}
+
+void CanvasTest::previewDrivesRobotAlongPath() {
+    auto window = floorWithObstacle();
+    PathPreview* preview = window->pathPreview();
+    auto* bar = window->planningDock()->findChild<PathPreviewBar*>();
+    QVERIFY(bar);
+    QVERIFY(!bar->isEnabled()); // nothing planned yet
+    QVERIFY(window->planningController()->planAndWait());
+    QVERIFY(bar->isEnabled());
+    bar->speedSlider()->setValue(100);
+    QTest::mouseClick(bar->playButton(), Qt::LeftButton);
+    QVERIFY(preview->isPlaying());
+    QTRY_VERIFY_WITH_TIMEOUT(preview->progress() > 0.0, 5000);
+    QTest::mouseClick(bar->playButton(), Qt::LeftButton);
+    QVERIFY(!preview->isPlaying());
+    preview->setProgress(1.0);
+    QCOMPARE(preview->progress(), 1.0);
+    // An edit makes the path stale: the preview stops and its controls are disabled.
+    window->document()->setSweep({0.0, false});
+    QVERIFY(!preview->hasPath());
+    QVERIFY(!bar->isEnabled());
 }
 
 QTEST_MAIN(CanvasTest)
