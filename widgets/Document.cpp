@@ -55,6 +55,11 @@ void Document::markSaved() {
     undoStack_->setClean();
 }
 
+void Document::markModified() {
+    undoStack_->resetClean();
+    emit modifiedChanged(true);
+}
+
 int Document::polygonCount(PolygonRole role) const {
     switch (role) {
     case PolygonRole::Boundary:

@@ -50,6 +50,8 @@ public:
     QString displayName() const;
     bool isModified() const;
     void markSaved();
+    // Modified until the next save, whatever is undone (a recovered document).
+    void markModified();
 
     int polygonCount(PolygonRole role) const;
     const Ring& ring(PolygonRef ref) const;

@@ -1,5 +1,6 @@
 #include "MainWindow.h"
 
+#include "Autosaver.h"
 #include "CanvasView.h"
 #include "Document.h"
 #include "DocumentFiles.h"
@@ -31,7 +32,8 @@ namespace fc::ui {
 MainWindow::MainWindow(QWidget* parent)
     : QMainWindow(parent), undoGroup_(new QUndoGroup(this)), scene_(new PlanScene(this)),
       view_(new CanvasView(this)), planner_(new PlanningController(this)),
-      tools_(new ToolManager(this)), planningDock_(new PlanningDock(this)) {
+      tools_(new ToolManager(this)), planningDock_(new PlanningDock(this)),
+      autosaver_(new Autosaver(this)) {
     setObjectName(QStringLiteral("MainWindow"));
     view_->setScene(scene_);
     setCentralWidget(view_);
@@ -169,6 +171,7 @@ void MainWindow::setDocument(std::unique_ptr<Document> document) {
     planner_->setDocument(doc);
     planningDock_->setDocument(doc);
     tools_->setContext(doc, scene_);
+    autosaver_->setDocument(doc);
     connect(doc, &Document::modifiedChanged, this, &MainWindow::updateTitle);
     connect(doc, &Document::fileNameChanged, this, &MainWindow::updateTitle);
     connect(doc, &Document::editRejected, this, &MainWindow::showProblem);
@@ -212,10 +215,33 @@ bool MainWindow::maybeSave() {
 }
 
 void MainWindow::closeEvent(QCloseEvent* event) {
-    if (maybeSave())
-        event->accept();
-    else
+    if (!maybeSave()) {
         event->ignore();
+        return;
+    }
+    autosaver_->discard(); // a normal end: nothing to recover next time
+    event->accept();
+}
+
+bool MainWindow::recoverAutosave() {
+    if (!Autosaver::hasRecovery())
+        return false;
+    if (dialogsEnabled_ &&
+        QMessageBox::question(this, tr("Recover unsaved changes"),
+                              tr("FloorCover did not close normally last time. Recover the "
+                                 "unsaved changes?")) != QMessageBox::Yes) {
+        autosaver_->discard();
+        return false;
+    }
+    QString error;
+    std::unique_ptr<Document> document = Autosaver::recover(&error);
+    if (!document) {
+        showError(error);
+        return false;
+    }
+    setDocument(std::move(document));
+    statusBar()->showMessage(tr("Recovered the unsaved changes of the last session."), 10000);
+    return true;
 }
 
 void MainWindow::newDocument() {

@@ -17,6 +17,7 @@ class QUndoGroup;
 namespace fc::ui {
 
 class CanvasView;
+class Autosaver;
 class Document;
 class LegendDock;
 class PathPreview;
@@ -56,6 +57,11 @@ public:
     // Opens PLAN (or the sample), plans, and saves the whole window as a PNG.
     bool renderScreenshot(const QString& path, const QString& planPath, QString* error);
 
+    // Offers the document of a session that ended without saving (asks first when dialogs
+    // are on). Returns true when it was recovered.
+    bool recoverAutosave();
+    Autosaver* autosaver() const { return autosaver_; }
+
     // Modal dialogs off (tests, --screenshot): errors go to the status bar and lastError(),
     // and unsaved changes are discarded without asking.
     void setDialogsEnabled(bool enabled) { dialogsEnabled_ = enabled; }
@@ -92,6 +98,7 @@ private:
     PlanningDock* planningDock_;
     LegendDock* legendDock_ = nullptr;
     PathPreview* preview_ = nullptr;
+    Autosaver* autosaver_;
     QMenu* recentFilesMenu_ = nullptr;
     QLabel* coordinates_ = nullptr;
     QLabel* problem_ = nullptr;

@@ -41,7 +41,10 @@ int main(int argc, char** argv) {
         return 0;
     }
     window.show();
-    if (planPath.isEmpty() || !window.openFile(planPath))
+    // A plan named on the command line, else what a crashed session left, else the sample.
+    if (!planPath.isEmpty() && window.openFile(planPath))
+        return QApplication::exec();
+    if (!window.recoverAutosave())
         window.openSample();
     return QApplication::exec();
 }

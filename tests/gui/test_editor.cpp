@@ -1,5 +1,6 @@
 // The editor driven through its real widgets: drawing by mouse, undo/redo, files, room
 // selection, start/end, planning, exports and refused input.
+#include "Autosaver.h"
 #include "EditorFixture.h"
 #include "OverlayLayer.h"
 #include "PlanScene.h"
@@ -9,6 +10,7 @@
 #include "tools/DrawPolygonTool.h"
 
 #include <QDoubleSpinBox>
+#include <QFile>
 #include <QImage>
 #include <QListWidget>
 #include <QPushButton>
@@ -43,6 +45,7 @@ private slots:
     void exportGeoJsonParses();
     void screenshotWritesPng();
     void brokenFileKeepsDocument();
+    void autosaveRecoversAfterCrash();
 };
 
 void EditorTest::initTestCase() {
@@ -279,6 +282,24 @@ void EditorTest::brokenFileKeepsDocument() {
     }
     QVERIFY(!window->openFile(dir_.filePath(QStringLiteral("missing.fcproj"))));
     QCOMPARE(window->document(), before);
+}
+
+void EditorTest::autosaveRecoversAfterCrash() {
+    QFile::remove(Autosaver::recoveryPath()); // test mode: a folder of the tests' own
+    {
+        auto crashed = makeWindow();
+        drawFloor(*crashed);
+        crashed->autosaver()->saveNow();
+        QVERIFY(Autosaver::hasRecovery());
+    } // destroyed without closing: the recovery file stays, as after a crash
+    auto window = makeWindow();
+    QVERIFY(window->recoverAutosave());
+    QCOMPARE(window->document()->plan().obstacles.size(), size_t(1));
+    QCOMPARE(window->document()->roomNames(), QStringList{QStringLiteral("Room 1")});
+    QVERIFY(window->document()->isModified());
+    QVERIFY(window->saveFile(dir_.filePath(QStringLiteral("recovered.fcproj"))));
+    QVERIFY(!Autosaver::hasRecovery()); // saved: nothing left to recover
+    QVERIFY(!window->recoverAutosave());
 }
 
 QTEST_MAIN(EditorTest)
