@@ -54,6 +54,8 @@ public:
     bool exportPath(const QString& path);
     // The visible canvas as .png or .svg.
     bool exportView(const QString& path);
+    // One-page PDF report of the plan, path, metrics and robot profile.
+    bool exportReport(const QString& path);
     // Opens PLAN (or the sample), plans, and saves the whole window as a PNG.
     bool renderScreenshot(const QString& path, const QString& planPath, QString* error);
 

@@ -4,6 +4,8 @@
 #include "Document.h"
 #include "DocumentFiles.h"
 #include "MainWindow.h"
+#include "PdfReport.h"
+#include "PlanScene.h"
 #include "PlanningController.h"
 #include "formats/PathIO.h"
 
@@ -55,6 +57,13 @@ void MainWindow::createFileMenu() {
                     [this]() { exportViewWithDialog(QStringLiteral("png")); });
     file->addAction(tr("Export View as S&VG…"), this,
                     [this]() { exportViewWithDialog(QStringLiteral("svg")); });
+    file->addAction(tr("Export &Report as PDF…"), this, [this]() {
+        const QString path = QFileDialog::getSaveFileName(
+            this, tr("Export Report"), document_->displayName() + QStringLiteral("-report.pdf"),
+            tr("PDF documents (*.pdf)"));
+        if (!path.isEmpty())
+            exportReport(withSuffix(path, QStringLiteral("pdf")));
+    });
     file->addSeparator();
     file->addAction(tr("&Quit"), QKeySequence::Quit, this, &QWidget::close);
 }
@@ -191,6 +200,21 @@ void MainWindow::exportViewWithDialog(const QString& suffix) {
         this, tr("Export View"), document_->displayName() + QLatin1Char('.') + suffix, filter);
     if (!path.isEmpty())
         exportView(withSuffix(path, suffix));
+}
+
+bool MainWindow::exportReport(const QString& path) {
+    const auto result = planner_->result();
+    if (!result) {
+        showError(tr("There is no plan to report: plan the current document first."));
+        return false;
+    }
+    QString error;
+    if (!writePdfReport(path, *document_, *result, *scene_, &error)) {
+        showError(error);
+        return false;
+    }
+    statusBar()->showMessage(tr("Exported the report to %1").arg(path), 5000);
+    return true;
 }
 
 bool MainWindow::renderScreenshot(const QString& path, const QString& planPath, QString* error) {

@@ -253,6 +253,12 @@ void EditorTest::exportGeoJsonParses() {
     QVERIFY(window->exportPath(dir_.filePath(QStringLiteral("path.csv"))));
     QVERIFY(window->exportView(dir_.filePath(QStringLiteral("view.svg"))));
     QVERIFY(QFileInfo(dir_.filePath(QStringLiteral("view.svg"))).size() > 1000);
+    const QString report = dir_.filePath(QStringLiteral("report.pdf"));
+    QVERIFY(window->exportReport(report));
+    QFile pdf(report);
+    QVERIFY(pdf.open(QIODevice::ReadOnly));
+    QVERIFY(pdf.read(5) == "%PDF-");
+    QVERIFY(pdf.size() > 5000);
 }
 
 void EditorTest::screenshotWritesPng() {
