@@ -45,7 +45,9 @@ PlanRequest requestFor(const Project& project) {
 } // namespace
 
 PlanningController::PlanningController(QObject* parent)
-    : QObject(parent), prepareTimer_(new QTimer(this)) {
+    : QObject(parent), prepareTimer_(new QTimer(this)),
+      latestPrepare_(std::make_shared<std::atomic<quint64>>(0)),
+      latestPlan_(std::make_shared<std::atomic<quint64>>(0)) {
     prepareTimer_->setSingleShot(true);
     prepareTimer_->setInterval(120);
     connect(prepareTimer_, &QTimer::timeout, this, &PlanningController::startPrepare);
@@ -72,7 +74,7 @@ void PlanningController::setDocument(Document* document) {
 
 void PlanningController::schedulePrepare() {
     invalidateResult();
-    ++prepareGeneration_;
+    *latestPrepare_ = ++prepareGeneration_;
     if (!pendingPrepare_)
         emit busyChanged(true);
     pendingPrepare_ = true;
@@ -80,7 +82,7 @@ void PlanningController::schedulePrepare() {
 }
 
 void PlanningController::invalidateResult() {
-    ++planGeneration_;
+    *latestPlan_ = ++planGeneration_;
     if (!result_)
         return;
     result_.reset();
@@ -125,7 +127,9 @@ void PlanningController::startPrepare() {
     // "auto" picks its angle while planning; until then the overlays use the default.
     const double angle = project.sweep.automatic ? 90.0 : project.sweep.angleDeg;
     runInBackground<PreparedPlan>(
-        [project, angle]() {
+        [project, angle, latest = latestPrepare_, generation]() {
+            if (*latest != generation) // edited again while this waited for a thread
+                throw InputError("superseded");
             project.robot.validate();
             return preparePlan(project.plan, project.robot, angle);
         },
@@ -143,9 +147,12 @@ void PlanningController::plan() {
         return;
     const PlanRequest request = requestFor(document_->project());
     const quint64 generation = ++planGeneration_;
+    *latestPlan_ = generation;
     if (!isBusy())
         emit busyChanged(true);
-    runInBackground<PlanResult>([request]() { return planCoverage(request); },
+    SolveControl control; // the solvers stop when the document changes under them
+    control.cancelled = [latest = latestPlan_, generation]() { return *latest != generation; };
+    runInBackground<PlanResult>([request, control]() { return planCoverage(request, control); },
                                 [this, generation](const Outcome<PlanResult>& outcome) {
                                     if (generation != planGeneration_)
                                         return;

@@ -9,6 +9,7 @@
 #include <QObject>
 #include <QPointer>
 #include <QString>
+#include <atomic>
 #include <memory>
 
 class QTimer;
@@ -56,9 +57,12 @@ private:
     std::shared_ptr<const PreparedPlan> prepared_;
     std::shared_ptr<const PlanResult> result_;
     QString error_;
-    // Bumped by every edit; a finished run whose stamp is older is ignored.
+    // Bumped by every edit; a finished run whose stamp is older is ignored, and a queued or
+    // running one stops early (the workers read the atomic copies).
     quint64 prepareGeneration_ = 0;
     quint64 planGeneration_ = 0;
+    std::shared_ptr<std::atomic<quint64>> latestPrepare_;
+    std::shared_ptr<std::atomic<quint64>> latestPlan_;
     int running_ = 0;
     bool pendingPrepare_ = false;
 };
