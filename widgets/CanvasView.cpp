@@ -74,6 +74,11 @@ void CanvasView::zoomBy(double factor) {
     scale(factor, factor);
 }
 
+void CanvasView::scrollBy(QPoint pixels) {
+    horizontalScrollBar()->setValue(horizontalScrollBar()->value() + pixels.x());
+    verticalScrollBar()->setValue(verticalScrollBar()->value() + pixels.y());
+}
+
 void CanvasView::wheelEvent(QWheelEvent* event) {
     const int delta = event->angleDelta().y();
     if (delta == 0)
@@ -85,9 +90,7 @@ void CanvasView::wheelEvent(QWheelEvent* event) {
     setTransformationAnchor(QGraphicsView::NoAnchor);
     zoomBy(std::pow(1.0015, delta));
     setTransformationAnchor(QGraphicsView::AnchorViewCenter);
-    const QPoint drift = mapFromScene(anchor) - cursor;
-    horizontalScrollBar()->setValue(horizontalScrollBar()->value() + drift.x());
-    verticalScrollBar()->setValue(verticalScrollBar()->value() + drift.y());
+    scrollBy(mapFromScene(anchor) - cursor);
     event->accept();
 }
 
@@ -121,10 +124,8 @@ void CanvasView::mousePressEvent(QMouseEvent* event) {
 
 void CanvasView::mouseMoveEvent(QMouseEvent* event) {
     if (panning_) {
-        const QPoint delta = event->position().toPoint() - lastPanPosition_;
+        scrollBy(lastPanPosition_ - event->position().toPoint()); // the plan follows the hand
         lastPanPosition_ = event->position().toPoint();
-        horizontalScrollBar()->setValue(horizontalScrollBar()->value() - delta.x());
-        verticalScrollBar()->setValue(verticalScrollBar()->value() - delta.y());
         event->accept();
         return;
     }

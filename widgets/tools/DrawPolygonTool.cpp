@@ -16,47 +16,31 @@ namespace {
 constexpr double kCloseTolerancePixels = 8.0;
 constexpr double kDragThresholdPixels = 6.0;
 
-QString toolName(PolygonRole role) {
-    switch (role) {
-    case PolygonRole::Boundary:
-        return DrawPolygonTool::tr("Draw Boundary");
-    case PolygonRole::Obstacle:
-        return DrawPolygonTool::tr("Draw Obstacle");
-    case PolygonRole::Room:
-        break;
-    }
-    return DrawPolygonTool::tr("Draw Room");
-}
+// What distinguishes the three drawing tools.
+struct DrawToolTraits {
+    QString name;
+    Qt::Key shortcut;
+    const char* objectName; // stable, for tests and look-ups
+};
 
-QKeySequence toolShortcut(PolygonRole role) {
+DrawToolTraits traitsOf(PolygonRole role) {
     switch (role) {
     case PolygonRole::Boundary:
-        return QKeySequence(Qt::Key_B);
+        return {DrawPolygonTool::tr("Draw Boundary"), Qt::Key_B, "drawBoundary"};
     case PolygonRole::Obstacle:
-        return QKeySequence(Qt::Key_O);
+        return {DrawPolygonTool::tr("Draw Obstacle"), Qt::Key_O, "drawObstacle"};
     case PolygonRole::Room:
         break;
     }
-    return QKeySequence(Qt::Key_R);
-}
-
-const char* objectNameOf(PolygonRole role) {
-    switch (role) {
-    case PolygonRole::Boundary:
-        return "drawBoundary";
-    case PolygonRole::Obstacle:
-        return "drawObstacle";
-    case PolygonRole::Room:
-        break;
-    }
-    return "drawRoom";
+    return {DrawPolygonTool::tr("Draw Room"), Qt::Key_R, "drawRoom"};
 }
 
 } // namespace
 
 DrawPolygonTool::DrawPolygonTool(PolygonRole role, QObject* parent)
-    : AbstractTool(toolName(role), toolShortcut(role), parent), role_(role) {
-    setObjectName(QLatin1String(objectNameOf(role)));
+    : AbstractTool(traitsOf(role).name, QKeySequence(traitsOf(role).shortcut), parent),
+      role_(role) {
+    setObjectName(QLatin1String(traitsOf(role).objectName));
 }
 
 QString DrawPolygonTool::usageHint() const {
