@@ -14,9 +14,10 @@ const char* const kSamplePlanPath = ":/plans/office.geojson";
 
 namespace {
 
-QString tr(const char* text) {
-    return QCoreApplication::translate("fc::ui::DocumentFiles", text);
-}
+// The translation context of this file's messages (lupdate reads the macro).
+struct DocumentFilesText {
+    Q_DECLARE_TR_FUNCTIONS(fc::ui::DocumentFiles)
+};
 
 // Qt resources are not visible to the planner's file functions: read them here.
 Project loadResource(const QString& path) {
@@ -68,7 +69,7 @@ bool saveDocument(Document& document, const QString& path, QString* error) {
         writeFileAtomically(path.toStdString(), writeProject(document.project()));
     } catch (const std::exception& e) {
         if (error)
-            *error = tr("Cannot save %1: %2").arg(path, fromStd(e.what()));
+            *error = DocumentFilesText::tr("Cannot save %1: %2").arg(path, fromStd(e.what()));
         return false;
     }
     document.setFileName(QFileInfo(path).absoluteFilePath());

@@ -15,31 +15,35 @@ namespace fc::ui {
 
 namespace {
 
-QString tr(const char* text) {
-    return QCoreApplication::translate("fc::ui::PdfReport", text);
-}
+// The translation context of this file's messages (lupdate reads the macro).
+struct PdfReportText {
+    Q_DECLARE_TR_FUNCTIONS(fc::ui::PdfReport)
+};
 
 // Label and value rows of the report's table.
 QList<QPair<QString, QString>> reportRows(const Document& document, const PlanResult& result) {
     const Metrics& m = result.metrics;
     const RobotProfile& robot = result.prepared.robot;
-    const auto metres = [](double v) { return tr("%1 m").arg(v, 0, 'f', 2); };
+    const auto metres = [](double v) { return PdfReportText::tr("%1 m").arg(v, 0, 'f', 2); };
     return {
-        {tr("Solver"), fromStd(result.solution.solver.empty() ? document.project().solver
-                                                              : result.solution.solver)},
-        {tr("Stripe angle"), tr("%1°").arg(result.stripeAngleDeg)},
-        {tr("Path length"), metres(m.length)},
-        {tr("Ideal length"), metres(m.ideal)},
-        {tr("Extra distance"), metres(m.extra)},
-        {tr("Turns"), QString::number(m.turns)},
-        {tr("Coverage"), tr("%1 %").arg(100.0 * m.coverage, 0, 'f', 2)},
-        {tr("Estimated time"), tr("%1 min").arg(m.time / 60.0, 0, 'f', 1)},
-        {tr("Cells covered"), QString::number(m.cells)},
-        {tr("Robot diameter L"), metres(robot.robotDiameter)},
-        {tr("Cleaning diameter D"), metres(robot.cleaningDiameter)},
-        {tr("Coverage width W"), metres(robot.coverageWidth)},
-        {tr("Speed"), tr("%1 m/s").arg(robot.speed)},
-        {tr("Time per 90° turn"), tr("%1 s").arg(robot.turnTime)},
+        {PdfReportText::tr("Solver"),
+         fromStd(result.solution.solver.empty() ? document.project().solver
+                                                : result.solution.solver)},
+        {PdfReportText::tr("Stripe angle"), PdfReportText::tr("%1°").arg(result.stripeAngleDeg)},
+        {PdfReportText::tr("Path length"), metres(m.length)},
+        {PdfReportText::tr("Ideal length"), metres(m.ideal)},
+        {PdfReportText::tr("Extra distance"), metres(m.extra)},
+        {PdfReportText::tr("Turns"), QString::number(m.turns)},
+        {PdfReportText::tr("Coverage"),
+         PdfReportText::tr("%1 %").arg(100.0 * m.coverage, 0, 'f', 2)},
+        {PdfReportText::tr("Estimated time"),
+         PdfReportText::tr("%1 min").arg(m.time / 60.0, 0, 'f', 1)},
+        {PdfReportText::tr("Cells covered"), QString::number(m.cells)},
+        {PdfReportText::tr("Robot diameter L"), metres(robot.robotDiameter)},
+        {PdfReportText::tr("Cleaning diameter D"), metres(robot.cleaningDiameter)},
+        {PdfReportText::tr("Coverage width W"), metres(robot.coverageWidth)},
+        {PdfReportText::tr("Speed"), PdfReportText::tr("%1 m/s").arg(robot.speed)},
+        {PdfReportText::tr("Time per 90° turn"), PdfReportText::tr("%1 s").arg(robot.turnTime)},
     };
 }
 
@@ -51,12 +55,12 @@ bool writePdfReport(const QString& path, const Document& document, const PlanRes
     writer.setPageSize(QPageSize(QPageSize::A4));
     writer.setPageMargins(QMarginsF(15, 15, 15, 15), QPageLayout::Millimeter);
     writer.setResolution(150); // cosmetic pens stay visible; text is vector anyway
-    writer.setTitle(tr("Coverage plan: %1").arg(document.displayName()));
+    writer.setTitle(PdfReportText::tr("Coverage plan: %1").arg(document.displayName()));
     writer.setCreator(QStringLiteral("FloorCover"));
     QPainter painter;
     if (!painter.begin(&writer)) {
         if (error)
-            *error = tr("Cannot write %1.").arg(path);
+            *error = PdfReportText::tr("Cannot write %1.").arg(path);
         return false;
     }
     painter.setRenderHint(QPainter::Antialiasing);
@@ -65,7 +69,7 @@ bool writePdfReport(const QString& path, const Document& document, const PlanRes
     font.setPointSizeF(16);
     painter.setFont(font);
     painter.drawText(QRect(0, 0, page.width(), 60), Qt::AlignLeft | Qt::AlignVCenter,
-                     tr("Coverage plan: %1").arg(document.displayName()));
+                     PdfReportText::tr("Coverage plan: %1").arg(document.displayName()));
     font.setPointSizeF(9);
     painter.setFont(font);
     painter.drawText(QRect(0, 0, page.width(), 60), Qt::AlignRight | Qt::AlignVCenter,
@@ -91,7 +95,7 @@ bool writePdfReport(const QString& path, const Document& document, const PlanRes
     }
     if (!painter.end()) {
         if (error)
-            *error = tr("Cannot write %1.").arg(path);
+            *error = PdfReportText::tr("Cannot write %1.").arg(path);
         return false;
     }
     return true;
