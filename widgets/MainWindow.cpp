@@ -10,6 +10,7 @@
 #include "PlanScene.h"
 #include "PlanningController.h"
 #include "PlanningDock.h"
+#include "PreferencesDialog.h"
 #include "tools/DrawPolygonTool.h"
 #include "tools/EditVerticesTool.h"
 #include "tools/PickRoomTool.h"
@@ -89,6 +90,12 @@ void MainWindow::createMenus() {
     redo->setShortcuts({QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_Z), QKeySequence::Redo});
     edit->addAction(undo);
     edit->addAction(redo);
+    edit->addSeparator();
+    QAction* preferences = edit->addAction(tr("&Preferences…"), this, [this]() {
+        PreferencesDialog dialog(this);
+        dialog.exec();
+    });
+    preferences->setMenuRole(QAction::PreferencesRole);
 
     createViewMenu();
 

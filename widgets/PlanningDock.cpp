@@ -263,16 +263,20 @@ void PlanningDock::refreshMetrics() {
     if (!result)
         return;
     const Metrics& m = result->metrics;
-    metrics_[QStringLiteral("length")]->setText(tr("%1 m").arg(m.length, 0, 'f', 1));
-    metrics_[QStringLiteral("extra")]->setText(tr("%1 m").arg(m.extra, 0, 'f', 1));
-    metrics_[QStringLiteral("turns")]->setText(QString::number(m.turns));
-    metrics_[QStringLiteral("coverage")]->setText(tr("%1 %").arg(100.0 * m.coverage, 0, 'f', 2));
+    const QLocale locale; // decimal separators as in the spin boxes
+    const auto number = [&locale](double value, int decimals) {
+        return locale.toString(value, 'f', decimals);
+    };
+    metrics_[QStringLiteral("length")]->setText(tr("%1 m").arg(number(m.length, 1)));
+    metrics_[QStringLiteral("extra")]->setText(tr("%1 m").arg(number(m.extra, 1)));
+    metrics_[QStringLiteral("turns")]->setText(locale.toString(m.turns));
+    metrics_[QStringLiteral("coverage")]->setText(tr("%1 %").arg(number(100.0 * m.coverage, 2)));
     const int seconds = static_cast<int>(std::lround(m.time));
     metrics_[QStringLiteral("time")]->setText(
         tr("%1 min %2 s").arg(seconds / 60).arg(seconds % 60, 2, 10, QLatin1Char('0')));
-    metrics_[QStringLiteral("cells")]->setText(QString::number(m.cells));
-    metrics_[QStringLiteral("angle")]->setText(tr("%1°").arg(result->stripeAngleDeg));
-    metrics_[QStringLiteral("seconds")]->setText(tr("%1 s").arg(m.seconds, 0, 'f', 2));
+    metrics_[QStringLiteral("cells")]->setText(locale.toString(m.cells));
+    metrics_[QStringLiteral("angle")]->setText(tr("%1°").arg(number(result->stripeAngleDeg, 1)));
+    metrics_[QStringLiteral("seconds")]->setText(tr("%1 s").arg(number(m.seconds, 2)));
 }
 
 void PlanningDock::refreshStatus() {

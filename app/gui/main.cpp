@@ -1,6 +1,7 @@
 // floorcover: the desktop editor. Thin: argument handling only; the editor lives in
 // the floorcover_widgets library.
 #include "MainWindow.h"
+#include "Translations.h"
 
 #include <QApplication>
 #include <QCommandLineParser>
@@ -11,6 +12,7 @@ int main(int argc, char** argv) {
     QApplication::setOrganizationName(QStringLiteral("FloorCover"));
     QApplication::setApplicationName(QStringLiteral("FloorCover"));
     QApplication::setApplicationVersion(QStringLiteral(FC_VERSION));
+    fc::ui::installTranslations(app);
 
     QCommandLineParser parser;
     parser.setApplicationDescription(

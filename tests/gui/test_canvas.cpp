@@ -7,16 +7,19 @@
 #include "PlanScene.h"
 #include "PlanningController.h"
 #include "PlanningDock.h"
+#include "Translations.h"
 
 #include <QAction>
 #include <QCheckBox>
 #include <QDoubleSpinBox>
+#include <QFile>
 #include <QLabel>
 #include <QListWidget>
 #include <QPushButton>
 #include <QScrollBar>
 #include <QSlider>
 #include <QStatusBar>
+#include <QTranslator>
 #include <QUndoStack>
 
 using namespace fc::ui;
@@ -41,6 +44,7 @@ private slots:
     void spinBoxStepsMergeIntoOneCommand();
     void legendAndViewMenuToggleOverlays();
     void previewDrivesRobotAlongPath();
+    void translationsAreCompleteAndLoad();
 };
 
 std::unique_ptr<MainWindow> CanvasTest::floorWithObstacle() {
@@ -210,6 +214,24 @@ void CanvasTest::previewDrivesRobotAlongPath() {
     window->document()->setSweep({0.0, false});
     QVERIFY(!preview->hasPath());
     QVERIFY(!bar->isEnabled());
+}
+
+void CanvasTest::translationsAreCompleteAndLoad() {
+    for (const char* language : {"de", "fr"}) {
+        QFile ts(QStringLiteral(FC_TRANSLATIONS_DIR "/floorcover_%1.ts").arg(language));
+        QVERIFY(ts.open(QIODevice::ReadOnly));
+        const QByteArray text = ts.readAll();
+        QVERIFY2(!text.contains("type=\"unfinished\""), language);
+        QVERIFY(text.count("<message>") > 150);
+    }
+    QTranslator german;
+    QVERIFY(loadEditorTranslation(german, QLocale(QLocale::German)));
+    QCoreApplication::installTranslator(&german);
+    PlanningDock dock;
+    QCOMPARE(dock.planButton()->text(), QStringLiteral("Planen"));
+    QCoreApplication::removeTranslator(&german);
+    QTranslator english;
+    QVERIFY(!loadEditorTranslation(english, QLocale(QLocale::English))); // the source
 }
 
 QTEST_MAIN(CanvasTest)

@@ -1,0 +1,880 @@
+<?xml version="1.0" encoding="utf-8"?>
+<!DOCTYPE TS>
+<TS version="2.1" language="de_DE">
+<context>
+    <name>fc::ui::CanvasView</name>
+    <message>
+        <source>%1 m</source>
+        <translation>%1 m</translation>
+    </message>
+    <message>
+        <source>%1 cm</source>
+        <translation>%1 cm</translation>
+    </message>
+</context>
+<context>
+    <name>fc::ui::Document</name>
+    <message>
+        <source>Untitled</source>
+        <translation>Unbenannt</translation>
+    </message>
+    <message>
+        <source>Draw the boundary first: obstacles and rooms must lie inside it.</source>
+        <translation>Zeichnen Sie zuerst die Außenwand: Hindernisse und Räume müssen darin liegen.</translation>
+    </message>
+    <message>
+        <source>Room %1</source>
+        <translation>Raum %1</translation>
+    </message>
+    <message>
+        <source>Add boundary</source>
+        <translation>Außenwand hinzufügen</translation>
+    </message>
+    <message>
+        <source>Replace boundary</source>
+        <translation>Außenwand ersetzen</translation>
+    </message>
+    <message>
+        <source>Add obstacle</source>
+        <translation>Hindernis hinzufügen</translation>
+    </message>
+    <message>
+        <source>Add room %1</source>
+        <translation>Raum %1 hinzufügen</translation>
+    </message>
+    <message>
+        <source>Move vertex</source>
+        <translation>Eckpunkt verschieben</translation>
+    </message>
+    <message>
+        <source>Insert vertex</source>
+        <translation>Eckpunkt einfügen</translation>
+    </message>
+    <message>
+        <source>A polygon needs at least three vertices; delete the polygon instead.</source>
+        <translation>Ein Polygon braucht mindestens drei Eckpunkte; löschen Sie stattdessen das Polygon.</translation>
+    </message>
+    <message>
+        <source>Delete vertex</source>
+        <translation>Eckpunkt löschen</translation>
+    </message>
+    <message>
+        <source>Delete the obstacles and rooms before the boundary.</source>
+        <translation>Löschen Sie die Hindernisse und Räume vor der Außenwand.</translation>
+    </message>
+    <message>
+        <source>Delete boundary</source>
+        <translation>Außenwand löschen</translation>
+    </message>
+    <message>
+        <source>Delete obstacle</source>
+        <translation>Hindernis löschen</translation>
+    </message>
+    <message>
+        <source>Delete room %1</source>
+        <translation>Raum %1 löschen</translation>
+    </message>
+    <message>
+        <source>There is no room %1.</source>
+        <translation>Es gibt keinen Raum %1.</translation>
+    </message>
+    <message>
+        <source>A room needs a name.</source>
+        <translation>Ein Raum braucht einen Namen.</translation>
+    </message>
+    <message>
+        <source>There is already a room named &quot;%1&quot;.</source>
+        <translation>Es gibt schon einen Raum namens „%1“.</translation>
+    </message>
+    <message>
+        <source>Rename room %1 to %2</source>
+        <translation>Raum %1 in %2 umbenennen</translation>
+    </message>
+    <message>
+        <source>Change robot profile</source>
+        <translation>Roboterprofil ändern</translation>
+    </message>
+    <message>
+        <source>The sweep angle must be a finite number of degrees.</source>
+        <translation>Der Bahnwinkel muss eine endliche Gradzahl sein.</translation>
+    </message>
+    <message>
+        <source>Change sweep angle</source>
+        <translation>Bahnwinkel ändern</translation>
+    </message>
+    <message>
+        <source>Choose solver %1</source>
+        <translation>Löser %1 wählen</translation>
+    </message>
+    <message>
+        <source>Place start</source>
+        <translation>Start setzen</translation>
+    </message>
+    <message>
+        <source>Remove start</source>
+        <translation>Start entfernen</translation>
+    </message>
+    <message>
+        <source>Place end</source>
+        <translation>Ziel setzen</translation>
+    </message>
+    <message>
+        <source>Remove end</source>
+        <translation>Ziel entfernen</translation>
+    </message>
+    <message>
+        <source>There is no room named &quot;%1&quot;.</source>
+        <translation>Es gibt keinen Raum namens „%1“.</translation>
+    </message>
+    <message>
+        <source>At least one room must stay selected for planning.</source>
+        <translation>Mindestens ein Raum muss für die Planung ausgewählt bleiben.</translation>
+    </message>
+    <message>
+        <source>Deselect room %1</source>
+        <translation>Raum %1 abwählen</translation>
+    </message>
+    <message>
+        <source>Select room %1</source>
+        <translation>Raum %1 auswählen</translation>
+    </message>
+</context>
+<context>
+    <name>fc::ui::DocumentFiles</name>
+    <message>
+        <source>Cannot save %1: %2</source>
+        <translation>%1 kann nicht gespeichert werden: %2</translation>
+    </message>
+</context>
+<context>
+    <name>fc::ui::DrawPolygonTool</name>
+    <message>
+        <source>Draw Boundary</source>
+        <translation>Außenwand zeichnen</translation>
+    </message>
+    <message>
+        <source>Draw Obstacle</source>
+        <translation>Hindernis zeichnen</translation>
+    </message>
+    <message>
+        <source>Draw Room</source>
+        <translation>Raum zeichnen</translation>
+    </message>
+    <message>
+        <source>%1: click vertices and click the first one to close, or drag a rectangle. Shift keeps right angles, Backspace removes a vertex, Esc cancels.</source>
+        <translation>%1: Eckpunkte anklicken und zum Schließen den ersten erneut anklicken, oder ein Rechteck aufziehen. Umschalt hält rechte Winkel, Rücktaste entfernt einen Eckpunkt, Esc bricht ab.</translation>
+    </message>
+    <message>
+        <source>A polygon needs at least three vertices.</source>
+        <translation>Ein Polygon braucht mindestens drei Eckpunkte.</translation>
+    </message>
+    <message>
+        <source>%1 refused: %2</source>
+        <translation>%1 abgelehnt: %2</translation>
+    </message>
+</context>
+<context>
+    <name>fc::ui::EditVerticesTool</name>
+    <message>
+        <source>Edit Vertices</source>
+        <translation>Eckpunkte bearbeiten</translation>
+    </message>
+    <message>
+        <source>Edit Vertices: drag a vertex to move it, double-click an edge to add one, right-click a vertex to delete it; select a polygon and press Delete to delete it.</source>
+        <translation>Eckpunkte bearbeiten: Eckpunkt ziehen zum Verschieben, Kante doppelklicken zum Einfügen, Rechtsklick auf einen Eckpunkt zum Löschen; ein Polygon auswählen und Entf drücken, um es zu löschen.</translation>
+    </message>
+</context>
+<context>
+    <name>fc::ui::LegendDock</name>
+    <message>
+        <source>Legend</source>
+        <translation>Legende</translation>
+    </message>
+</context>
+<context>
+    <name>fc::ui::MainWindow</name>
+    <message>
+        <source>Tools</source>
+        <translation>Werkzeuge</translation>
+    </message>
+    <message>
+        <source>&amp;Edit</source>
+        <translation>&amp;Bearbeiten</translation>
+    </message>
+    <message>
+        <source>&amp;Undo</source>
+        <translation>&amp;Rückgängig</translation>
+    </message>
+    <message>
+        <source>&amp;Redo</source>
+        <translation>&amp;Wiederherstellen</translation>
+    </message>
+    <message>
+        <source>&amp;Preferences…</source>
+        <translation>&amp;Einstellungen…</translation>
+    </message>
+    <message>
+        <source>&amp;Tools</source>
+        <translation>&amp;Werkzeuge</translation>
+    </message>
+    <message>
+        <source>&amp;Plan</source>
+        <translation>&amp;Planen</translation>
+    </message>
+    <message>
+        <source>&amp;Plan Path</source>
+        <translation>&amp;Pfad planen</translation>
+    </message>
+    <message>
+        <source>&amp;Help</source>
+        <translation>&amp;Hilfe</translation>
+    </message>
+    <message>
+        <source>&amp;About FloorCover</source>
+        <translation>&amp;Über FloorCover</translation>
+    </message>
+    <message>
+        <source>About FloorCover</source>
+        <translation>Über FloorCover</translation>
+    </message>
+    <message>
+        <source>FloorCover %1
+Coverage path planning for cleaning and disinfection robots.</source>
+        <translation>FloorCover %1
+Abdeckungspfadplanung für Reinigungs- und Desinfektionsroboter.</translation>
+    </message>
+    <message>
+        <source>&amp;View</source>
+        <translation>&amp;Ansicht</translation>
+    </message>
+    <message>
+        <source>&amp;Fit to Plan</source>
+        <translation>&amp;Plan einpassen</translation>
+    </message>
+    <message>
+        <source>Zoom &amp;In</source>
+        <translation>Ver&amp;größern</translation>
+    </message>
+    <message>
+        <source>Zoom &amp;Out</source>
+        <translation>Ver&amp;kleinern</translation>
+    </message>
+    <message>
+        <source>Show &amp;Grid</source>
+        <translation>&amp;Raster anzeigen</translation>
+    </message>
+    <message>
+        <source>Snap to G&amp;rid</source>
+        <translation>Am Ra&amp;ster fangen</translation>
+    </message>
+    <message>
+        <source>Snap to &amp;Vertices</source>
+        <translation>An &amp;Eckpunkten fangen</translation>
+    </message>
+    <message>
+        <source>&amp;Overlays</source>
+        <translation>Ü&amp;berlagerungen</translation>
+    </message>
+    <message>
+        <source>x %1 m   y %2 m</source>
+        <translation>x %1 m   y %2 m</translation>
+    </message>
+    <message>
+        <source>%1[*] – FloorCover</source>
+        <translation>%1[*] – FloorCover</translation>
+    </message>
+    <message>
+        <source>FloorCover</source>
+        <translation>FloorCover</translation>
+    </message>
+    <message>
+        <source>Unsaved changes</source>
+        <translation>Ungespeicherte Änderungen</translation>
+    </message>
+    <message>
+        <source>%1 has unsaved changes. Save them?</source>
+        <translation>%1 hat ungespeicherte Änderungen. Speichern?</translation>
+    </message>
+    <message>
+        <source>Recover unsaved changes</source>
+        <translation>Ungespeicherte Änderungen wiederherstellen</translation>
+    </message>
+    <message>
+        <source>FloorCover did not close normally last time. Recover the unsaved changes?</source>
+        <translation>FloorCover wurde beim letzten Mal nicht normal beendet. Die ungespeicherten Änderungen wiederherstellen?</translation>
+    </message>
+    <message>
+        <source>Recovered the unsaved changes of the last session.</source>
+        <translation>Die ungespeicherten Änderungen der letzten Sitzung wurden wiederhergestellt.</translation>
+    </message>
+    <message>
+        <source>Opened %1</source>
+        <translation>%1 geöffnet</translation>
+    </message>
+    <message>
+        <source>&amp;File</source>
+        <translation>&amp;Datei</translation>
+    </message>
+    <message>
+        <source>&amp;New</source>
+        <translation>&amp;Neu</translation>
+    </message>
+    <message>
+        <source>&amp;Open…</source>
+        <translation>Ö&amp;ffnen…</translation>
+    </message>
+    <message>
+        <source>Open &amp;Sample Plan</source>
+        <translation>&amp;Beispielplan öffnen</translation>
+    </message>
+    <message>
+        <source>Open &amp;Recent</source>
+        <translation>&amp;Zuletzt geöffnet</translation>
+    </message>
+    <message>
+        <source>&amp;Save</source>
+        <translation>&amp;Speichern</translation>
+    </message>
+    <message>
+        <source>Save &amp;As…</source>
+        <translation>Speichern &amp;unter…</translation>
+    </message>
+    <message>
+        <source>&amp;Export Path…</source>
+        <translation>Pfad &amp;exportieren…</translation>
+    </message>
+    <message>
+        <source>Export View as &amp;PNG…</source>
+        <translation>Ansicht als &amp;PNG exportieren…</translation>
+    </message>
+    <message>
+        <source>Export View as S&amp;VG…</source>
+        <translation>Ansicht als S&amp;VG exportieren…</translation>
+    </message>
+    <message>
+        <source>Export &amp;Report as PDF…</source>
+        <translation>&amp;Bericht als PDF exportieren…</translation>
+    </message>
+    <message>
+        <source>Export Report</source>
+        <translation>Bericht exportieren</translation>
+    </message>
+    <message>
+        <source>PDF documents (*.pdf)</source>
+        <translation>PDF-Dokumente (*.pdf)</translation>
+    </message>
+    <message>
+        <source>&amp;Quit</source>
+        <translation>&amp;Beenden</translation>
+    </message>
+    <message>
+        <source>Open Plan</source>
+        <translation>Plan öffnen</translation>
+    </message>
+    <message>
+        <source>Plans and projects (*.fcproj *.geojson *.json);;FloorCover projects (*.fcproj);;GeoJSON plans (*.geojson *.json)</source>
+        <translation>Pläne und Projekte (*.fcproj *.geojson *.json);;FloorCover-Projekte (*.fcproj);;GeoJSON-Pläne (*.geojson *.json)</translation>
+    </message>
+    <message>
+        <source>Save Project</source>
+        <translation>Projekt speichern</translation>
+    </message>
+    <message>
+        <source>FloorCover projects (*.fcproj)</source>
+        <translation>FloorCover-Projekte (*.fcproj)</translation>
+    </message>
+    <message>
+        <source>Saved %1</source>
+        <translation>%1 gespeichert</translation>
+    </message>
+    <message>
+        <source>There is no path to export: plan the current document first.</source>
+        <translation>Es gibt keinen Pfad zum Exportieren: Planen Sie zuerst das aktuelle Dokument.</translation>
+    </message>
+    <message>
+        <source>Cannot export the path to %1: %2</source>
+        <translation>Der Pfad kann nicht nach %1 exportiert werden: %2</translation>
+    </message>
+    <message>
+        <source>Exported the path to %1</source>
+        <translation>Pfad nach %1 exportiert</translation>
+    </message>
+    <message>
+        <source>Export Path</source>
+        <translation>Pfad exportieren</translation>
+    </message>
+    <message>
+        <source>GeoJSON (*.geojson);;CSV (*.csv);;JSON (*.json);;ROS 2 nav_msgs/Path (*.yaml)</source>
+        <translation>GeoJSON (*.geojson);;CSV (*.csv);;JSON (*.json);;ROS 2 nav_msgs/Path (*.yaml)</translation>
+    </message>
+    <message>
+        <source>Floor plan exported by FloorCover</source>
+        <translation>Grundriss, exportiert von FloorCover</translation>
+    </message>
+    <message>
+        <source>Cannot write %1.</source>
+        <translation>%1 kann nicht geschrieben werden.</translation>
+    </message>
+    <message>
+        <source>Exported the view to %1</source>
+        <translation>Ansicht nach %1 exportiert</translation>
+    </message>
+    <message>
+        <source>SVG images (*.svg)</source>
+        <translation>SVG-Bilder (*.svg)</translation>
+    </message>
+    <message>
+        <source>PNG images (*.png)</source>
+        <translation>PNG-Bilder (*.png)</translation>
+    </message>
+    <message>
+        <source>Export View</source>
+        <translation>Ansicht exportieren</translation>
+    </message>
+    <message>
+        <source>There is no plan to report: plan the current document first.</source>
+        <translation>Es gibt keinen Plan für einen Bericht: Planen Sie zuerst das aktuelle Dokument.</translation>
+    </message>
+    <message>
+        <source>Exported the report to %1</source>
+        <translation>Bericht nach %1 exportiert</translation>
+    </message>
+    <message>
+        <source>planning failed: %1</source>
+        <translation>Planung fehlgeschlagen: %1</translation>
+    </message>
+    <message>
+        <source>cannot write %1</source>
+        <translation>%1 kann nicht geschrieben werden</translation>
+    </message>
+</context>
+<context>
+    <name>fc::ui::OverlayLayer</name>
+    <message>
+        <source>Primary Cells</source>
+        <translation>Primärzellen</translation>
+    </message>
+    <message>
+        <source>Transition Cells</source>
+        <translation>Übergangszellen</translation>
+    </message>
+    <message>
+        <source>Critical Slices</source>
+        <translation>Kritische Schnitte</translation>
+    </message>
+    <message>
+        <source>Corner Nodes</source>
+        <translation>Eckknoten</translation>
+    </message>
+    <message>
+        <source>Coverage Edges</source>
+        <translation>Abdeckungskanten</translation>
+    </message>
+    <message>
+        <source>Contour Edges</source>
+        <translation>Konturkanten</translation>
+    </message>
+    <message>
+        <source>Inter-cell Edges</source>
+        <translation>Zellübergangskanten</translation>
+    </message>
+    <message>
+        <source>Path</source>
+        <translation>Pfad</translation>
+    </message>
+    <message>
+        <source>Overlap Segments</source>
+        <translation>Überlappungen</translation>
+    </message>
+    <message>
+        <source>Unreachable Areas</source>
+        <translation>Unerreichbare Flächen</translation>
+    </message>
+    <message>
+        <source>Unreachable: %1 (%2 m²)</source>
+        <translation>Unerreichbar: %1 (%2 m²)</translation>
+    </message>
+</context>
+<context>
+    <name>fc::ui::PathPreviewBar</name>
+    <message>
+        <source>Preview</source>
+        <translation>Vorschau</translation>
+    </message>
+    <message>
+        <source>Play</source>
+        <translation>Abspielen</translation>
+    </message>
+    <message>
+        <source>Drive the robot along the planned path.</source>
+        <translation>Den Roboter den geplanten Pfad abfahren lassen.</translation>
+    </message>
+    <message>
+        <source>Speed-up over the robot&apos;s real speed.</source>
+        <translation>Beschleunigung gegenüber der echten Geschwindigkeit des Roboters.</translation>
+    </message>
+    <message>
+        <source>Position along the path.</source>
+        <translation>Position entlang des Pfads.</translation>
+    </message>
+    <message>
+        <source>Speed</source>
+        <translation>Geschwindigkeit</translation>
+    </message>
+    <message>
+        <source>Pause</source>
+        <translation>Pause</translation>
+    </message>
+    <message>
+        <source>×%1</source>
+        <translation>×%1</translation>
+    </message>
+</context>
+<context>
+    <name>fc::ui::PdfReport</name>
+    <message>
+        <source>%1 m</source>
+        <translation>%1 m</translation>
+    </message>
+    <message>
+        <source>Solver</source>
+        <translation>Löser</translation>
+    </message>
+    <message>
+        <source>Stripe angle</source>
+        <translation>Bahnwinkel</translation>
+    </message>
+    <message>
+        <source>%1°</source>
+        <translation>%1°</translation>
+    </message>
+    <message>
+        <source>Path length</source>
+        <translation>Pfadlänge</translation>
+    </message>
+    <message>
+        <source>Ideal length</source>
+        <translation>Ideale Länge</translation>
+    </message>
+    <message>
+        <source>Extra distance</source>
+        <translation>Zusätzliche Strecke</translation>
+    </message>
+    <message>
+        <source>Turns</source>
+        <translation>Wendungen</translation>
+    </message>
+    <message>
+        <source>Coverage</source>
+        <translation>Abdeckung</translation>
+    </message>
+    <message>
+        <source>%1 %</source>
+        <translation>%1 %</translation>
+    </message>
+    <message>
+        <source>Estimated time</source>
+        <translation>Geschätzte Dauer</translation>
+    </message>
+    <message>
+        <source>%1 min</source>
+        <translation>%1 min</translation>
+    </message>
+    <message>
+        <source>Cells covered</source>
+        <translation>Abgedeckte Zellen</translation>
+    </message>
+    <message>
+        <source>Robot diameter L</source>
+        <translation>Roboterdurchmesser L</translation>
+    </message>
+    <message>
+        <source>Cleaning diameter D</source>
+        <translation>Reinigungsdurchmesser D</translation>
+    </message>
+    <message>
+        <source>Coverage width W</source>
+        <translation>Bahnbreite W</translation>
+    </message>
+    <message>
+        <source>Speed</source>
+        <translation>Geschwindigkeit</translation>
+    </message>
+    <message>
+        <source>%1 m/s</source>
+        <translation>%1 m/s</translation>
+    </message>
+    <message>
+        <source>Time per 90° turn</source>
+        <translation>Zeit je 90°-Drehung</translation>
+    </message>
+    <message>
+        <source>%1 s</source>
+        <translation>%1 s</translation>
+    </message>
+    <message>
+        <source>Coverage plan: %1</source>
+        <translation>Abdeckungsplan: %1</translation>
+    </message>
+    <message>
+        <source>Cannot write %1.</source>
+        <translation>%1 kann nicht geschrieben werden.</translation>
+    </message>
+</context>
+<context>
+    <name>fc::ui::PickRoomTool</name>
+    <message>
+        <source>Pick Rooms</source>
+        <translation>Räume wählen</translation>
+    </message>
+    <message>
+        <source>Pick Rooms: click a room to include it in or exclude it from planning.</source>
+        <translation>Räume wählen: einen Raum anklicken, um ihn in die Planung aufzunehmen oder auszuschließen.</translation>
+    </message>
+    <message>
+        <source>No room here.</source>
+        <translation>Hier ist kein Raum.</translation>
+    </message>
+</context>
+<context>
+    <name>fc::ui::PlaceEndpointTool</name>
+    <message>
+        <source>Place Start</source>
+        <translation>Start setzen</translation>
+    </message>
+    <message>
+        <source>Place End</source>
+        <translation>Ziel setzen</translation>
+    </message>
+    <message>
+        <source>Place Start: click where the robot starts (snapped to the nearest corner when planning); right-click removes it.</source>
+        <translation>Start setzen: dort klicken, wo der Roboter beginnt (beim Planen an die nächste Ecke gefangen); Rechtsklick entfernt ihn.</translation>
+    </message>
+    <message>
+        <source>Place End: click where the robot should finish; right-click removes it (the path then returns to the start).</source>
+        <translation>Ziel setzen: dort klicken, wo der Roboter enden soll; Rechtsklick entfernt es (der Pfad kehrt dann zum Start zurück).</translation>
+    </message>
+    <message>
+        <source>S</source>
+        <translation>S</translation>
+    </message>
+    <message>
+        <source>E</source>
+        <translation>Z</translation>
+    </message>
+    <message>
+        <source>%1: the point must lie inside the floor.</source>
+        <translation>%1: Der Punkt muss innerhalb der Fläche liegen.</translation>
+    </message>
+</context>
+<context>
+    <name>fc::ui::PlanScene</name>
+    <message>
+        <source>%1 (planned)</source>
+        <translation>%1 (geplant)</translation>
+    </message>
+    <message>
+        <source>%1 (not planned)</source>
+        <translation>%1 (nicht geplant)</translation>
+    </message>
+    <message>
+        <source>S</source>
+        <translation>S</translation>
+    </message>
+    <message>
+        <source>Start</source>
+        <translation>Start</translation>
+    </message>
+    <message>
+        <source>E</source>
+        <translation>Z</translation>
+    </message>
+    <message>
+        <source>End</source>
+        <translation>Ziel</translation>
+    </message>
+</context>
+<context>
+    <name>fc::ui::PlanningController</name>
+    <message>
+        <source>Draw the boundary of the floor to see cells and plan a path.</source>
+        <translation>Zeichnen Sie die Außenwand der Fläche, um Zellen zu sehen und einen Pfad zu planen.</translation>
+    </message>
+</context>
+<context>
+    <name>fc::ui::PlanningDock</name>
+    <message>
+        <source>Planning</source>
+        <translation>Planung</translation>
+    </message>
+    <message>
+        <source>Rooms to plan</source>
+        <translation>Zu planende Räume</translation>
+    </message>
+    <message>
+        <source>Check the rooms to cover; double-click a name to rename the room.</source>
+        <translation>Die abzudeckenden Räume ankreuzen; einen Namen doppelklicken, um den Raum umzubenennen.</translation>
+    </message>
+    <message>
+        <source>Plan</source>
+        <translation>Planen</translation>
+    </message>
+    <message>
+        <source>Plan the coverage path for the checked rooms (F5).</source>
+        <translation>Den Abdeckungspfad für die angekreuzten Räume planen (F5).</translation>
+    </message>
+    <message>
+        <source>Robot</source>
+        <translation>Roboter</translation>
+    </message>
+    <message>
+        <source> m</source>
+        <translation> m</translation>
+    </message>
+    <message>
+        <source> m/s</source>
+        <translation> m/s</translation>
+    </message>
+    <message>
+        <source> s</source>
+        <translation> s</translation>
+    </message>
+    <message>
+        <source>Robot diameter L</source>
+        <translation>Roboterdurchmesser L</translation>
+    </message>
+    <message>
+        <source>Cleaning diameter D</source>
+        <translation>Reinigungsdurchmesser D</translation>
+    </message>
+    <message>
+        <source>Coverage width W</source>
+        <translation>Bahnbreite W</translation>
+    </message>
+    <message>
+        <source>Speed</source>
+        <translation>Geschwindigkeit</translation>
+    </message>
+    <message>
+        <source>Time per 90° turn</source>
+        <translation>Zeit je 90°-Drehung</translation>
+    </message>
+    <message>
+        <source>Sweep</source>
+        <translation>Bahnen</translation>
+    </message>
+    <message>
+        <source>°</source>
+        <translation>°</translation>
+    </message>
+    <message>
+        <source>Auto (shortest path)</source>
+        <translation>Automatisch (kürzester Pfad)</translation>
+    </message>
+    <message>
+        <source>Stripe angle</source>
+        <translation>Bahnwinkel</translation>
+    </message>
+    <message>
+        <source>Solver</source>
+        <translation>Löser</translation>
+    </message>
+    <message>
+        <source>Metrics</source>
+        <translation>Kennzahlen</translation>
+    </message>
+    <message>
+        <source>Length</source>
+        <translation>Länge</translation>
+    </message>
+    <message>
+        <source>Extra distance</source>
+        <translation>Zusätzliche Strecke</translation>
+    </message>
+    <message>
+        <source>Turns</source>
+        <translation>Wendungen</translation>
+    </message>
+    <message>
+        <source>Coverage</source>
+        <translation>Abdeckung</translation>
+    </message>
+    <message>
+        <source>Estimated time</source>
+        <translation>Geschätzte Dauer</translation>
+    </message>
+    <message>
+        <source>Cells</source>
+        <translation>Zellen</translation>
+    </message>
+    <message>
+        <source>Planning time</source>
+        <translation>Planungszeit</translation>
+    </message>
+    <message>
+        <source>%1 m</source>
+        <translation>%1 m</translation>
+    </message>
+    <message>
+        <source>%1 %</source>
+        <translation>%1 %</translation>
+    </message>
+    <message>
+        <source>%1 min %2 s</source>
+        <translation>%1 min %2 s</translation>
+    </message>
+    <message>
+        <source>%1°</source>
+        <translation>%1°</translation>
+    </message>
+    <message>
+        <source>%1 s</source>
+        <translation>%1 s</translation>
+    </message>
+    <message>
+        <source>Planning…</source>
+        <translation>Planung läuft…</translation>
+    </message>
+</context>
+<context>
+    <name>fc::ui::PreferencesDialog</name>
+    <message>
+        <source>Preferences</source>
+        <translation>Einstellungen</translation>
+    </message>
+    <message>
+        <source>The language changes at the next start of FloorCover.</source>
+        <translation>Die Sprache wechselt beim nächsten Start von FloorCover.</translation>
+    </message>
+    <message>
+        <source>Language</source>
+        <translation>Sprache</translation>
+    </message>
+</context>
+<context>
+    <name>fc::ui::Translations</name>
+    <message>
+        <source>System language</source>
+        <translation>Systemsprache</translation>
+    </message>
+</context>
+<context>
+    <name>main</name>
+    <message>
+        <source>Coverage path planning for floor plans</source>
+        <translation>Abdeckungspfadplanung für Grundrisse</translation>
+    </message>
+    <message>
+        <source>Render the main window with overlays and a planned path to FILE (PNG) and exit.</source>
+        <translation>Das Hauptfenster mit Überlagerungen und einem geplanten Pfad in DATEI (PNG) zeichnen und beenden.</translation>
+    </message>
+    <message>
+        <source>FILE</source>
+        <translation>DATEI</translation>
+    </message>
+    <message>
+        <source>A .fcproj or .geojson file.</source>
+        <translation>Eine .fcproj- oder .geojson-Datei.</translation>
+    </message>
+</context>
+</TS>

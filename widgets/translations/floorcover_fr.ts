@@ -1,0 +1,880 @@
+<?xml version="1.0" encoding="utf-8"?>
+<!DOCTYPE TS>
+<TS version="2.1" language="fr_FR">
+<context>
+    <name>fc::ui::CanvasView</name>
+    <message>
+        <source>%1 m</source>
+        <translation>%1 m</translation>
+    </message>
+    <message>
+        <source>%1 cm</source>
+        <translation>%1 cm</translation>
+    </message>
+</context>
+<context>
+    <name>fc::ui::Document</name>
+    <message>
+        <source>Untitled</source>
+        <translation>Sans titre</translation>
+    </message>
+    <message>
+        <source>Draw the boundary first: obstacles and rooms must lie inside it.</source>
+        <translation>Dessinez d’abord le contour : les obstacles et les pièces doivent se trouver à l’intérieur.</translation>
+    </message>
+    <message>
+        <source>Room %1</source>
+        <translation>Pièce %1</translation>
+    </message>
+    <message>
+        <source>Add boundary</source>
+        <translation>Ajouter le contour</translation>
+    </message>
+    <message>
+        <source>Replace boundary</source>
+        <translation>Remplacer le contour</translation>
+    </message>
+    <message>
+        <source>Add obstacle</source>
+        <translation>Ajouter un obstacle</translation>
+    </message>
+    <message>
+        <source>Add room %1</source>
+        <translation>Ajouter la pièce %1</translation>
+    </message>
+    <message>
+        <source>Move vertex</source>
+        <translation>Déplacer le sommet</translation>
+    </message>
+    <message>
+        <source>Insert vertex</source>
+        <translation>Insérer un sommet</translation>
+    </message>
+    <message>
+        <source>A polygon needs at least three vertices; delete the polygon instead.</source>
+        <translation>Un polygone a besoin d’au moins trois sommets ; supprimez plutôt le polygone.</translation>
+    </message>
+    <message>
+        <source>Delete vertex</source>
+        <translation>Supprimer le sommet</translation>
+    </message>
+    <message>
+        <source>Delete the obstacles and rooms before the boundary.</source>
+        <translation>Supprimez les obstacles et les pièces avant le contour.</translation>
+    </message>
+    <message>
+        <source>Delete boundary</source>
+        <translation>Supprimer le contour</translation>
+    </message>
+    <message>
+        <source>Delete obstacle</source>
+        <translation>Supprimer l’obstacle</translation>
+    </message>
+    <message>
+        <source>Delete room %1</source>
+        <translation>Supprimer la pièce %1</translation>
+    </message>
+    <message>
+        <source>There is no room %1.</source>
+        <translation>Il n’y a pas de pièce %1.</translation>
+    </message>
+    <message>
+        <source>A room needs a name.</source>
+        <translation>Une pièce a besoin d’un nom.</translation>
+    </message>
+    <message>
+        <source>There is already a room named &quot;%1&quot;.</source>
+        <translation>Il existe déjà une pièce nommée « %1 ».</translation>
+    </message>
+    <message>
+        <source>Rename room %1 to %2</source>
+        <translation>Renommer la pièce %1 en %2</translation>
+    </message>
+    <message>
+        <source>Change robot profile</source>
+        <translation>Modifier le profil du robot</translation>
+    </message>
+    <message>
+        <source>The sweep angle must be a finite number of degrees.</source>
+        <translation>L’angle de balayage doit être un nombre fini de degrés.</translation>
+    </message>
+    <message>
+        <source>Change sweep angle</source>
+        <translation>Modifier l’angle de balayage</translation>
+    </message>
+    <message>
+        <source>Choose solver %1</source>
+        <translation>Choisir le solveur %1</translation>
+    </message>
+    <message>
+        <source>Place start</source>
+        <translation>Placer le départ</translation>
+    </message>
+    <message>
+        <source>Remove start</source>
+        <translation>Retirer le départ</translation>
+    </message>
+    <message>
+        <source>Place end</source>
+        <translation>Placer l’arrivée</translation>
+    </message>
+    <message>
+        <source>Remove end</source>
+        <translation>Retirer l’arrivée</translation>
+    </message>
+    <message>
+        <source>There is no room named &quot;%1&quot;.</source>
+        <translation>Il n’y a pas de pièce nommée « %1 ».</translation>
+    </message>
+    <message>
+        <source>At least one room must stay selected for planning.</source>
+        <translation>Au moins une pièce doit rester sélectionnée pour la planification.</translation>
+    </message>
+    <message>
+        <source>Deselect room %1</source>
+        <translation>Désélectionner la pièce %1</translation>
+    </message>
+    <message>
+        <source>Select room %1</source>
+        <translation>Sélectionner la pièce %1</translation>
+    </message>
+</context>
+<context>
+    <name>fc::ui::DocumentFiles</name>
+    <message>
+        <source>Cannot save %1: %2</source>
+        <translation>Impossible d’enregistrer %1 : %2</translation>
+    </message>
+</context>
+<context>
+    <name>fc::ui::DrawPolygonTool</name>
+    <message>
+        <source>Draw Boundary</source>
+        <translation>Dessiner le contour</translation>
+    </message>
+    <message>
+        <source>Draw Obstacle</source>
+        <translation>Dessiner un obstacle</translation>
+    </message>
+    <message>
+        <source>Draw Room</source>
+        <translation>Dessiner une pièce</translation>
+    </message>
+    <message>
+        <source>%1: click vertices and click the first one to close, or drag a rectangle. Shift keeps right angles, Backspace removes a vertex, Esc cancels.</source>
+        <translation>%1 : cliquez les sommets puis de nouveau le premier pour fermer, ou tracez un rectangle. Maj garde les angles droits, Retour arrière retire un sommet, Échap annule.</translation>
+    </message>
+    <message>
+        <source>A polygon needs at least three vertices.</source>
+        <translation>Un polygone a besoin d’au moins trois sommets.</translation>
+    </message>
+    <message>
+        <source>%1 refused: %2</source>
+        <translation>%1 refusé : %2</translation>
+    </message>
+</context>
+<context>
+    <name>fc::ui::EditVerticesTool</name>
+    <message>
+        <source>Edit Vertices</source>
+        <translation>Modifier les sommets</translation>
+    </message>
+    <message>
+        <source>Edit Vertices: drag a vertex to move it, double-click an edge to add one, right-click a vertex to delete it; select a polygon and press Delete to delete it.</source>
+        <translation>Modifier les sommets : faites glisser un sommet pour le déplacer, double-cliquez une arête pour en ajouter un, clic droit sur un sommet pour le supprimer ; sélectionnez un polygone et appuyez sur Suppr pour le supprimer.</translation>
+    </message>
+</context>
+<context>
+    <name>fc::ui::LegendDock</name>
+    <message>
+        <source>Legend</source>
+        <translation>Légende</translation>
+    </message>
+</context>
+<context>
+    <name>fc::ui::MainWindow</name>
+    <message>
+        <source>Tools</source>
+        <translation>Outils</translation>
+    </message>
+    <message>
+        <source>&amp;Edit</source>
+        <translation>É&amp;dition</translation>
+    </message>
+    <message>
+        <source>&amp;Undo</source>
+        <translation>&amp;Annuler</translation>
+    </message>
+    <message>
+        <source>&amp;Redo</source>
+        <translation>&amp;Rétablir</translation>
+    </message>
+    <message>
+        <source>&amp;Preferences…</source>
+        <translation>&amp;Préférences…</translation>
+    </message>
+    <message>
+        <source>&amp;Tools</source>
+        <translation>&amp;Outils</translation>
+    </message>
+    <message>
+        <source>&amp;Plan</source>
+        <translation>&amp;Planifier</translation>
+    </message>
+    <message>
+        <source>&amp;Plan Path</source>
+        <translation>&amp;Planifier le trajet</translation>
+    </message>
+    <message>
+        <source>&amp;Help</source>
+        <translation>&amp;Aide</translation>
+    </message>
+    <message>
+        <source>&amp;About FloorCover</source>
+        <translation>À &amp;propos de FloorCover</translation>
+    </message>
+    <message>
+        <source>About FloorCover</source>
+        <translation>À propos de FloorCover</translation>
+    </message>
+    <message>
+        <source>FloorCover %1
+Coverage path planning for cleaning and disinfection robots.</source>
+        <translation>FloorCover %1
+Planification de trajets de couverture pour robots de nettoyage et de désinfection.</translation>
+    </message>
+    <message>
+        <source>&amp;View</source>
+        <translation>&amp;Affichage</translation>
+    </message>
+    <message>
+        <source>&amp;Fit to Plan</source>
+        <translation>&amp;Ajuster au plan</translation>
+    </message>
+    <message>
+        <source>Zoom &amp;In</source>
+        <translation>Zoom &amp;avant</translation>
+    </message>
+    <message>
+        <source>Zoom &amp;Out</source>
+        <translation>Zoom a&amp;rrière</translation>
+    </message>
+    <message>
+        <source>Show &amp;Grid</source>
+        <translation>Afficher la &amp;grille</translation>
+    </message>
+    <message>
+        <source>Snap to G&amp;rid</source>
+        <translation>Aimanter à la g&amp;rille</translation>
+    </message>
+    <message>
+        <source>Snap to &amp;Vertices</source>
+        <translation>Aimanter aux &amp;sommets</translation>
+    </message>
+    <message>
+        <source>&amp;Overlays</source>
+        <translation>&amp;Calques</translation>
+    </message>
+    <message>
+        <source>x %1 m   y %2 m</source>
+        <translation>x %1 m   y %2 m</translation>
+    </message>
+    <message>
+        <source>%1[*] – FloorCover</source>
+        <translation>%1[*] – FloorCover</translation>
+    </message>
+    <message>
+        <source>FloorCover</source>
+        <translation>FloorCover</translation>
+    </message>
+    <message>
+        <source>Unsaved changes</source>
+        <translation>Modifications non enregistrées</translation>
+    </message>
+    <message>
+        <source>%1 has unsaved changes. Save them?</source>
+        <translation>%1 a des modifications non enregistrées. Les enregistrer ?</translation>
+    </message>
+    <message>
+        <source>Recover unsaved changes</source>
+        <translation>Récupérer les modifications non enregistrées</translation>
+    </message>
+    <message>
+        <source>FloorCover did not close normally last time. Recover the unsaved changes?</source>
+        <translation>FloorCover ne s’est pas fermé normalement la dernière fois. Récupérer les modifications non enregistrées ?</translation>
+    </message>
+    <message>
+        <source>Recovered the unsaved changes of the last session.</source>
+        <translation>Les modifications non enregistrées de la dernière session ont été récupérées.</translation>
+    </message>
+    <message>
+        <source>Opened %1</source>
+        <translation>%1 ouvert</translation>
+    </message>
+    <message>
+        <source>&amp;File</source>
+        <translation>&amp;Fichier</translation>
+    </message>
+    <message>
+        <source>&amp;New</source>
+        <translation>&amp;Nouveau</translation>
+    </message>
+    <message>
+        <source>&amp;Open…</source>
+        <translation>&amp;Ouvrir…</translation>
+    </message>
+    <message>
+        <source>Open &amp;Sample Plan</source>
+        <translation>Ouvrir le plan d’&amp;exemple</translation>
+    </message>
+    <message>
+        <source>Open &amp;Recent</source>
+        <translation>Fichiers &amp;récents</translation>
+    </message>
+    <message>
+        <source>&amp;Save</source>
+        <translation>&amp;Enregistrer</translation>
+    </message>
+    <message>
+        <source>Save &amp;As…</source>
+        <translation>Enregistrer &amp;sous…</translation>
+    </message>
+    <message>
+        <source>&amp;Export Path…</source>
+        <translation>E&amp;xporter le trajet…</translation>
+    </message>
+    <message>
+        <source>Export View as &amp;PNG…</source>
+        <translation>Exporter la vue en &amp;PNG…</translation>
+    </message>
+    <message>
+        <source>Export View as S&amp;VG…</source>
+        <translation>Exporter la vue en S&amp;VG…</translation>
+    </message>
+    <message>
+        <source>Export &amp;Report as PDF…</source>
+        <translation>Exporter le &amp;rapport en PDF…</translation>
+    </message>
+    <message>
+        <source>Export Report</source>
+        <translation>Exporter le rapport</translation>
+    </message>
+    <message>
+        <source>PDF documents (*.pdf)</source>
+        <translation>Documents PDF (*.pdf)</translation>
+    </message>
+    <message>
+        <source>&amp;Quit</source>
+        <translation>&amp;Quitter</translation>
+    </message>
+    <message>
+        <source>Open Plan</source>
+        <translation>Ouvrir un plan</translation>
+    </message>
+    <message>
+        <source>Plans and projects (*.fcproj *.geojson *.json);;FloorCover projects (*.fcproj);;GeoJSON plans (*.geojson *.json)</source>
+        <translation>Plans et projets (*.fcproj *.geojson *.json);;Projets FloorCover (*.fcproj);;Plans GeoJSON (*.geojson *.json)</translation>
+    </message>
+    <message>
+        <source>Save Project</source>
+        <translation>Enregistrer le projet</translation>
+    </message>
+    <message>
+        <source>FloorCover projects (*.fcproj)</source>
+        <translation>Projets FloorCover (*.fcproj)</translation>
+    </message>
+    <message>
+        <source>Saved %1</source>
+        <translation>%1 enregistré</translation>
+    </message>
+    <message>
+        <source>There is no path to export: plan the current document first.</source>
+        <translation>Aucun trajet à exporter : planifiez d’abord le document courant.</translation>
+    </message>
+    <message>
+        <source>Cannot export the path to %1: %2</source>
+        <translation>Impossible d’exporter le trajet vers %1 : %2</translation>
+    </message>
+    <message>
+        <source>Exported the path to %1</source>
+        <translation>Trajet exporté vers %1</translation>
+    </message>
+    <message>
+        <source>Export Path</source>
+        <translation>Exporter le trajet</translation>
+    </message>
+    <message>
+        <source>GeoJSON (*.geojson);;CSV (*.csv);;JSON (*.json);;ROS 2 nav_msgs/Path (*.yaml)</source>
+        <translation>GeoJSON (*.geojson);;CSV (*.csv);;JSON (*.json);;ROS 2 nav_msgs/Path (*.yaml)</translation>
+    </message>
+    <message>
+        <source>Floor plan exported by FloorCover</source>
+        <translation>Plan exporté par FloorCover</translation>
+    </message>
+    <message>
+        <source>Cannot write %1.</source>
+        <translation>Impossible d’écrire %1.</translation>
+    </message>
+    <message>
+        <source>Exported the view to %1</source>
+        <translation>Vue exportée vers %1</translation>
+    </message>
+    <message>
+        <source>SVG images (*.svg)</source>
+        <translation>Images SVG (*.svg)</translation>
+    </message>
+    <message>
+        <source>PNG images (*.png)</source>
+        <translation>Images PNG (*.png)</translation>
+    </message>
+    <message>
+        <source>Export View</source>
+        <translation>Exporter la vue</translation>
+    </message>
+    <message>
+        <source>There is no plan to report: plan the current document first.</source>
+        <translation>Aucune planification pour le rapport : planifiez d’abord le document courant.</translation>
+    </message>
+    <message>
+        <source>Exported the report to %1</source>
+        <translation>Rapport exporté vers %1</translation>
+    </message>
+    <message>
+        <source>planning failed: %1</source>
+        <translation>échec de la planification : %1</translation>
+    </message>
+    <message>
+        <source>cannot write %1</source>
+        <translation>impossible d’écrire %1</translation>
+    </message>
+</context>
+<context>
+    <name>fc::ui::OverlayLayer</name>
+    <message>
+        <source>Primary Cells</source>
+        <translation>Cellules primaires</translation>
+    </message>
+    <message>
+        <source>Transition Cells</source>
+        <translation>Cellules de transition</translation>
+    </message>
+    <message>
+        <source>Critical Slices</source>
+        <translation>Tranches critiques</translation>
+    </message>
+    <message>
+        <source>Corner Nodes</source>
+        <translation>Nœuds de coin</translation>
+    </message>
+    <message>
+        <source>Coverage Edges</source>
+        <translation>Arêtes de couverture</translation>
+    </message>
+    <message>
+        <source>Contour Edges</source>
+        <translation>Arêtes de contour</translation>
+    </message>
+    <message>
+        <source>Inter-cell Edges</source>
+        <translation>Arêtes entre cellules</translation>
+    </message>
+    <message>
+        <source>Path</source>
+        <translation>Trajet</translation>
+    </message>
+    <message>
+        <source>Overlap Segments</source>
+        <translation>Chevauchements</translation>
+    </message>
+    <message>
+        <source>Unreachable Areas</source>
+        <translation>Zones inaccessibles</translation>
+    </message>
+    <message>
+        <source>Unreachable: %1 (%2 m²)</source>
+        <translation>Inaccessible : %1 (%2 m²)</translation>
+    </message>
+</context>
+<context>
+    <name>fc::ui::PathPreviewBar</name>
+    <message>
+        <source>Preview</source>
+        <translation>Aperçu</translation>
+    </message>
+    <message>
+        <source>Play</source>
+        <translation>Lecture</translation>
+    </message>
+    <message>
+        <source>Drive the robot along the planned path.</source>
+        <translation>Faire parcourir le trajet planifié au robot.</translation>
+    </message>
+    <message>
+        <source>Speed-up over the robot&apos;s real speed.</source>
+        <translation>Accélération par rapport à la vitesse réelle du robot.</translation>
+    </message>
+    <message>
+        <source>Position along the path.</source>
+        <translation>Position le long du trajet.</translation>
+    </message>
+    <message>
+        <source>Speed</source>
+        <translation>Vitesse</translation>
+    </message>
+    <message>
+        <source>Pause</source>
+        <translation>Pause</translation>
+    </message>
+    <message>
+        <source>×%1</source>
+        <translation>×%1</translation>
+    </message>
+</context>
+<context>
+    <name>fc::ui::PdfReport</name>
+    <message>
+        <source>%1 m</source>
+        <translation>%1 m</translation>
+    </message>
+    <message>
+        <source>Solver</source>
+        <translation>Solveur</translation>
+    </message>
+    <message>
+        <source>Stripe angle</source>
+        <translation>Angle des bandes</translation>
+    </message>
+    <message>
+        <source>%1°</source>
+        <translation>%1°</translation>
+    </message>
+    <message>
+        <source>Path length</source>
+        <translation>Longueur du trajet</translation>
+    </message>
+    <message>
+        <source>Ideal length</source>
+        <translation>Longueur idéale</translation>
+    </message>
+    <message>
+        <source>Extra distance</source>
+        <translation>Distance supplémentaire</translation>
+    </message>
+    <message>
+        <source>Turns</source>
+        <translation>Virages</translation>
+    </message>
+    <message>
+        <source>Coverage</source>
+        <translation>Couverture</translation>
+    </message>
+    <message>
+        <source>%1 %</source>
+        <translation>%1 %</translation>
+    </message>
+    <message>
+        <source>Estimated time</source>
+        <translation>Durée estimée</translation>
+    </message>
+    <message>
+        <source>%1 min</source>
+        <translation>%1 min</translation>
+    </message>
+    <message>
+        <source>Cells covered</source>
+        <translation>Cellules couvertes</translation>
+    </message>
+    <message>
+        <source>Robot diameter L</source>
+        <translation>Diamètre du robot L</translation>
+    </message>
+    <message>
+        <source>Cleaning diameter D</source>
+        <translation>Diamètre de nettoyage D</translation>
+    </message>
+    <message>
+        <source>Coverage width W</source>
+        <translation>Largeur de couverture W</translation>
+    </message>
+    <message>
+        <source>Speed</source>
+        <translation>Vitesse</translation>
+    </message>
+    <message>
+        <source>%1 m/s</source>
+        <translation>%1 m/s</translation>
+    </message>
+    <message>
+        <source>Time per 90° turn</source>
+        <translation>Durée par virage de 90°</translation>
+    </message>
+    <message>
+        <source>%1 s</source>
+        <translation>%1 s</translation>
+    </message>
+    <message>
+        <source>Coverage plan: %1</source>
+        <translation>Plan de couverture : %1</translation>
+    </message>
+    <message>
+        <source>Cannot write %1.</source>
+        <translation>Impossible d’écrire %1.</translation>
+    </message>
+</context>
+<context>
+    <name>fc::ui::PickRoomTool</name>
+    <message>
+        <source>Pick Rooms</source>
+        <translation>Choisir les pièces</translation>
+    </message>
+    <message>
+        <source>Pick Rooms: click a room to include it in or exclude it from planning.</source>
+        <translation>Choisir les pièces : cliquez une pièce pour l’inclure dans la planification ou l’en exclure.</translation>
+    </message>
+    <message>
+        <source>No room here.</source>
+        <translation>Aucune pièce ici.</translation>
+    </message>
+</context>
+<context>
+    <name>fc::ui::PlaceEndpointTool</name>
+    <message>
+        <source>Place Start</source>
+        <translation>Placer le départ</translation>
+    </message>
+    <message>
+        <source>Place End</source>
+        <translation>Placer l’arrivée</translation>
+    </message>
+    <message>
+        <source>Place Start: click where the robot starts (snapped to the nearest corner when planning); right-click removes it.</source>
+        <translation>Placer le départ : cliquez là où le robot commence (aimanté au coin le plus proche lors de la planification) ; clic droit pour le retirer.</translation>
+    </message>
+    <message>
+        <source>Place End: click where the robot should finish; right-click removes it (the path then returns to the start).</source>
+        <translation>Placer l’arrivée : cliquez là où le robot doit finir ; clic droit pour la retirer (le trajet revient alors au départ).</translation>
+    </message>
+    <message>
+        <source>S</source>
+        <translation>D</translation>
+    </message>
+    <message>
+        <source>E</source>
+        <translation>A</translation>
+    </message>
+    <message>
+        <source>%1: the point must lie inside the floor.</source>
+        <translation>%1 : le point doit se trouver dans la surface.</translation>
+    </message>
+</context>
+<context>
+    <name>fc::ui::PlanScene</name>
+    <message>
+        <source>%1 (planned)</source>
+        <translation>%1 (planifiée)</translation>
+    </message>
+    <message>
+        <source>%1 (not planned)</source>
+        <translation>%1 (non planifiée)</translation>
+    </message>
+    <message>
+        <source>S</source>
+        <translation>D</translation>
+    </message>
+    <message>
+        <source>Start</source>
+        <translation>Départ</translation>
+    </message>
+    <message>
+        <source>E</source>
+        <translation>A</translation>
+    </message>
+    <message>
+        <source>End</source>
+        <translation>Arrivée</translation>
+    </message>
+</context>
+<context>
+    <name>fc::ui::PlanningController</name>
+    <message>
+        <source>Draw the boundary of the floor to see cells and plan a path.</source>
+        <translation>Dessinez le contour de la surface pour voir les cellules et planifier un trajet.</translation>
+    </message>
+</context>
+<context>
+    <name>fc::ui::PlanningDock</name>
+    <message>
+        <source>Planning</source>
+        <translation>Planification</translation>
+    </message>
+    <message>
+        <source>Rooms to plan</source>
+        <translation>Pièces à planifier</translation>
+    </message>
+    <message>
+        <source>Check the rooms to cover; double-click a name to rename the room.</source>
+        <translation>Cochez les pièces à couvrir ; double-cliquez un nom pour renommer la pièce.</translation>
+    </message>
+    <message>
+        <source>Plan</source>
+        <translation>Planifier</translation>
+    </message>
+    <message>
+        <source>Plan the coverage path for the checked rooms (F5).</source>
+        <translation>Planifier le trajet de couverture des pièces cochées (F5).</translation>
+    </message>
+    <message>
+        <source>Robot</source>
+        <translation>Robot</translation>
+    </message>
+    <message>
+        <source> m</source>
+        <translation> m</translation>
+    </message>
+    <message>
+        <source> m/s</source>
+        <translation> m/s</translation>
+    </message>
+    <message>
+        <source> s</source>
+        <translation> s</translation>
+    </message>
+    <message>
+        <source>Robot diameter L</source>
+        <translation>Diamètre du robot L</translation>
+    </message>
+    <message>
+        <source>Cleaning diameter D</source>
+        <translation>Diamètre de nettoyage D</translation>
+    </message>
+    <message>
+        <source>Coverage width W</source>
+        <translation>Largeur de couverture W</translation>
+    </message>
+    <message>
+        <source>Speed</source>
+        <translation>Vitesse</translation>
+    </message>
+    <message>
+        <source>Time per 90° turn</source>
+        <translation>Durée par virage de 90°</translation>
+    </message>
+    <message>
+        <source>Sweep</source>
+        <translation>Balayage</translation>
+    </message>
+    <message>
+        <source>°</source>
+        <translation>°</translation>
+    </message>
+    <message>
+        <source>Auto (shortest path)</source>
+        <translation>Automatique (trajet le plus court)</translation>
+    </message>
+    <message>
+        <source>Stripe angle</source>
+        <translation>Angle des bandes</translation>
+    </message>
+    <message>
+        <source>Solver</source>
+        <translation>Solveur</translation>
+    </message>
+    <message>
+        <source>Metrics</source>
+        <translation>Mesures</translation>
+    </message>
+    <message>
+        <source>Length</source>
+        <translation>Longueur</translation>
+    </message>
+    <message>
+        <source>Extra distance</source>
+        <translation>Distance supplémentaire</translation>
+    </message>
+    <message>
+        <source>Turns</source>
+        <translation>Virages</translation>
+    </message>
+    <message>
+        <source>Coverage</source>
+        <translation>Couverture</translation>
+    </message>
+    <message>
+        <source>Estimated time</source>
+        <translation>Durée estimée</translation>
+    </message>
+    <message>
+        <source>Cells</source>
+        <translation>Cellules</translation>
+    </message>
+    <message>
+        <source>Planning time</source>
+        <translation>Temps de planification</translation>
+    </message>
+    <message>
+        <source>%1 m</source>
+        <translation>%1 m</translation>
+    </message>
+    <message>
+        <source>%1 %</source>
+        <translation>%1 %</translation>
+    </message>
+    <message>
+        <source>%1 min %2 s</source>
+        <translation>%1 min %2 s</translation>
+    </message>
+    <message>
+        <source>%1°</source>
+        <translation>%1°</translation>
+    </message>
+    <message>
+        <source>%1 s</source>
+        <translation>%1 s</translation>
+    </message>
+    <message>
+        <source>Planning…</source>
+        <translation>Planification…</translation>
+    </message>
+</context>
+<context>
+    <name>fc::ui::PreferencesDialog</name>
+    <message>
+        <source>Preferences</source>
+        <translation>Préférences</translation>
+    </message>
+    <message>
+        <source>The language changes at the next start of FloorCover.</source>
+        <translation>La langue change au prochain démarrage de FloorCover.</translation>
+    </message>
+    <message>
+        <source>Language</source>
+        <translation>Langue</translation>
+    </message>
+</context>
+<context>
+    <name>fc::ui::Translations</name>
+    <message>
+        <source>System language</source>
+        <translation>Langue du système</translation>
+    </message>
+</context>
+<context>
+    <name>main</name>
+    <message>
+        <source>Coverage path planning for floor plans</source>
+        <translation>Planification de trajets de couverture pour plans d’étage</translation>
+    </message>
+    <message>
+        <source>Render the main window with overlays and a planned path to FILE (PNG) and exit.</source>
+        <translation>Rendre la fenêtre principale avec les calques et un trajet planifié dans FICHIER (PNG) puis quitter.</translation>
+    </message>
+    <message>
+        <source>FILE</source>
+        <translation>FICHIER</translation>
+    </message>
+    <message>
+        <source>A .fcproj or .geojson file.</source>
+        <translation>Un fichier .fcproj ou .geojson.</translation>
+    </message>
+</context>
+</TS>
