@@ -5,6 +5,7 @@
 
 #include <QApplication>
 #include <QCommandLineParser>
+#include <QIcon>
 #include <cstdio>
 
 int main(int argc, char** argv) {
@@ -12,6 +13,8 @@ int main(int argc, char** argv) {
     QApplication::setOrganizationName(QStringLiteral("FloorCover"));
     QApplication::setApplicationName(QStringLiteral("FloorCover"));
     QApplication::setApplicationVersion(QStringLiteral(FC_VERSION));
+    QApplication::setWindowIcon(QIcon(QStringLiteral(":/icons/floorcover.svg")));
+    QApplication::setDesktopFileName(QStringLiteral("floorcover"));
     fc::ui::installTranslations(app);
 
     QCommandLineParser parser;
