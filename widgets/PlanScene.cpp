@@ -2,6 +2,7 @@
 
 #include "Conversions.h"
 #include "OverlayLayer.h"
+#include "PlanningController.h"
 #include "SceneStyle.h"
 
 #include <QBrush>
@@ -33,7 +34,12 @@ void PlanScene::setDocument(Document* document) {
 }
 
 void PlanScene::setPlanningController(PlanningController* controller) {
+    if (controller_)
+        disconnect(controller_, nullptr, this, nullptr);
+    controller_ = controller;
     overlays_->setPlanningController(controller);
+    // The markers show the corner the planner snaps them to, which needs the graph.
+    connect(controller, &PlanningController::preparedChanged, this, &PlanScene::rebuildMarkers);
 }
 
 void PlanScene::updateSceneRect() {
@@ -99,6 +105,26 @@ void PlanScene::rebuildMarkers() {
     if (!document_)
         return;
     const Project& project = document_->project();
+    const auto prepared = controller_ ? controller_->prepared() : nullptr;
+    const auto showSnap = [&](Vec2 point) {
+        if (!prepared || prepared->graph.nodes.empty())
+            return;
+        const Frame& frame = prepared->decomposition.frame;
+        const int node = nearestNode(prepared->graph, frame.toLocal(point));
+        const QPointF corner = toQt(frame.toWorld(prepared->graph.nodes[node].position));
+        QPainterPath link;
+        link.moveTo(toQt(point));
+        link.lineTo(corner);
+        const double r = 0.12 * prepared->robot.coverageWidth;
+        link.addEllipse(corner, r, r);
+        auto* item = new QGraphicsPathItem(link, markers_);
+        item->setPen(style::cosmeticPen(QColor(90, 90, 90), 1.5, Qt::DashLine));
+        item->setToolTip(tr("The corner the planner starts or ends at"));
+    };
+    if (project.hasStart)
+        showSnap(project.start);
+    if (project.hasEnd)
+        showSnap(project.end);
     if (project.hasStart)
         style::addMarker(markers_, toQt(project.start), tr("S"), QColor(0, 150, 60), tr("Start"));
     if (project.hasEnd)

@@ -45,6 +45,7 @@ private:
     void updateSceneRect();
 
     QPointer<Document> document_;
+    QPointer<PlanningController> controller_;
     OverlayLayer* overlays_;
     QGraphicsItemGroup* polygons_ = nullptr;
     QGraphicsItemGroup* markers_ = nullptr;
