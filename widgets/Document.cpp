@@ -192,8 +192,16 @@ bool Document::addPolygon(PolygonRole role, const Ring& ring) {
     return pushChange(changed, changes, text);
 }
 
+bool Document::isValid(PolygonRef ref, int vertex) const {
+    if (ref.index < 0 || ref.index >= polygonCount(ref.role))
+        return false;
+    return vertex < 0 || vertex < static_cast<int>(ring(ref).size());
+}
+
 bool Document::replaceRing(PolygonRef ref, const Ring& ring, const QString& commandText,
                            int mergeId) {
+    if (!isValid(ref))
+        return reject(tr("There is no such polygon."));
     Project changed = project_;
     switch (ref.role) {
     case PolygonRole::Boundary:
@@ -210,12 +218,16 @@ bool Document::replaceRing(PolygonRef ref, const Ring& ring, const QString& comm
 }
 
 bool Document::moveVertex(PolygonRef ref, int vertex, Vec2 position) {
+    if (!isValid(ref, vertex) || vertex < 0)
+        return reject(tr("There is no such vertex."));
     Ring moved = ring(ref);
     moved.at(vertex) = position;
     return replaceRing(ref, moved, tr("Move vertex"));
 }
 
 bool Document::insertVertex(PolygonRef ref, int beforeVertex, Vec2 position) {
+    if (!isValid(ref))
+        return reject(tr("There is no such polygon."));
     Ring grown = ring(ref);
     grown.insert(grown.begin() + std::clamp(beforeVertex, 0, static_cast<int>(grown.size())),
                  position);
@@ -223,6 +235,8 @@ bool Document::insertVertex(PolygonRef ref, int beforeVertex, Vec2 position) {
 }
 
 bool Document::deleteVertex(PolygonRef ref, int vertex) {
+    if (!isValid(ref, vertex) || vertex < 0)
+        return reject(tr("There is no such vertex."));
     Ring shrunk = ring(ref);
     if (shrunk.size() <= 3)
         return reject(tr("A polygon needs at least three vertices; delete the polygon instead."));
@@ -231,6 +245,8 @@ bool Document::deleteVertex(PolygonRef ref, int vertex) {
 }
 
 bool Document::deletePolygon(PolygonRef ref) {
+    if (!isValid(ref))
+        return reject(tr("There is no such polygon."));
     Project changed = project_;
     unsigned changes = GeometryChange;
     QString text;

@@ -54,6 +54,8 @@ public:
     void markModified();
 
     int polygonCount(PolygonRole role) const;
+    // Whether the polygon (and, when vertex >= 0, its vertex) exists.
+    bool isValid(PolygonRef ref, int vertex = -1) const;
     const Ring& ring(PolygonRef ref) const;
     // The names the planner uses for selection: the rooms, or "Floor" when there are none.
     QStringList roomNames() const;

@@ -198,18 +198,24 @@ void PlanningDock::refreshSolver() {
 
 void PlanningDock::refreshRooms() {
     const QSignalBlocker blocker(rooms_);
-    rooms_->clear();
-    if (!document_)
-        return;
-    const bool named = document_->polygonCount(PolygonRole::Room) > 0;
-    for (const QString& name : document_->roomNames()) {
-        auto* item = new QListWidgetItem(name, rooms_);
-        item->setData(Qt::UserRole, name);
-        Qt::ItemFlags flags = item->flags() | Qt::ItemIsUserCheckable;
+    const QStringList names = document_ ? document_->roomNames() : QStringList();
+    // Items are updated in place when the rooms are the same in number: this runs inside
+    // itemChanged of an item the user edits, which must not be deleted under Qt's feet.
+    if (rooms_->count() != names.size()) {
+        rooms_->clear();
+        for (int i = 0; i < names.size(); ++i)
+            new QListWidgetItem(rooms_);
+    }
+    const bool named = document_ && document_->polygonCount(PolygonRole::Room) > 0;
+    for (int i = 0; i < names.size(); ++i) {
+        QListWidgetItem* item = rooms_->item(i);
+        item->setText(names[i]);
+        item->setData(Qt::UserRole, names[i]);
+        Qt::ItemFlags flags = Qt::ItemIsEnabled | Qt::ItemIsSelectable | Qt::ItemIsUserCheckable;
         if (named) // "Floor" is the planner's name for a plan without rooms
             flags |= Qt::ItemIsEditable;
         item->setFlags(flags);
-        item->setCheckState(document_->isRoomSelected(name) ? Qt::Checked : Qt::Unchecked);
+        item->setCheckState(document_->isRoomSelected(names[i]) ? Qt::Checked : Qt::Unchecked);
     }
 }
 

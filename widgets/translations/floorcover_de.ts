@@ -138,6 +138,14 @@
         <source>Select room %1</source>
         <translation>Raum %1 auswählen</translation>
     </message>
+    <message>
+        <source>There is no such polygon.</source>
+        <translation>Dieses Polygon gibt es nicht.</translation>
+    </message>
+    <message>
+        <source>There is no such vertex.</source>
+        <translation>Diesen Eckpunkt gibt es nicht.</translation>
+    </message>
 </context>
 <context>
     <name>fc::ui::DocumentFiles</name>
@@ -692,6 +700,10 @@ Abdeckungspfadplanung für Reinigungs- und Desinfektionsroboter.</translation>
     <message>
         <source>End</source>
         <translation>Ziel</translation>
+    </message>
+    <message>
+        <source>The corner the planner starts or ends at</source>
+        <translation>Die Ecke, an der der Planer beginnt oder endet</translation>
     </message>
 </context>
 <context>

@@ -138,6 +138,14 @@
         <source>Select room %1</source>
         <translation>Sélectionner la pièce %1</translation>
     </message>
+    <message>
+        <source>There is no such polygon.</source>
+        <translation>Ce polygone n’existe pas.</translation>
+    </message>
+    <message>
+        <source>There is no such vertex.</source>
+        <translation>Ce sommet n’existe pas.</translation>
+    </message>
 </context>
 <context>
     <name>fc::ui::DocumentFiles</name>
@@ -692,6 +700,10 @@ Planification de trajets de couverture pour robots de nettoyage et de désinfect
     <message>
         <source>End</source>
         <translation>Arrivée</translation>
+    </message>
+    <message>
+        <source>The corner the planner starts or ends at</source>
+        <translation>Le coin où le planificateur commence ou finit</translation>
     </message>
 </context>
 <context>
