@@ -31,6 +31,7 @@ public:
     QListWidget* roomList() const { return rooms_; }
     QDoubleSpinBox* widthBox() const { return width_; }
     QComboBox* solverBox() const { return solver_; }
+    QCheckBox* autoAngleBox() const { return autoAngle_; }
     // The metric labels by key: length, extra, turns, coverage, time (tests).
     QString metricText(const QString& key) const;
     // Adds a section (e.g. the path preview) below the metrics.

@@ -1,0 +1,94 @@
+// Window-level behaviour: the automatic sweep angle, recent files, preferences.
+#include "EditorFixture.h"
+#include "PlanningController.h"
+#include "PlanningDock.h"
+#include "PreferencesDialog.h"
+#include "Translations.h"
+
+#include <QCheckBox>
+#include <QComboBox>
+#include <QMenu>
+#include <QMenuBar>
+#include <QStandardPaths>
+#include <QTemporaryDir>
+#include <QUndoStack>
+
+using namespace fc::ui;
+using namespace fc::ui::test;
+
+class WindowTest : public QObject {
+    Q_OBJECT
+
+private:
+    QTemporaryDir dir_;
+
+private slots:
+    void initTestCase();
+    void autoAngleIsOneOfTheCandidates();
+    void savedFileAppearsInRecentFiles();
+    void preferencesStoreTheLanguage();
+    void newDocumentStartsWithTheBoundaryTool();
+};
+
+void WindowTest::initTestCase() {
+    QStandardPaths::setTestModeEnabled(true);
+    QCoreApplication::setOrganizationName(QStringLiteral("FloorCoverTests"));
+    QCoreApplication::setApplicationName(QStringLiteral("gui_window"));
+    QVERIFY(dir_.isValid());
+}
+
+void WindowTest::autoAngleIsOneOfTheCandidates() {
+    auto window = makeWindow();
+    QVERIFY(window->openFile(QStringLiteral(FC_PLANS_DIR "/simple-diamond.geojson")));
+    window->planningDock()->autoAngleBox()->setChecked(true);
+    QVERIFY(window->document()->project().sweep.automatic);
+    QVERIFY(window->planningController()->planAndWait());
+    const double angle = window->planningController()->result()->stripeAngleDeg;
+    const std::vector<double> candidates = fc::candidateAngles(window->document()->plan());
+    QVERIFY(std::find(candidates.begin(), candidates.end(), angle) != candidates.end());
+    QVERIFY(window->planningDock()
+                ->metricText(QStringLiteral("angle"))
+                .startsWith(QLocale().toString(angle, 'f', 1)));
+    window->document()->undoStack()->undo();
+    QVERIFY(!window->planningDock()->autoAngleBox()->isChecked());
+}
+
+void WindowTest::savedFileAppearsInRecentFiles() {
+    auto window = makeWindow();
+    window->openSample();
+    const QString path = dir_.filePath(QStringLiteral("office.fcproj"));
+    QVERIFY(window->saveFile(path));
+    QMenu* recent = nullptr;
+    for (QMenu* menu : window->menuBar()->findChildren<QMenu*>())
+        if (menu->title() == QStringLiteral("Open &Recent"))
+            recent = menu;
+    QVERIFY(recent);
+    QVERIFY(!recent->actions().isEmpty());
+    QCOMPARE(recent->actions().first()->text(), QStringLiteral("office.fcproj"));
+    // The entry opens the file.
+    window->newDocument();
+    recent->actions().first()->trigger();
+    QCOMPARE(window->document()->fileName(), QFileInfo(path).absoluteFilePath());
+}
+
+void WindowTest::preferencesStoreTheLanguage() {
+    const QString before = languageSetting();
+    PreferencesDialog dialog;
+    QComboBox* box = dialog.languageBox();
+    box->setCurrentIndex(box->findData(QStringLiteral("de")));
+    dialog.accept();
+    QCOMPARE(languageSetting(), QStringLiteral("de"));
+    setLanguageSetting(before);
+}
+
+void WindowTest::newDocumentStartsWithTheBoundaryTool() {
+    auto window = makeWindow();
+    window->openSample();
+    window->newDocument();
+    QVERIFY(window->document()->plan().boundary.empty());
+    QCOMPARE(window->toolManager()->activeTool()->objectName(), QStringLiteral("drawBoundary"));
+    QVERIFY(!window->document()->isModified());
+}
+
+QTEST_MAIN(WindowTest)
+#include "test_window.moc"
