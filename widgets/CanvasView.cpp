@@ -39,6 +39,15 @@ CanvasView::CanvasView(QWidget* parent) : QGraphicsView(parent) {
     setTransform(QTransform::fromScale(40.0, -40.0));
 }
 
+void CanvasView::setTool(AbstractTool* tool) {
+    tool_ = tool;
+    restoreToolCursor();
+}
+
+void CanvasView::restoreToolCursor() {
+    viewport()->setCursor(tool_ ? tool_->cursor() : QCursor(Qt::ArrowCursor));
+}
+
 double CanvasView::metresPerPixel() const {
     const double scale = std::abs(transform().m11());
     return scale > 0 ? 1.0 / scale : 1.0;
@@ -139,7 +148,10 @@ void CanvasView::mouseMoveEvent(QMouseEvent* event) {
 void CanvasView::mouseReleaseEvent(QMouseEvent* event) {
     if (panning_) {
         panning_ = false;
-        viewport()->setCursor(spaceHeld_ ? Qt::OpenHandCursor : Qt::ArrowCursor);
+        if (spaceHeld_)
+            viewport()->setCursor(Qt::OpenHandCursor);
+        else
+            restoreToolCursor();
         event->accept();
         return;
     }
@@ -172,7 +184,7 @@ void CanvasView::keyReleaseEvent(QKeyEvent* event) {
     if (event->key() == Qt::Key_Space && !event->isAutoRepeat()) {
         spaceHeld_ = false;
         if (!panning_)
-            viewport()->setCursor(Qt::ArrowCursor);
+            restoreToolCursor();
         event->accept();
         return;
     }

@@ -19,7 +19,7 @@ public:
     explicit CanvasView(QWidget* parent = nullptr);
 
     void setDocument(Document* document) { document_ = document; }
-    void setTool(AbstractTool* tool) { tool_ = tool; }
+    void setTool(AbstractTool* tool);
     Snapper& snapper() { return snapper_; }
 
     double metresPerPixel() const;
@@ -52,6 +52,7 @@ private:
     void scrollBy(QPoint pixels);
     ToolMouseEvent toolEvent(QMouseEvent* event) const;
     bool startsPan(QMouseEvent* event) const;
+    void restoreToolCursor();
 
     QPointer<Document> document_;
     QPointer<AbstractTool> tool_;

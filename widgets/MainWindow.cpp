@@ -20,6 +20,7 @@
 #include <QAction>
 #include <QApplication>
 #include <QCloseEvent>
+#include <QDockWidget>
 #include <QLabel>
 #include <QMenuBar>
 #include <QMessageBox>
@@ -27,6 +28,7 @@
 #include <QToolBar>
 #include <QUndoGroup>
 #include <QUndoStack>
+#include <QUndoView>
 
 namespace fc::ui {
 
@@ -151,8 +153,15 @@ void MainWindow::createViewMenu() {
     viewMenu->addAction(planningDock_->toggleViewAction());
     legendDock_ = new LegendDock(overlayActions_, this);
     addDockWidget(Qt::RightDockWidgetArea, legendDock_);
-    tabifyDockWidget(legendDock_, planningDock_); // the planning panel in front
+    // The undo history, as in Tiled: click an entry to go back to that state.
+    auto* history = new QDockWidget(tr("History"), this);
+    history->setObjectName(QStringLiteral("HistoryDock"));
+    history->setWidget(new QUndoView(undoGroup_));
+    addDockWidget(Qt::RightDockWidgetArea, history);
+    tabifyDockWidget(legendDock_, history);
+    tabifyDockWidget(history, planningDock_); // the planning panel in front
     viewMenu->addAction(legendDock_->toggleViewAction());
+    viewMenu->addAction(history->toggleViewAction());
 }
 
 void MainWindow::createStatusBar() {

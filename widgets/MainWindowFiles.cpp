@@ -219,6 +219,7 @@ bool MainWindow::exportReport(const QString& path) {
 
 bool MainWindow::renderScreenshot(const QString& path, const QString& planPath, QString* error) {
     setDialogsEnabled(false);
+    setAttribute(Qt::WA_DontShowOnScreen); // rendered, never mapped on a real display
     resize(1400, 900);
     show();
     if (planPath.isEmpty())

@@ -6,9 +6,28 @@
 #include <QApplication>
 #include <QCommandLineParser>
 #include <QIcon>
+#include <algorithm>
 #include <cstdio>
+#include <cstring>
+
+namespace {
+
+// `--screenshot` needs no display: without one (and without a platform chosen by the
+// user) it renders offscreen instead of failing to connect.
+void preferOffscreenForScreenshots(int argc, char** argv) {
+    const bool screenshot = std::any_of(argv + 1, argv + argc, [](const char* arg) {
+        return std::strncmp(arg, "--screenshot", 12) == 0;
+    });
+    if (screenshot && qEnvironmentVariableIsEmpty("DISPLAY") &&
+        qEnvironmentVariableIsEmpty("WAYLAND_DISPLAY") &&
+        qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM"))
+        qputenv("QT_QPA_PLATFORM", "offscreen");
+}
+
+} // namespace
 
 int main(int argc, char** argv) {
+    preferOffscreenForScreenshots(argc, argv);
     QApplication app(argc, argv);
     QApplication::setOrganizationName(QStringLiteral("FloorCover"));
     QApplication::setApplicationName(QStringLiteral("FloorCover"));

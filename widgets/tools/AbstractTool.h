@@ -2,6 +2,7 @@
 // coordinates to the active tool, which edits the document through its undoable API.
 #pragma once
 
+#include <QCursor>
 #include <QIcon>
 #include <QKeySequence>
 #include <QObject>
@@ -34,6 +35,8 @@ public:
     QKeySequence shortcut() const { return shortcut_; }
     // One line for the status bar telling how to use the tool.
     virtual QString usageHint() const = 0;
+    // The canvas cursor while the tool is active.
+    virtual QCursor cursor() const { return QCursor(Qt::ArrowCursor); }
 
     // Called when the tool becomes (in)active or the document is replaced.
     virtual void activate(Document* document, PlanScene* scene);

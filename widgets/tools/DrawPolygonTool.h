@@ -19,6 +19,7 @@ public:
     DrawPolygonTool(PolygonRole role, QObject* parent = nullptr);
 
     QString usageHint() const override;
+    QCursor cursor() const override { return QCursor(Qt::CrossCursor); }
     void activate(Document* document, PlanScene* scene) override;
     void deactivate() override;
     void mousePressed(const ToolMouseEvent& event) override;

@@ -207,6 +207,10 @@ void EditVerticesTool::mouseDoubleClicked(const ToolMouseEvent& event) {
 }
 
 bool EditVerticesTool::keyPressed(QKeyEvent* event) {
+    if (event->key() == Qt::Key_Escape && selected_) {
+        select(std::nullopt);
+        return true;
+    }
     if (event->key() != Qt::Key_Delete && event->key() != Qt::Key_Backspace)
         return false;
     if (!selected_)

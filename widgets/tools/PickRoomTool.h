@@ -11,6 +11,7 @@ public:
     explicit PickRoomTool(QObject* parent = nullptr);
 
     QString usageHint() const override;
+    QCursor cursor() const override { return QCursor(Qt::PointingHandCursor); }
     void mouseReleased(const ToolMouseEvent& event) override;
 };
 

@@ -17,6 +17,7 @@ public:
     PlaceEndpointTool(Endpoint endpoint, QObject* parent = nullptr);
 
     QString usageHint() const override;
+    QCursor cursor() const override { return QCursor(Qt::CrossCursor); }
     void deactivate() override;
     void mousePressed(const ToolMouseEvent& event) override;
     void mouseMoved(const ToolMouseEvent& event) override;

@@ -455,6 +455,10 @@ Planification de trajets de couverture pour robots de nettoyage et de désinfect
         <source>cannot write %1</source>
         <translation>impossible d’écrire %1</translation>
     </message>
+    <message>
+        <source>History</source>
+        <translation>Historique</translation>
+    </message>
 </context>
 <context>
     <name>fc::ui::OverlayLayer</name>
