@@ -5,7 +5,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
+#include <dlfcn.h>
+#include <iterator>
 #include <limits>
+#include <mutex>
 #include <stdexcept>
 #include <string>
 
@@ -19,6 +23,18 @@ namespace {
 void useOneThread() {
     if (at::get_num_threads() != 1)
         at::set_num_threads(1);
+    // Debian's libtorch calls the generic BLAS; when that is OpenBLAS its own thread pool
+    // would oversubscribe the cores (as OPENBLAS_NUM_THREADS=1 avoids). Looked up at run
+    // time because the reference BLAS has no such function.
+    static std::once_flag blasOnce;
+    std::call_once(blasOnce, [] {
+        if (std::getenv("FC_NO_MKLDNN"))
+            at::globalContext().setUserEnabledMkldnn(false);
+        using SetThreads = void (*)(int);
+        if (auto set =
+                reinterpret_cast<SetThreads>(dlsym(RTLD_DEFAULT, "openblas_set_num_threads")))
+            set(1);
+    });
 }
 
 int uniformChoice(const std::vector<char>& mask, int count, bool masked, std::mt19937_64& rng) {
@@ -136,6 +152,7 @@ double DqnAgent::trainStep() {
     targetsInput.actionCount = actionCount_;
     targetsInput.rewards.resize(batch);
     targetsInput.dones.resize(batch);
+    targetsInput.steps.resize(batch);
     targetsInput.nextMask.resize(batch * actions);
     for (std::size_t i = 0; i < batch; ++i) {
         const Transition& t = memory_.at(indices[i]);
@@ -147,6 +164,7 @@ double DqnAgent::trainStep() {
         chosen[i] = t.action;
         targetsInput.rewards[i] = t.reward;
         targetsInput.dones[i] = t.done ? 1.0f : 0.0f;
+        targetsInput.steps[i] = t.steps;
     }
 
     const auto b = static_cast<std::int64_t>(batch);
@@ -234,6 +252,39 @@ void DqnAgent::loadWeights(std::istream& in) {
     }
     copyWeights(loaded, impl_->online);
     syncTarget();
+}
+
+void DqnAgent::saveOptimizer(std::ostream& out) const {
+    torch::serialize::OutputArchive archive;
+    impl_->optimizer.save(archive);
+    archive.save_to(out);
+}
+
+void DqnAgent::loadOptimizer(std::istream& in) {
+    // Load into a scratch optimiser over a scratch network first, so that a bad stream leaves
+    // this agent's optimiser untouched.
+    QNetwork scratch(imageSize_, actionCount_, params_);
+    torch::optim::Adam check(scratch->parameters(),
+                             torch::optim::AdamOptions(params_.learningRate));
+    std::string bytes(std::istreambuf_iterator<char>(in), {});
+    try {
+        torch::serialize::InputArchive archive;
+        archive.load_from(bytes.data(), bytes.size());
+        check.load(archive);
+        torch::serialize::InputArchive again;
+        again.load_from(bytes.data(), bytes.size());
+        impl_->optimizer.load(again);
+    } catch (const c10::Error& e) {
+        throw std::runtime_error(std::string("DqnAgent: cannot load the optimiser state: ") +
+                                 e.what_without_backtrace());
+    }
+}
+
+void DqnAgent::restoreCounters(long steps, long trainSteps) {
+    if (steps < 0 || trainSteps < 0)
+        throw std::invalid_argument("DqnAgent::restoreCounters: negative count");
+    steps_ = steps;
+    trainSteps_ = trainSteps;
 }
 
 } // namespace fc

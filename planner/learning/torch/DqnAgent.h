@@ -89,6 +89,12 @@ public:
     // target. Throws std::runtime_error on a stream that does not fit this architecture.
     void saveWeights(std::ostream& out) const;
     void loadWeights(std::istream& in);
+    // Adam's moments, so that a resumed training continues where it stopped. Throws
+    // std::runtime_error on a stream that does not fit.
+    void saveOptimizer(std::ostream& out) const;
+    void loadOptimizer(std::istream& in);
+    // Step counters of a resumed training (epsilon schedule, target sync phase).
+    void restoreCounters(long steps, long trainSteps);
 
     int imageSize() const { return imageSize_; }
     int actionCount() const { return actionCount_; }
