@@ -45,7 +45,7 @@ std::string serialized(const DqnTrainer& trainer) {
 // Q values on a few fixed states (the archives' bytes differ between runs: torch mangles
 // module names with a process-wide counter).
 std::vector<float> probeQValues(const DqnTrainer& trainer) {
-    CoverageEnvironment env(trainer.graph());
+    CoverageEnvironment env(trainer.graph(), trainer.options().environment);
     std::mt19937_64 rng(99);
     std::vector<float> all;
     for (int i = 0; i < 4; ++i) {
@@ -126,11 +126,13 @@ TEST(DqnModelFile, RoundTripKeepsPolicyAndMetadata) {
     EXPECT_EQ(model.info.nStep, 3);
     EXPECT_EQ(model.info.refinement, OrderRefinement::LocalSearch);
     EXPECT_TRUE(model.info.environment.rewardIsNegativeGraphCost);
+    EXPECT_TRUE(model.info.environment.costChannels);
+    EXPECT_EQ(model.info.agent.inputChannels, 5);
     EXPECT_EQ(model.info.agent.hiddenUnits, 32);
     EXPECT_EQ(model.agent->stepCount(), trainer.agent().stepCount());
     for (const Query& q : randomQueries(plan.graph, 5, 9, QuerySet::AllCells)) {
-        const Solution a = solveWithPolicy(trainer.agent(), plan.graph, q);
-        const Solution b = solveWithPolicy(*model.agent, plan.graph, q);
+        const Solution a = solveWithPolicy(trainer.agent(), plan.graph, q, options.environment);
+        const Solution b = solveWithPolicy(*model.agent, plan.graph, q, model.info.environment);
         EXPECT_EQ(a.walk.nodes, b.walk.nodes);
     }
     EXPECT_NO_THROW(checkModelFitsGraph(model.info, plan.graph, "memory"));
@@ -198,14 +200,16 @@ TEST(DqnPolicy, MaskedInferenceAlwaysFinishesEvenUntrained) {
         DqnTrainer trainer(plan.graph, options); // untrained: arbitrary Q values
         for (const QuerySet kind : {QuerySet::AllCells, QuerySet::RoomSubsets}) {
             for (const Query& q : randomQueries(plan.graph, 25, 11, kind)) {
-                const Solution s = solveWithPolicy(trainer.agent(), plan.graph, q);
+                const Solution s =
+                    solveWithPolicy(trainer.agent(), plan.graph, q, options.environment);
                 const WalkEvaluation e = evaluateWalk(plan.graph, q, s.walk);
                 EXPECT_TRUE(e.connected && e.coversAllRequired);
                 EXPECT_EQ(s.walk.nodes.front(), q.startNode);
                 EXPECT_EQ(s.walk.nodes.back(), q.endNode);
                 EXPECT_DOUBLE_EQ(s.graphCost, e.graphCost);
                 const Solution refined =
-                    solveWithPolicy(trainer.agent(), plan.graph, q, OrderRefinement::LocalSearch);
+                    solveWithPolicy(trainer.agent(), plan.graph, q, options.environment,
+                                    OrderRefinement::LocalSearch);
                 EXPECT_LE(refined.graphCost, s.graphCost + 1e-9);
                 EXPECT_GE(refined.graphCost, solveExact(plan.graph, q).graphCost - 1e-9);
             }

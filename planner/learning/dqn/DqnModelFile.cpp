@@ -40,7 +40,8 @@ nlohmann::json toJson(const DqnModelInfo& m) {
               {"sweep_angle_deg", m.stripeAngleDeg},
               {"coverage_width", m.coverageWidth}}},
             {"agent",
-             {{"conv_channels", {a.conv1Channels, a.conv2Channels, a.conv3Channels}},
+             {{"input_channels", a.inputChannels},
+              {"conv_channels", {a.conv1Channels, a.conv2Channels, a.conv3Channels}},
               {"hidden_units", a.hiddenUnits},
               {"learning_rate", a.learningRate},
               {"gamma", a.gamma},
@@ -63,7 +64,8 @@ nlohmann::json toJson(const DqnModelInfo& m) {
               {"cost_scale", e.costScale},
               {"coverage_overlap_scale", e.coverageOverlapScale},
               {"max_steps", e.maxSteps},
-              {"reward_is_negative_graph_cost", e.rewardIsNegativeGraphCost}}},
+              {"reward_is_negative_graph_cost", e.rewardIsNegativeGraphCost},
+              {"cost_channels", e.costChannels}}},
             {"n_step", m.nStep},
             {"refinement", refinementName(m.refinement)},
             {"training",
@@ -88,6 +90,7 @@ DqnModelInfo fromJson(const nlohmann::json& j) {
     const auto conv = a.at("conv_channels").get<std::vector<int>>();
     if (conv.size() != 3)
         throw std::invalid_argument("conv_channels needs three entries");
+    p.inputChannels = a.value("input_channels", 3);
     p.conv1Channels = conv[0];
     p.conv2Channels = conv[1];
     p.conv3Channels = conv[2];
@@ -118,6 +121,7 @@ DqnModelInfo fromJson(const nlohmann::json& j) {
     o.coverageOverlapScale = e.at("coverage_overlap_scale").get<double>();
     o.maxSteps = e.at("max_steps").get<int>();
     o.rewardIsNegativeGraphCost = e.at("reward_is_negative_graph_cost").get<bool>();
+    o.costChannels = e.value("cost_channels", false);
     m.nStep = j.at("n_step").get<int>();
     m.refinement = refinementFromName(j.at("refinement").get<std::string>());
     const auto& t = j.at("training");
@@ -126,8 +130,9 @@ DqnModelInfo fromJson(const nlohmann::json& j) {
     m.trainSteps = t.at("train_steps").get<long>();
     m.trainingSeconds = t.at("seconds").get<double>();
     if (m.nodeCount <= 0 || m.cellCount <= 0 || m.nStep < 1 || p.conv1Channels <= 0 ||
-        p.conv2Channels <= 0 || p.conv3Channels <= 0 || p.hiddenUnits <= 0 || m.episodes < 0 ||
-        m.steps < 0 || m.trainSteps < 0)
+        p.conv2Channels <= 0 || p.conv3Channels <= 0 || p.hiddenUnits <= 0 ||
+        p.inputChannels != (o.costChannels ? 5 : 3) || m.episodes < 0 || m.steps < 0 ||
+        m.trainSteps < 0)
         throw std::invalid_argument("sizes and counts out of range");
     return m;
 }

@@ -11,9 +11,11 @@
 namespace fc {
 
 Solution solveWithPolicy(const DqnAgent& agent, const CornerGraph& graph, const Query& query,
-                         OrderRefinement refinement, const SolveControl& control) {
-    CoverageEnvironment env(graph);
-    if (env.size() != agent.imageSize() || env.actionCount() != agent.actionCount())
+                         const EnvironmentOptions& environment, OrderRefinement refinement,
+                         const SolveControl& control) {
+    CoverageEnvironment env(graph, environment);
+    if (env.size() != agent.imageSize() || env.actionCount() != agent.actionCount() ||
+        env.channelCount() != agent.parameters().inputChannels)
         throw SolverError("dqn: the model was trained on a graph of another size");
     std::vector<float> observation;
     try {

@@ -2,6 +2,7 @@
 // evaluates it on.
 #pragma once
 
+#include "learning/CoverageEnvironment.h"
 #include "learning/torch/DqnAgent.h"
 #include "solvers/Solver.h"
 
@@ -15,7 +16,9 @@ namespace fc {
 // reachable cells, whatever the agent was trained with, so the rollout always finishes.
 // Throws SolverError for a query the environment cannot take (e.g. the end in another part
 // of the floor) or a graph of another size than the agent's.
+// `environment` must be the options the agent was trained with (they define the image).
 Solution solveWithPolicy(const DqnAgent& agent, const CornerGraph& graph, const Query& query,
+                         const EnvironmentOptions& environment,
                          OrderRefinement refinement = OrderRefinement::None,
                          const SolveControl& control = {});
 

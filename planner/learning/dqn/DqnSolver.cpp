@@ -46,7 +46,8 @@ Solution solveDqn(const PreparedPlan& prepared, const Query& query, const std::s
                   const SolveControl& control) {
     const std::shared_ptr<const DqnModel> model = cachedModel(modelPath);
     checkModelFitsGraph(model->info, prepared.graph, modelPath);
-    return solveWithPolicy(*model->agent, prepared.graph, query, model->info.refinement, control);
+    return solveWithPolicy(*model->agent, prepared.graph, query, model->info.environment,
+                           model->info.refinement, control);
 }
 
 } // namespace

@@ -32,15 +32,27 @@ TrainingOptions TrainingOptions::paper(std::uint64_t seed) {
 TrainingOptions TrainingOptions::improved(std::uint64_t seed) {
     TrainingOptions o;
     o.setting = "improved";
-    o.agent.seed = seed;
-    o.agent.maskActions = true;
-    o.agent.maskTargetArgmax = true;
-    o.agent.learningRate = 5e-4;
-    o.agent.epsilonDecaySteps = 15'000;
-    o.agent.targetSyncInterval = 500;
-    o.agent.replayCapacity = 20'000;
-    o.agent.gradientClipNorm = 10.0;
+    DqnHyperParameters& a = o.agent;
+    a.seed = seed;
+    a.maskActions = true;
+    a.maskTargetArgmax = true;
+    // A narrower network: on a 16 x 16 image (office) the paper's costs 120 ms per update on
+    // one core, this one about 30 ms.
+    a.conv1Channels = 16;
+    a.conv2Channels = 32;
+    a.conv3Channels = 32;
+    a.hiddenUnits = 128;
+    a.learningRate = 1e-3;
+    a.epsilonDecaySteps = 8'000;
+    a.targetSyncInterval = 500;
+    a.replayCapacity = 20'000;
+    a.gradientClipNorm = 10.0;
+    // With masking every episode reaches the goal, so the final reward carries no
+    // information; the return is minus the walk's graph cost (in units of the longest edge).
     o.environment.rewardIsNegativeGraphCost = true;
+    o.environment.finalReward = 0.0;
+    o.environment.costScale = 1.0;
+    o.environment.costChannels = true;
     o.nStep = 3;
     o.refinement = OrderRefinement::LocalSearch;
     return o;
@@ -53,6 +65,7 @@ DqnTrainer::DqnTrainer(const CornerGraph& graph, TrainingOptions options, double
     if (options_.nStep < 1)
         throw std::invalid_argument("DqnTrainer: n-step must be at least 1");
     environment_ = std::make_unique<CoverageEnvironment>(*graph_, options_.environment);
+    options_.agent.inputChannels = environment_->channelCount();
     agent_ = std::make_unique<DqnAgent>(environment_->size(), environment_->actionCount(),
                                         options_.agent);
 }
@@ -199,7 +212,8 @@ EvaluationReport DqnTrainer::evaluate() {
     for (std::size_t i = 0; i < evaluationQueries_.size(); ++i) {
         const Clock::time_point start = Clock::now();
         try {
-            const Solution raw = solveWithPolicy(*agent_, *graph_, evaluationQueries_[i]);
+            const Solution raw =
+                solveWithPolicy(*agent_, *graph_, evaluationQueries_[i], options_.environment);
             const Solution refined =
                 refineCellOrder(*graph_, evaluationQueries_[i], raw, options_.refinement);
             report.meanMilliseconds += 1000.0 * secondsSince(start);

@@ -73,7 +73,7 @@ DqnAgent::DqnAgent(int imageSize, int actionCount, DqnHyperParameters params)
       memory_(static_cast<std::size_t>(params.replayCapacity > 0 ? params.replayCapacity : 1)),
       rng_(params.seed) {
     if (params.replayCapacity <= 0 || params.batchSize <= 0 || params.targetSyncInterval <= 0 ||
-        params.trainInterval <= 0)
+        params.trainInterval <= 0 || params.inputChannels <= 0)
         throw std::invalid_argument("DqnAgent: capacity, batch and intervals must be positive");
     useOneThread();
     torch::manual_seed(params.seed);
@@ -96,13 +96,14 @@ std::vector<float> DqnAgent::targetQValues(const std::vector<float>& observation
 
 std::vector<float> DqnAgent::evaluate(bool target, const std::vector<float>& observations,
                                       int batch) const {
-    const std::int64_t pixels = 3LL * imageSize_ * imageSize_;
+    const std::int64_t pixels =
+        static_cast<std::int64_t>(params_.inputChannels) * imageSize_ * imageSize_;
     if (batch <= 0 || static_cast<std::int64_t>(observations.size()) != batch * pixels)
         throw std::invalid_argument("DqnAgent::qValues: observation size mismatch");
     torch::NoGradGuard noGrad;
     const torch::Tensor input =
         torch::from_blob(const_cast<float*>(observations.data()),
-                         {batch, 3, imageSize_, imageSize_}, torch::kFloat32);
+                         {batch, params_.inputChannels, imageSize_, imageSize_}, torch::kFloat32);
     QNetwork& network = target ? impl_->target : impl_->online;
     const torch::Tensor q = network->forward(input).contiguous();
     return std::vector<float>(q.data_ptr<float>(), q.data_ptr<float>() + q.numel());
@@ -130,7 +131,8 @@ int DqnAgent::act(const std::vector<float>& observation, const std::vector<char>
 }
 
 void DqnAgent::remember(Transition transition) {
-    const std::size_t pixels = 3U * static_cast<std::size_t>(imageSize_ * imageSize_);
+    const std::size_t pixels = static_cast<std::size_t>(params_.inputChannels) *
+                               static_cast<std::size_t>(imageSize_ * imageSize_);
     if (transition.observation.size() != pixels || transition.nextObservation.size() != pixels ||
         transition.nextMask.size() != static_cast<std::size_t>(actionCount_) ||
         transition.action < 0 || transition.action >= actionCount_)
@@ -142,7 +144,8 @@ double DqnAgent::trainStep() {
     useOneThread();
     const auto batch = static_cast<std::size_t>(params_.batchSize);
     const std::vector<std::size_t> indices = memory_.sample(batch, rng_);
-    const std::size_t pixels = 3U * static_cast<std::size_t>(imageSize_ * imageSize_);
+    const std::size_t pixels = static_cast<std::size_t>(params_.inputChannels) *
+                               static_cast<std::size_t>(imageSize_ * imageSize_);
     const auto actions = static_cast<std::size_t>(actionCount_);
 
     std::vector<float> observations(batch * pixels);
@@ -169,7 +172,8 @@ double DqnAgent::trainStep() {
 
     const auto b = static_cast<std::int64_t>(batch);
     const torch::Tensor next =
-        torch::from_blob(nextObservations.data(), {b, 3, imageSize_, imageSize_}, torch::kFloat32);
+        torch::from_blob(nextObservations.data(),
+                         {b, params_.inputChannels, imageSize_, imageSize_}, torch::kFloat32);
     {
         torch::NoGradGuard noGrad;
         const torch::Tensor onlineQ = impl_->online->forward(next).contiguous();
@@ -182,8 +186,8 @@ double DqnAgent::trainStep() {
     std::vector<float> y =
         doubleDqnTargets(targetsInput, static_cast<float>(params_.gamma), params_.maskTargetArgmax);
 
-    const torch::Tensor input =
-        torch::from_blob(observations.data(), {b, 3, imageSize_, imageSize_}, torch::kFloat32);
+    const torch::Tensor input = torch::from_blob(
+        observations.data(), {b, params_.inputChannels, imageSize_, imageSize_}, torch::kFloat32);
     const torch::Tensor actionIndex = torch::from_blob(chosen.data(), {b, 1}, torch::kInt64);
     const torch::Tensor targets = torch::from_blob(y.data(), {b}, torch::kFloat32);
 
