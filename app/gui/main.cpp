@@ -1,0 +1,50 @@
+// floorcover: the desktop editor. Thin: argument handling only; the editor lives in
+// the floorcover_widgets library.
+#include "MainWindow.h"
+
+#include <QApplication>
+#include <QCommandLineParser>
+#include <cstdio>
+
+int main(int argc, char** argv) {
+    QApplication app(argc, argv);
+    QApplication::setOrganizationName(QStringLiteral("FloorCover"));
+    QApplication::setApplicationName(QStringLiteral("FloorCover"));
+    QApplication::setApplicationVersion(QStringLiteral(FC_VERSION));
+
+    QCommandLineParser parser;
+    parser.setApplicationDescription(
+        QApplication::translate("main", "Coverage path planning for floor plans"));
+    parser.addHelpOption();
+    parser.addVersionOption();
+    const QCommandLineOption screenshot(
+        QStringLiteral("screenshot"),
+        QApplication::translate("main",
+                                "Render the main window with overlays and a planned path to "
+                                "FILE (PNG) and exit."),
+        QApplication::translate("main", "FILE"));
+    parser.addOption(screenshot);
+    parser.addPositionalArgument(QStringLiteral("plan"),
+                                 QApplication::translate("main", "A .fcproj or .geojson file."),
+                                 QStringLiteral("[PLAN]"));
+    parser.process(app);
+    const QStringList positional = parser.positionalArguments();
+    const QString planPath = positional.value(0);
+
+    fc::ui::MainWindow window;
+    if (parser.isSet(screenshot)) {
+        QString error;
+        if (!window.renderScreenshot(parser.value(screenshot), planPath, &error)) {
+            std::fprintf(stderr, "floorcover: %s\n", qPrintable(error));
+            return 2;
+        }
+        return 0;
+    }
+    window.show();
+    // A plan named on the command line, else what a crashed session left, else the sample.
+    if (!planPath.isEmpty() && window.openFile(planPath))
+        return QApplication::exec();
+    if (!window.recoverAutosave())
+        window.openSample();
+    return QApplication::exec();
+}

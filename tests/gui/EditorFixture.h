@@ -1,0 +1,55 @@
+// Helpers for the GUI tests: a main window without modal dialogs, and mouse input on the
+// canvas in plan coordinates (metres), sent to the real view's viewport.
+#pragma once
+
+#include "CanvasView.h"
+#include "Document.h"
+#include "MainWindow.h"
+#include "tools/AbstractTool.h"
+#include "tools/ToolManager.h"
+
+#include <QTest>
+#include <memory>
+
+namespace fc::ui::test {
+
+inline std::unique_ptr<MainWindow> makeWindow() {
+    auto window = std::make_unique<MainWindow>();
+    window->setDialogsEnabled(false);
+    window->resize(1100, 750);
+    window->show();
+    if (!QTest::qWaitForWindowExposed(window.get()))
+        qWarning("window not exposed");
+    return window;
+}
+
+inline QPoint viewPoint(MainWindow& window, QPointF plan) {
+    return window.view()->mapFromScene(plan);
+}
+
+inline void useTool(MainWindow& window, const char* objectName) {
+    AbstractTool* tool = window.toolManager()->findTool(QLatin1String(objectName));
+    QVERIFY2(tool, objectName);
+    window.toolManager()->setActiveTool(tool);
+}
+
+inline void click(MainWindow& window, QPointF plan, Qt::MouseButton button = Qt::LeftButton) {
+    QTest::mouseClick(window.view()->viewport(), button, {}, viewPoint(window, plan));
+}
+
+inline void clickPolygon(MainWindow& window, const std::vector<QPointF>& vertices) {
+    for (QPointF p : vertices)
+        click(window, p);
+    click(window, vertices.front()); // clicking the first vertex closes the polygon
+}
+
+inline void drag(MainWindow& window, QPointF from, QPointF to) {
+    QWidget* viewport = window.view()->viewport();
+    QTest::mousePress(viewport, Qt::LeftButton, {}, viewPoint(window, from));
+    const QPointF middle = (from + to) / 2;
+    QTest::mouseMove(viewport, viewPoint(window, middle));
+    QTest::mouseMove(viewport, viewPoint(window, to));
+    QTest::mouseRelease(viewport, Qt::LeftButton, {}, viewPoint(window, to));
+}
+
+} // namespace fc::ui::test

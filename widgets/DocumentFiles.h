@@ -1,0 +1,23 @@
+// Opening and saving documents with the planner's readers and writers.
+#pragma once
+
+#include <QString>
+#include <memory>
+
+namespace fc::ui {
+
+class Document;
+
+// The sample floor plan embedded in the program (resources/plans/office.geojson).
+extern const char* const kSamplePlanPath;
+
+// Reads a .fcproj project or a .geojson/.json plan (also from Qt resources, ":/..."),
+// validates plan and robot profile, and returns a new document. On failure returns null
+// and sets *error to a one-line message naming the file.
+std::unique_ptr<Document> loadDocument(const QString& path, QString* error);
+
+// Writes the project atomically (temporary file + rename) as .fcproj, then marks the
+// document saved under that name. Returns false and sets *error on failure.
+bool saveDocument(Document& document, const QString& path, QString* error);
+
+} // namespace fc::ui

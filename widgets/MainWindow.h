@@ -1,0 +1,112 @@
+// The editor's main window: canvas, tools, planning dock, menus and file handling.
+// The dialog-free entry points (openFile, saveFile, exportPath, ...) are what the menus
+// call after asking for a file name, and what the GUI tests and --screenshot drive.
+#pragma once
+
+#include "OverlayLayer.h"
+
+#include <QMainWindow>
+#include <array>
+#include <memory>
+
+class QAction;
+class QLabel;
+class QMenu;
+class QUndoGroup;
+
+namespace fc::ui {
+
+class CanvasView;
+class Autosaver;
+class Document;
+class LegendDock;
+class PathPreview;
+class PlanScene;
+class PlanningController;
+class PlanningDock;
+class ToolManager;
+
+class MainWindow : public QMainWindow {
+    Q_OBJECT
+public:
+    explicit MainWindow(QWidget* parent = nullptr);
+    ~MainWindow() override;
+
+    Document* document() const { return document_.get(); }
+    CanvasView* view() const { return view_; }
+    PlanScene* scene() const { return scene_; }
+    ToolManager* toolManager() const { return tools_; }
+    PlanningController* planningController() const { return planner_; }
+    PlanningDock* planningDock() const { return planningDock_; }
+    LegendDock* legendDock() const { return legendDock_; }
+    PathPreview* pathPreview() const { return preview_; }
+    QAction* overlayAction(OverlayKind kind) const {
+        return overlayActions_[static_cast<int>(kind)];
+    }
+
+    // Replaces the document by the file's; on failure shows the message and keeps the
+    // current document.
+    bool openFile(const QString& path);
+    void openSample();
+    void newDocument();
+    bool saveFile(const QString& path);
+    // Path as GeoJSON, CSV, JSON or ROS 2 YAML by extension (the CLI's writers).
+    bool exportPath(const QString& path);
+    // The visible canvas as .png or .svg.
+    bool exportView(const QString& path);
+    // One-page PDF report of the plan, path, metrics and robot profile.
+    bool exportReport(const QString& path);
+    // Opens PLAN (or the sample), plans, and saves the whole window as a PNG.
+    bool renderScreenshot(const QString& path, const QString& planPath, QString* error);
+
+    // Offers the document of a session that ended without saving (asks first when dialogs
+    // are on). Returns true when it was recovered.
+    bool recoverAutosave();
+    Autosaver* autosaver() const { return autosaver_; }
+
+    // Modal dialogs off (tests, --screenshot): errors go to the status bar and lastError(),
+    // and unsaved changes are discarded without asking.
+    void setDialogsEnabled(bool enabled) { dialogsEnabled_ = enabled; }
+    QString lastError() const { return lastError_; }
+
+protected:
+    void closeEvent(QCloseEvent* event) override;
+
+private:
+    void createTools();
+    void createMenus();
+    void createFileMenu();
+    void createViewMenu();
+    void createStatusBar();
+    void setDocument(std::unique_ptr<Document> document);
+    void showError(const QString& message);
+    void showProblem(const QString& message);
+    bool maybeSave();
+    bool save();
+    bool saveAs();
+    void openWithDialog();
+    void exportPathWithDialog();
+    void exportViewWithDialog(const QString& suffix);
+    void addRecentFile(const QString& path);
+    void updateRecentFilesMenu();
+    void updateTitle();
+
+    std::unique_ptr<Document> document_;
+    QUndoGroup* undoGroup_;
+    PlanScene* scene_;
+    CanvasView* view_;
+    PlanningController* planner_;
+    ToolManager* tools_;
+    PlanningDock* planningDock_;
+    LegendDock* legendDock_ = nullptr;
+    PathPreview* preview_ = nullptr;
+    Autosaver* autosaver_;
+    QMenu* recentFilesMenu_ = nullptr;
+    QLabel* coordinates_ = nullptr;
+    QLabel* problem_ = nullptr;
+    std::array<QAction*, kOverlayKindCount> overlayActions_{};
+    bool dialogsEnabled_ = true;
+    QString lastError_;
+};
+
+} // namespace fc::ui

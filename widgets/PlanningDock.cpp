@@ -1,0 +1,296 @@
+#include "PlanningDock.h"
+
+#include "Conversions.h"
+#include "Document.h"
+#include "PlanningController.h"
+
+#include <QCheckBox>
+#include <QComboBox>
+#include <QDoubleSpinBox>
+#include <QFormLayout>
+#include <QGroupBox>
+#include <QLabel>
+#include <QListWidget>
+#include <QPushButton>
+#include <QScrollArea>
+#include <QSignalBlocker>
+#include <QVBoxLayout>
+
+namespace fc::ui {
+
+namespace {
+
+QDoubleSpinBox* spinBox(double minimum, double maximum, double step, const QString& suffix,
+                        int decimals = 2) {
+    auto* box = new QDoubleSpinBox;
+    box->setRange(minimum, maximum);
+    box->setSingleStep(step);
+    box->setDecimals(decimals);
+    box->setSuffix(suffix);
+    box->setKeyboardTracking(false); // one edit per finished value, not per keystroke
+    return box;
+}
+
+void setValueQuietly(QDoubleSpinBox* box, double value) {
+    const QSignalBlocker blocker(box);
+    box->setValue(value);
+}
+
+} // namespace
+
+PlanningDock::PlanningDock(QWidget* parent) : QDockWidget(tr("Planning"), parent) {
+    setObjectName(QStringLiteral("PlanningDock"));
+    auto* content = new QWidget;
+    auto* layout = layout_ = new QVBoxLayout(content);
+    layout->addWidget(createRobotGroup());
+    layout->addWidget(createSweepGroup());
+
+    auto* roomsGroup = new QGroupBox(tr("Rooms to plan"));
+    auto* roomsLayout = new QVBoxLayout(roomsGroup);
+    rooms_ = new QListWidget;
+    rooms_->setToolTip(tr("Check the rooms to cover; double-click a name to rename the room."));
+    rooms_->setMinimumHeight(120);
+    roomsLayout->addWidget(rooms_);
+    layout->addWidget(roomsGroup);
+    connect(rooms_, &QListWidget::itemChanged, this, &PlanningDock::roomItemChanged);
+
+    planButton_ = new QPushButton(tr("Plan"));
+    planButton_->setToolTip(tr("Plan the coverage path for the checked rooms (F5)."));
+    layout->addWidget(planButton_);
+    status_ = new QLabel;
+    status_->setWordWrap(true);
+    status_->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    layout->addWidget(status_);
+    layout->addWidget(createMetricsGroup());
+    layout->addStretch(1);
+
+    auto* scroll = new QScrollArea;
+    scroll->setWidget(content);
+    scroll->setWidgetResizable(true);
+    scroll->setFrameShape(QFrame::NoFrame);
+    setWidget(scroll);
+    connect(planButton_, &QPushButton::clicked, this, [this]() {
+        if (controller_)
+            controller_->plan();
+    });
+}
+
+QWidget* PlanningDock::createRobotGroup() {
+    auto* group = new QGroupBox(tr("Robot"));
+    auto* form = new QFormLayout(group);
+    robotDiameter_ = spinBox(0.05, 10, 0.05, tr(" m"));
+    cleaningDiameter_ = spinBox(0.05, 10, 0.05, tr(" m"));
+    width_ = spinBox(0.05, 10, 0.05, tr(" m"));
+    speed_ = spinBox(0.01, 10, 0.05, tr(" m/s"));
+    turnTime_ = spinBox(0, 60, 0.5, tr(" s"), 1);
+    form->addRow(tr("Robot diameter L"), robotDiameter_);
+    form->addRow(tr("Cleaning diameter D"), cleaningDiameter_);
+    form->addRow(tr("Coverage width W"), width_);
+    form->addRow(tr("Speed"), speed_);
+    form->addRow(tr("Time per 90° turn"), turnTime_);
+    for (QDoubleSpinBox* box : {robotDiameter_, cleaningDiameter_, width_, speed_, turnTime_})
+        connect(box, &QDoubleSpinBox::valueChanged, this, &PlanningDock::commitRobot);
+    return group;
+}
+
+QWidget* PlanningDock::createSweepGroup() {
+    auto* group = new QGroupBox(tr("Sweep"));
+    auto* form = new QFormLayout(group);
+    angle_ = spinBox(0, 180, 5, tr("°"), 1);
+    autoAngle_ = new QCheckBox(tr("Auto (shortest path)"));
+    solver_ = new QComboBox;
+    for (const std::string& name : solverNames())
+        solver_->addItem(fromStd(name));
+    form->addRow(tr("Stripe angle"), angle_);
+    form->addRow(QString(), autoAngle_);
+    form->addRow(tr("Solver"), solver_);
+    connect(angle_, &QDoubleSpinBox::valueChanged, this, &PlanningDock::commitSweep);
+    connect(autoAngle_, &QCheckBox::toggled, this, &PlanningDock::commitSweep);
+    connect(solver_, &QComboBox::currentTextChanged, this, [this](const QString& name) {
+        if (document_ && fromStd(document_->project().solver) != name)
+            document_->setSolver(name);
+    });
+    return group;
+}
+
+QWidget* PlanningDock::createMetricsGroup() {
+    auto* group = new QGroupBox(tr("Metrics"));
+    auto* form = new QFormLayout(group);
+    const std::pair<const char*, QString> rows[] = {
+        {"length", tr("Length")},      {"extra", tr("Extra distance")},  {"turns", tr("Turns")},
+        {"coverage", tr("Coverage")},  {"time", tr("Estimated time")},   {"cells", tr("Cells")},
+        {"angle", tr("Stripe angle")}, {"seconds", tr("Planning time")},
+    };
+    for (const auto& [key, label] : rows) {
+        auto* value = new QLabel(QStringLiteral("–"));
+        value->setTextInteractionFlags(Qt::TextSelectableByMouse);
+        form->addRow(label, value);
+        metrics_.insert(QLatin1String(key), value);
+    }
+    return group;
+}
+
+void PlanningDock::setDocument(Document* document) {
+    if (document_)
+        disconnect(document_, nullptr, this, nullptr);
+    document_ = document;
+    if (document_) {
+        connect(document_, &Document::robotChanged, this, &PlanningDock::refreshRobot);
+        connect(document_, &Document::sweepChanged, this, &PlanningDock::refreshSweep);
+        connect(document_, &Document::solverChanged, this, &PlanningDock::refreshSolver);
+        connect(document_, &Document::roomsChanged, this, &PlanningDock::refreshRooms);
+        // A refused edit puts the document's values back into the widgets.
+        connect(document_, &Document::editRejected, this, &PlanningDock::refreshRobot);
+        connect(document_, &Document::editRejected, this, &PlanningDock::refreshSweep);
+        connect(document_, &Document::editRejected, this, &PlanningDock::refreshRooms);
+    }
+    setEnabled(document_ != nullptr);
+    refreshRobot();
+    refreshSweep();
+    refreshSolver();
+    refreshRooms();
+}
+
+void PlanningDock::setPlanningController(PlanningController* controller) {
+    if (controller_)
+        disconnect(controller_, nullptr, this, nullptr);
+    controller_ = controller;
+    if (controller_) {
+        connect(controller_, &PlanningController::resultChanged, this,
+                &PlanningDock::refreshMetrics);
+        connect(controller_, &PlanningController::errorChanged, this, &PlanningDock::refreshStatus);
+        connect(controller_, &PlanningController::busyChanged, this, &PlanningDock::refreshStatus);
+    }
+    refreshMetrics();
+    refreshStatus();
+}
+
+void PlanningDock::refreshRobot() {
+    if (!document_)
+        return;
+    const RobotProfile& robot = document_->project().robot;
+    setValueQuietly(robotDiameter_, robot.robotDiameter);
+    setValueQuietly(cleaningDiameter_, robot.cleaningDiameter);
+    setValueQuietly(width_, robot.coverageWidth);
+    setValueQuietly(speed_, robot.speed);
+    setValueQuietly(turnTime_, robot.turnTime);
+}
+
+void PlanningDock::refreshSweep() {
+    if (!document_)
+        return;
+    const SweepOptions& sweep = document_->project().sweep;
+    setValueQuietly(angle_, sweep.angleDeg);
+    const QSignalBlocker blocker(autoAngle_);
+    autoAngle_->setChecked(sweep.automatic);
+    angle_->setEnabled(!sweep.automatic);
+}
+
+void PlanningDock::refreshSolver() {
+    if (!document_)
+        return;
+    const QSignalBlocker blocker(solver_);
+    const QString name = fromStd(document_->project().solver);
+    if (solver_->findText(name) < 0)
+        solver_->addItem(name); // a solver this build lacks still shows what the file asks
+    solver_->setCurrentText(name);
+}
+
+void PlanningDock::refreshRooms() {
+    const QSignalBlocker blocker(rooms_);
+    rooms_->clear();
+    if (!document_)
+        return;
+    const bool named = document_->polygonCount(PolygonRole::Room) > 0;
+    for (const QString& name : document_->roomNames()) {
+        auto* item = new QListWidgetItem(name, rooms_);
+        item->setData(Qt::UserRole, name);
+        Qt::ItemFlags flags = item->flags() | Qt::ItemIsUserCheckable;
+        if (named) // "Floor" is the planner's name for a plan without rooms
+            flags |= Qt::ItemIsEditable;
+        item->setFlags(flags);
+        item->setCheckState(document_->isRoomSelected(name) ? Qt::Checked : Qt::Unchecked);
+    }
+}
+
+void PlanningDock::roomItemChanged(QListWidgetItem* item) {
+    if (!document_)
+        return;
+    const QString name = item->data(Qt::UserRole).toString();
+    if (item->text() != name) {
+        document_->renameRoom(rooms_->row(item), item->text());
+        return;
+    }
+    if ((item->checkState() == Qt::Checked) != document_->isRoomSelected(name))
+        document_->toggleRoomSelection(name);
+}
+
+void PlanningDock::commitRobot() {
+    if (!document_)
+        return;
+    RobotProfile robot = document_->project().robot;
+    robot.robotDiameter = robotDiameter_->value();
+    robot.cleaningDiameter = cleaningDiameter_->value();
+    robot.coverageWidth = width_->value();
+    robot.speed = speed_->value();
+    robot.turnTime = turnTime_->value();
+    document_->setRobot(robot);
+}
+
+void PlanningDock::commitSweep() {
+    if (!document_)
+        return;
+    SweepOptions sweep;
+    sweep.angleDeg = angle_->value();
+    sweep.automatic = autoAngle_->isChecked();
+    angle_->setEnabled(!sweep.automatic);
+    document_->setSweep(sweep);
+}
+
+void PlanningDock::addSection(QWidget* section) {
+    layout_->insertWidget(layout_->count() - 1, section); // above the stretch
+}
+
+QString PlanningDock::metricText(const QString& key) const {
+    const QLabel* label = metrics_.value(key);
+    return label ? label->text() : QString();
+}
+
+void PlanningDock::refreshMetrics() {
+    const auto result = controller_ ? controller_->result() : nullptr;
+    for (QLabel* label : std::as_const(metrics_))
+        label->setText(QStringLiteral("–"));
+    if (!result)
+        return;
+    const Metrics& m = result->metrics;
+    metrics_[QStringLiteral("length")]->setText(tr("%1 m").arg(m.length, 0, 'f', 1));
+    metrics_[QStringLiteral("extra")]->setText(tr("%1 m").arg(m.extra, 0, 'f', 1));
+    metrics_[QStringLiteral("turns")]->setText(QString::number(m.turns));
+    metrics_[QStringLiteral("coverage")]->setText(tr("%1 %").arg(100.0 * m.coverage, 0, 'f', 2));
+    const int seconds = static_cast<int>(std::lround(m.time));
+    metrics_[QStringLiteral("time")]->setText(
+        tr("%1 min %2 s").arg(seconds / 60).arg(seconds % 60, 2, 10, QLatin1Char('0')));
+    metrics_[QStringLiteral("cells")]->setText(QString::number(m.cells));
+    metrics_[QStringLiteral("angle")]->setText(tr("%1°").arg(result->stripeAngleDeg));
+    metrics_[QStringLiteral("seconds")]->setText(tr("%1 s").arg(m.seconds, 0, 'f', 2));
+}
+
+void PlanningDock::refreshStatus() {
+    if (!controller_) {
+        status_->clear();
+        return;
+    }
+    const QString error = controller_->errorMessage();
+    planButton_->setEnabled(true);
+    if (!error.isEmpty()) {
+        status_->setStyleSheet(QStringLiteral("color: #d03030"));
+        status_->setText(error);
+    } else {
+        status_->setStyleSheet(QString());
+        status_->setText(controller_->isBusy() ? tr("Planning…") : QString());
+    }
+    if (const auto result = controller_->result(); result && !result->warnings.empty())
+        status_->setText(fromStd(result->warnings.front()));
+}
+
+} // namespace fc::ui

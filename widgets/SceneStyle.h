@@ -1,0 +1,36 @@
+// Colours, pens and small item factories shared by the scene layers, derived from the
+// application palette so that dark and light themes both stay readable.
+#pragma once
+
+#include "geometry/Geometry.h"
+
+#include <QColor>
+#include <QPalette>
+#include <QPen>
+#include <QString>
+
+class QGraphicsItem;
+
+namespace fc::ui::style {
+
+QPalette palette();
+bool isDark(const QPalette& palette);
+// A pen whose width is in screen pixels whatever the zoom.
+QPen cosmeticPen(const QColor& color, double width, Qt::PenStyle penStyle = Qt::SolidLine);
+QColor roomOutline(const QPalette& palette);
+QColor roomFill(const QPalette& palette, bool selected);
+QColor obstacleFill(const QPalette& palette);
+// A distinct, stable colour per room index for the cell overlay.
+QColor roomHue(int room, int alpha);
+
+// A point inside the ring for its label: the area centroid when inside, else a vertex
+// average nudged inside.
+Vec2 labelPoint(const Ring& ring);
+// A text label of constant screen size centred on `position`.
+QGraphicsItem* addLabel(QGraphicsItem* parent, const QString& text, QPointF position,
+                        const QColor& color, bool bold = false);
+// A round marker of constant screen size with a letter (start and end points).
+QGraphicsItem* addMarker(QGraphicsItem* parent, QPointF position, const QString& letter,
+                         const QColor& color, const QString& toolTip);
+
+} // namespace fc::ui::style

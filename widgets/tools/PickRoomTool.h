@@ -1,0 +1,17 @@
+// Clicking a room toggles whether it is planned (the room selection of the project).
+#pragma once
+
+#include "AbstractTool.h"
+
+namespace fc::ui {
+
+class PickRoomTool : public AbstractTool {
+    Q_OBJECT
+public:
+    explicit PickRoomTool(QObject* parent = nullptr);
+
+    QString usageHint() const override;
+    void mouseReleased(const ToolMouseEvent& event) override;
+};
+
+} // namespace fc::ui
