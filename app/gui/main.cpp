@@ -1,6 +1,7 @@
 // floorcover: the desktop editor. Thin: argument handling only; the editor lives in
 // the floorcover_widgets library.
 #include "MainWindow.h"
+#include "learning/dqn/DqnSolver.h"
 
 #include <QApplication>
 #include <QCommandLineParser>
@@ -8,6 +9,7 @@
 
 int main(int argc, char** argv) {
     QApplication app(argc, argv);
+    fc::registerDqnSolver(); // before the window lists the solvers
     QApplication::setOrganizationName(QStringLiteral("FloorCover"));
     QApplication::setApplicationName(QStringLiteral("FloorCover"));
     QApplication::setApplicationVersion(QStringLiteral(FC_VERSION));
