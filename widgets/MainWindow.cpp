@@ -16,6 +16,7 @@
 #include "tools/PickRoomTool.h"
 #include "tools/PlaceEndpointTool.h"
 #include "tools/ToolManager.h"
+#include "training/TrainingDock.h"
 
 #include <QAction>
 #include <QApplication>
@@ -45,8 +46,12 @@ MainWindow::MainWindow(QWidget* parent)
     addDockWidget(Qt::RightDockWidgetArea, planningDock_);
     preview_ = new PathPreview(scene_, planner_, this);
     planningDock_->addSection(new PathPreviewBar(preview_));
-    // The training dock (issue 4, item 6: live reward curve, start/pause/stop, save/load
-    // model) docks here, tabified with the planning dock, once the DQN trainer API lands.
+    trainingDock_ = new TrainingDock(this);
+    addDockWidget(Qt::RightDockWidgetArea, trainingDock_);
+    // Training follows the plan's graph; its model serves solver "dqn".
+    connect(planner_, &PlanningController::preparedChanged, this,
+            [this] { trainingDock_->setPreparedPlan(planner_->prepared()); });
+    connect(trainingDock_, &TrainingDock::modelReady, planner_, &PlanningController::setModelPath);
 
     createTools();
     createMenus();
@@ -159,9 +164,12 @@ void MainWindow::createViewMenu() {
     history->setWidget(new QUndoView(undoGroup_));
     addDockWidget(Qt::RightDockWidgetArea, history);
     tabifyDockWidget(legendDock_, history);
-    tabifyDockWidget(history, planningDock_); // the planning panel in front
+    tabifyDockWidget(history, trainingDock_);
+    tabifyDockWidget(trainingDock_, planningDock_);
+    planningDock_->raise(); // the planning panel in front
     viewMenu->addAction(legendDock_->toggleViewAction());
     viewMenu->addAction(history->toggleViewAction());
+    viewMenu->addAction(trainingDock_->toggleViewAction());
 }
 
 void MainWindow::createStatusBar() {

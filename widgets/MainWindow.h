@@ -25,6 +25,7 @@ class PlanScene;
 class PlanningController;
 class PlanningDock;
 class ToolManager;
+class TrainingDock;
 
 class MainWindow : public QMainWindow {
     Q_OBJECT
@@ -38,6 +39,7 @@ public:
     ToolManager* toolManager() const { return tools_; }
     PlanningController* planningController() const { return planner_; }
     PlanningDock* planningDock() const { return planningDock_; }
+    TrainingDock* trainingDock() const { return trainingDock_; }
     LegendDock* legendDock() const { return legendDock_; }
     PathPreview* pathPreview() const { return preview_; }
     QAction* overlayAction(OverlayKind kind) const {
@@ -98,6 +100,7 @@ private:
     PlanningController* planner_;
     ToolManager* tools_;
     PlanningDock* planningDock_;
+    TrainingDock* trainingDock_ = nullptr;
     LegendDock* legendDock_ = nullptr;
     PathPreview* preview_ = nullptr;
     Autosaver* autosaver_;

@@ -145,7 +145,8 @@ void PlanningController::startPrepare() {
 void PlanningController::plan() {
     if (!document_)
         return;
-    const PlanRequest request = requestFor(document_->project());
+    PlanRequest request = requestFor(document_->project());
+    request.modelPath = modelPath_;
     const quint64 generation = ++planGeneration_;
     *latestPlan_ = generation;
     if (!isBusy())

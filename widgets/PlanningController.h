@@ -38,6 +38,8 @@ public:
 
 public slots:
     void plan();
+    // The trained model solver "dqn" plans with (empty: none).
+    void setModelPath(const QString& path) { modelPath_ = path.toStdString(); }
     void schedulePrepare(); // debounced: several edits in a row run the planner once
 
 signals:
@@ -57,6 +59,7 @@ private:
     std::shared_ptr<const PreparedPlan> prepared_;
     std::shared_ptr<const PlanResult> result_;
     QString error_;
+    std::string modelPath_;
     // Bumped by every edit; a finished run whose stamp is older is ignored, and a queued or
     // running one stops early (the workers read the atomic copies).
     quint64 prepareGeneration_ = 0;

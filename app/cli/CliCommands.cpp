@@ -1,6 +1,7 @@
 #include "CliCommands.h"
 
 #include "Arguments.h"
+#include "CliCommon.h"
 #include "formats/PathIO.h"
 #include "formats/PlanIO.h"
 #include "pipeline/Planner.h"
@@ -18,15 +19,23 @@ commands:
   plan PLAN     plan a coverage path; prints one JSON line of metrics
                 [--width W] [--robot-diameter L] [--cleaning-diameter D] [--speed V]
                 [--turn-time S] [--angle DEG|auto] [--rooms A,B] [--start X,Y] [--end X,Y]
-                [--solver NAME] [--model FILE] [--seed N] [--out FILE]
+                [--solver exact|heuristic|greedy|dqn] [--model FILE] [--seed N] [--out FILE]
+                (dqn needs --model, a file written by train; it plans at its sweep angle)
                 (--out format by extension: .geojson .csv .json .yaml)
   graph PLAN    write the corner graph: [--width W] [--angle DEG] --out FILE.json
   compare PLAN  run several solvers on the same query: [--solvers a,b,..] [--json]
-                and the plan options above
+                and the plan options above (dqn is included when --model is given)
+  train PLAN    train the Double-DQN planner for this plan: --out MODEL
+                [--episodes N] [--seconds S] (default 300 s when neither is given)
+                [--seed N] [--setting improved|paper] [--resume] [--evaluate-every N]
+                and the robot and --angle options above; prints progress; Ctrl-C stops
+                after the current episode and saves what was learnt
 
 PLAN is a GeoJSON floor plan (.geojson) or a FloorCover project (.fcproj).
 Exit codes: 0 success, 2 bad input (one line on stderr), 1 internal error.
 )";
+
+} // namespace
 
 const std::vector<std::string> kPlanOptions{"--width",
                                             "--robot-diameter",
@@ -102,6 +111,8 @@ const std::string& planPath(const Arguments& args) {
     return args.positional()[0];
 }
 
+namespace {
+
 int commandPlan(const Arguments& args) {
     args.allowOnly(kPlanOptions);
     const std::string& path = planPath(args);
@@ -165,7 +176,9 @@ int commandCompare(const Arguments& args) {
     const Project project = loadProjectFile(path);
     std::vector<std::string> solvers = args.list("--solvers");
     if (solvers.empty())
-        solvers = solverNames();
+        for (const std::string& name : solverNames())
+            if (name != "dqn" || args.has("--model")) // dqn needs a trained model
+                solvers.push_back(name);
     const bool json = args.has("--json");
     PlanRequest request;
     try {
@@ -211,7 +224,8 @@ int run(int argc, char** argv) {
     }
     const std::string command = argv[1];
     try {
-        const Arguments args(argc, argv, 2, {"--json", "--no-transition-cells", "--help"});
+        const Arguments args(argc, argv, 2,
+                             {"--json", "--no-transition-cells", "--help", "--resume"});
         if (args.has("--help")) {
             std::cout << kUsage;
             return 0;
@@ -222,7 +236,9 @@ int run(int argc, char** argv) {
             return commandGraph(args);
         if (command == "compare")
             return commandCompare(args);
-        throw InputError("unknown command \"" + command + "\" (plan, graph, compare)");
+        if (command == "train")
+            return commandTrain(args);
+        throw InputError("unknown command \"" + command + "\" (plan, graph, compare, train)");
     } catch (const InputError& e) {
         std::cerr << "floorcover-cli: error: " << e.what() << std::endl;
         return 2;

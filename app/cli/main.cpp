@@ -1,6 +1,8 @@
 // floorcover-cli: thin command-line front end over the planner core (SPEC sect. 7).
 #include "CliCommands.h"
+#include "learning/dqn/DqnSolver.h"
 
 int main(int argc, char** argv) {
+    fc::registerDqnSolver();
     return fc::cli::run(argc, argv);
 }

@@ -2,6 +2,7 @@
 // the floorcover_widgets library.
 #include "MainWindow.h"
 #include "Translations.h"
+#include "learning/dqn/DqnSolver.h"
 
 #include <QApplication>
 #include <QCommandLineParser>
@@ -29,6 +30,7 @@ void preferOffscreenForScreenshots(int argc, char** argv) {
 int main(int argc, char** argv) {
     preferOffscreenForScreenshots(argc, argv);
     QApplication app(argc, argv);
+    fc::registerDqnSolver(); // before the window lists the solvers
     QApplication::setOrganizationName(QStringLiteral("FloorCover"));
     QApplication::setApplicationName(QStringLiteral("FloorCover"));
     QApplication::setApplicationVersion(QStringLiteral(FC_VERSION));

@@ -1,6 +1,7 @@
 // The graphEnvironment of the paper's Table 1 (see CoverageEnvironment.h for the choices).
 #include "learning/CoverageEnvironment.h"
 
+#include <algorithm>
 #include <cmath>
 #include <functional>
 #include <limits>
@@ -131,6 +132,11 @@ std::vector<float> CoverageEnvironment::reset(const Query& query) {
 
 void CoverageEnvironment::begin() {
     initialCovered_ = covered_;
+    if (options_.costChannels) { // transit costs are symmetric: from the end = to the end
+        current_ = end_;
+        computeTransits();
+        costToEnd_ = transitCost_;
+    }
     current_ = start_;
     steps_ = 0;
     walk_ = Walk{};
@@ -265,12 +271,25 @@ StepResult CoverageEnvironment::step(int action) {
 
 std::vector<float> CoverageEnvironment::observation() const {
     const std::size_t plane = static_cast<std::size_t>(size_) * static_cast<std::size_t>(size_);
-    std::vector<float> image(3 * plane, 0.0f);
+    std::vector<float> image(static_cast<std::size_t>(channelCount()) * plane, 0.0f);
     image[static_cast<std::size_t>(current_)] = 1.0f;
     for (const GraphNode& n : graph_->nodes)
         if (n.cell >= 0 && covered_[n.cell])
             image[plane + static_cast<std::size_t>(n.id)] = 1.0f;
     image[2 * plane + static_cast<std::size_t>(end_)] = 1.0f;
+    if (options_.costChannels) {
+        const double unit = std::max(graph_->maxEdgeLength, 1e-9) * kCostChannelScale;
+        auto feature = [unit](double cost) {
+            return static_cast<float>(cost < kInfinity ? std::min(cost / unit, 1.0) : 1.0);
+        };
+        const std::vector<char> mask = actionMask();
+        for (const GraphNode& n : graph_->nodes) {
+            const auto id = static_cast<std::size_t>(n.id);
+            if (mask[id])
+                image[3 * plane + id] = feature(transitCost_[id]);
+            image[4 * plane + id] = feature(costToEnd_[id]);
+        }
+    }
     return image;
 }
 

@@ -41,7 +41,14 @@ struct EnvironmentOptions {
     // "Improved" variant: reward = -(added graph cost) / maxEdgeLength x costScale, without the
     // per-cell bonuses; finalReward is still added at the goal.
     bool rewardIsNegativeGraphCost = false;
+    // "Improved" variant: two more image channels with graph-level features in the same
+    // node layout: 3 = cost of the transit from the current corner to each valid corner,
+    // 4 = cost from each corner to the end corner (under the covered set at reset); both in
+    // units of the longest edge, divided by kCostChannelScale and capped at 1.
+    bool costChannels = false;
 };
+
+constexpr double kCostChannelScale = 8.0;
 
 struct StepInfo {
     bool valid = false;       // the action covered a cell
@@ -72,8 +79,10 @@ public:
     // Throws std::logic_error when the episode is already done.
     StepResult step(int action);
 
-    // 3 x SIZE x SIZE, channel-major: current corner, covered cells' nodes, end corner.
+    // channelCount() x SIZE x SIZE, channel-major: current corner, covered cells' nodes, end
+    // corner (and the cost channels when enabled).
     std::vector<float> observation() const;
+    int channelCount() const { return options_.costChannels ? 5 : 3; }
     // Per node: true for a corner of an uncovered required cell reachable by a transit.
     std::vector<char> actionMask() const;
 
@@ -109,6 +118,7 @@ private:
     std::vector<char> initialCovered_; // at reset
     Walk walk_;
     std::vector<double> transitCost_; // node -> cheapest transit cost from current_
+    std::vector<double> costToEnd_;   // node -> transit cost to end_ (covered set at reset)
     std::vector<int> parentEdge_;     // node -> last edge of that transit, -1 at the source
 };
 

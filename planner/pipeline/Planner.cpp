@@ -2,6 +2,7 @@
 
 #include "model/Validation.h"
 #include "path/PathBuilder.h"
+#include "pipeline/SolverRegistry.h"
 
 #include <algorithm>
 #include <chrono>
@@ -121,11 +122,17 @@ Query makeQuery(const PreparedPlan& prepared, const std::vector<std::string>& ro
 }
 
 std::vector<std::string> solverNames() {
-    return {"exact", "heuristic", "greedy"};
+    std::vector<std::string> names{"exact", "heuristic", "greedy"};
+    for (const std::string& name : registeredSolverNames())
+        if (std::find(names.begin(), names.end(), name) == names.end())
+            names.push_back(name);
+    return names;
 }
 
 Solution runSolver(const std::string& name, const PreparedPlan& prepared, const Query& query,
-                   const std::string& /*modelPath*/, const SolveControl& control) {
+                   const std::string& modelPath, const SolveControl& control) {
+    if (std::optional<RegisteredSolver> registered = findRegisteredSolver(name))
+        return registered->solve(prepared, query, modelPath, control);
     if (name == "exact")
         return solveExact(prepared.graph, query, {}, control);
     if (name == "heuristic")
@@ -201,6 +208,11 @@ PlanResult planCoverage(const PlanRequest& request, const SolveControl& control)
     request.robot.validate();
     if (!request.sweep.automatic)
         return planAtAngle(request, request.sweep.angleDeg, control);
+    // A solver bound to one graph (a trained model) plans at the angle it was trained at.
+    if (std::optional<RegisteredSolver> registered = findRegisteredSolver(request.solver))
+        if (registered->sweepAngle)
+            if (std::optional<double> angle = registered->sweepAngle(request.modelPath))
+                return planAtAngle(request, *angle, control);
     const auto t0 = std::chrono::steady_clock::now();
     std::optional<PlanResult> best;
     for (double angle : candidateAngles(request.plan)) {

@@ -64,4 +64,14 @@ Solution solveHeuristic(const CornerGraph& graph, const Query& query,
                         const SolveControl& control = {});
 Solution solveGreedy(const CornerGraph& graph, const Query& query);
 
+// How far a learnt solver's walk is refined (switchable, so the learnt policy alone stays
+// measurable): None keeps it; Corners keeps the cell order and re-chooses every entry/exit
+// corner and transit exactly for that order (an option flip per cell); LocalSearch also
+// reorders cells (Or-opt, 2-opt, swaps) under the true graph cost within `workBudget`
+// settled search nodes. The cheaper of the given and the refined walk is returned.
+enum class OrderRefinement { None, Corners, LocalSearch };
+Solution refineCellOrder(const CornerGraph& graph, const Query& query, const Solution& given,
+                         OrderRefinement refinement, std::uint64_t workBudget = 200'000,
+                         const SolveControl& control = {});
+
 } // namespace fc

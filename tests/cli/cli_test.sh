@@ -115,5 +115,39 @@ expect_bad_input "unknown solver" "$plans/simple.geojson" --solver nonsense
 expect_bad_input "exact above its limit" "$plans/ward.geojson" --solver exact
 expect_bad_input "nan start" "$plans/simple.geojson" --start nan,1
 
+# The Double-DQN planner from the user's side: train, plan with the model, resume, Ctrl-C,
+# and a clear refusal of another plan's, a broken or a missing model.
+check "train a model" cli train "$plans/simple.geojson" --out "$work/simple.fcdqn" --episodes 30 --seed 3
+check "train summary" grep -q '"episodes":30' "$work/last"
+check "plan with dqn" cli plan "$plans/simple.geojson" --solver dqn --model "$work/simple.fcdqn" --out "$work/dqn.geojson"
+check "dqn metrics" metrics_ok
+check "dqn named in metrics" grep -q '"solver":"dqn"' "$work/last"
+check "compare includes dqn with a model" cli compare "$plans/simple.geojson" --model "$work/simple.fcdqn"
+check "compare lists dqn" grep -q '^dqn ' "$work/last"
+check "resume training" cli train "$plans/simple.geojson" --out "$work/simple.fcdqn" --episodes 5 --resume
+check "resumed episode count" grep -q '"episodes":35' "$work/last"
+"$cli" train "$plans/simple.geojson" --out "$work/interrupted.fcdqn" --seconds 120 >"$work/int.out" 2>&1 &
+trainer=$!
+sleep 3
+kill -INT "$trainer"
+check "ctrl-c ends training cleanly" wait "$trainer"
+check "ctrl-c reported" grep -q '"stopped_by":"interrupted"' "$work/int.out"
+check "ctrl-c saved the model" cli plan "$plans/simple.geojson" --solver dqn --model "$work/interrupted.fcdqn"
+expect_bad_input "model of another plan" "$plans/room-obstacle.geojson" --solver dqn --model "$work/simple.fcdqn"
+cp "$work/err" "$work/refusal"
+check "another plan named as such" grep -q "another floor plan" "$work/refusal"
+head -c 3000 "$work/simple.fcdqn" >"$work/truncated.fcdqn"
+expect_bad_input "truncated model" "$plans/simple.geojson" --solver dqn --model "$work/truncated.fcdqn"
+cp "$work/err" "$work/refusal"
+check "truncated named as such" grep -q "truncated" "$work/refusal"
+expect_bad_input "plan file as model" "$plans/simple.geojson" --solver dqn --model "$plans/simple.geojson"
+expect_bad_input "dqn without a model" "$plans/simple.geojson" --solver dqn
+expect_bad_input "missing model" "$plans/simple.geojson" --solver dqn --model "$work/none.fcdqn"
+"$cli" train "$plans/simple.geojson" --episodes 3 >"$work/out" 2>"$work/err"
+check "train without --out is bad input" test $? -eq 2
+"$cli" train "$work/missing.geojson" --out "$work/x.fcdqn" >"$work/out" 2>"$work/err"
+check "train on a missing plan is bad input" test $? -eq 2
+check "no model written for a missing plan" test ! -e "$work/x.fcdqn"
+
 echo "$passed passed, $failed failed"
 [ "$failed" -eq 0 ]

@@ -16,11 +16,18 @@ namespace fc::ui::test {
 inline std::unique_ptr<MainWindow> makeWindow() {
     auto window = std::make_unique<MainWindow>();
     window->setDialogsEnabled(false);
-    window->resize(1100, 750);
+    window->resize(1400, 900);
     window->show();
     if (!QTest::qWaitForWindowExposed(window.get()))
         qWarning("window not exposed");
     return window;
+}
+
+// A fixed zoom (32 pixels per metre: a 0.5 m grid, so clicks at half metres snap exactly)
+// centred on a 20 x 14 m drawing, whatever the docks leave to the canvas.
+inline void useDrawingScale(MainWindow& window) {
+    window.view()->setTransform(QTransform::fromScale(32.0, -32.0));
+    window.view()->centerOn(10.0, 7.0);
 }
 
 inline QPoint viewPoint(MainWindow& window, QPointF plan) {

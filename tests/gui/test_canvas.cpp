@@ -50,6 +50,7 @@ private slots:
 std::unique_ptr<MainWindow> CanvasTest::floorWithObstacle() {
     auto window = makeWindow();
     window->newDocument();
+    useDrawingScale(*window);
     useTool(*window, "drawBoundary");
     clickPolygon(*window, {{0, 0}, {20, 0}, {20, 14}, {0, 14}});
     useTool(*window, "drawObstacle");
@@ -137,6 +138,7 @@ void CanvasTest::deleteKeyDeletesSelectedPolygon() {
 void CanvasTest::shiftKeepsRightAngles() {
     auto window = makeWindow();
     window->newDocument();
+    useDrawingScale(*window);
     window->view()->snapper().snapToGrid = false; // only the right-angle constraint
     useTool(*window, "drawBoundary");
     QWidget* viewport = window->view()->viewport();

@@ -57,6 +57,7 @@ void EditorTest::initTestCase() {
 
 void EditorTest::drawFloor(MainWindow& window) {
     window.newDocument();
+    useDrawingScale(window);
     useTool(window, "drawBoundary");
     clickPolygon(window, {{0, 0}, {20, 0}, {20, 14}, {0, 14}});
     useTool(window, "drawRoom");

@@ -3,6 +3,7 @@
 #include "TestGraphs.h"
 #include "learning/CoverageEnvironment.h"
 
+#include <algorithm>
 #include <cmath>
 #include <gtest/gtest.h>
 #include <random>
@@ -155,6 +156,37 @@ TEST(CoverageEnvironment, NegativeGraphCostVariant) {
     EXPECT_DOUBLE_EQ(env.step(0).reward, 0.0);
     EXPECT_NEAR(env.step(4).reward, -1.0 * kScale, 1e-12);
     EXPECT_NEAR(env.step(7).reward, -7.0 * kScale + 1.0, 1e-12);
+}
+
+TEST(CoverageEnvironment, CostChannelsHoldTransitCostsToActionsAndToTheEnd) {
+    const CornerGraph g = threeCells();
+    EnvironmentOptions options;
+    options.costChannels = true;
+    CoverageEnvironment env(g, options);
+    EXPECT_EQ(env.channelCount(), 5);
+    const std::vector<float> start = env.reset(allRequired(0, 9));
+    ASSERT_EQ(start.size(), 5u * 16u);
+    const float unit = static_cast<float>(1.0 / (9.0 * kCostChannelScale));
+    EXPECT_FLOAT_EQ(start[3 * 16 + 0], 0.0f); // standing on a corner of an uncovered cell
+    EXPECT_FLOAT_EQ(start[4 * 16 + 9], 0.0f); // the end corner is 0 away from the end
+    env.step(0);                              // now on node 2; the transit to node 4 costs 1
+    const std::vector<float> image = env.observation();
+    EXPECT_FLOAT_EQ(image[3 * 16 + 4], 1.0f * unit);
+    for (int node = 0; node < 4; ++node) // corners of the covered cell are no action
+        EXPECT_EQ(image[3 * 16 + node], 0.0f) << node;
+    for (std::size_t i = 3 * 16; i < image.size(); ++i) {
+        EXPECT_GE(image[i], 0.0f);
+        EXPECT_LE(image[i], 1.0f);
+    }
+    // The cost-to-end channel is fixed for the episode; the first three channels are the
+    // paper's image unchanged.
+    for (int node = 0; node < 10; ++node)
+        EXPECT_EQ(image[4 * 16 + node], start[4 * 16 + node]) << node;
+    CoverageEnvironment plain(g);
+    plain.reset(allRequired(0, 9));
+    plain.step(0);
+    const std::vector<float> paper = plain.observation();
+    EXPECT_TRUE(std::equal(paper.begin(), paper.end(), image.begin()));
 }
 
 TEST(CoverageEnvironment, SeededResetIsReproducible) {

@@ -432,3 +432,30 @@ TEST(HeuristicSolver, IncrementalOrderCostsMatchFullEvaluation) {
         }
     }
 }
+
+TEST(OrderRefinement, EachLevelKeepsTheOrderValidAndNeverCostsMore) {
+    int improvedByCorners = 0;
+    for (unsigned seed = 300; seed < 330; ++seed) {
+        const Instance inst = randomInstance(seed, 4 + seed % 6, 0.8, 9);
+        // The greedy walk stands in for a learnt policy's walk.
+        const Solution given = solveGreedy(inst.graph, inst.query);
+        const Solution none = refineCellOrder(inst.graph, inst.query, given, OrderRefinement::None);
+        EXPECT_EQ(none.walk.nodes, given.walk.nodes);
+        const Solution corners =
+            refineCellOrder(inst.graph, inst.query, given, OrderRefinement::Corners);
+        const Solution local =
+            refineCellOrder(inst.graph, inst.query, given, OrderRefinement::LocalSearch);
+        expectValid(inst.graph, inst.query, corners);
+        expectValid(inst.graph, inst.query, local);
+        EXPECT_EQ(corners.solver, "greedy");
+        EXPECT_LE(corners.graphCost, given.graphCost + 1e-9) << "seed " << seed;
+        EXPECT_LE(local.graphCost, corners.graphCost + 1e-9) << "seed " << seed;
+        EXPECT_GE(local.graphCost, solveExact(inst.graph, inst.query).graphCost - 1e-9);
+        if (corners.graphCost < given.graphCost - 1e-9) {
+            ++improvedByCorners;
+            // Corners keeps the order of the cells.
+            EXPECT_EQ(corners.cellOrder, given.cellOrder) << "seed " << seed;
+        }
+    }
+    RecordProperty("improved_by_corner_choice", improvedByCorners);
+}

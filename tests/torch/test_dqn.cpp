@@ -99,6 +99,24 @@ TEST(DoubleDqnTargets, HandComputedWithMaskAndDone) {
     EXPECT_THROW(doubleDqnTargets(b, 0.9f, false), std::invalid_argument);
 }
 
+TEST(DoubleDqnTargets, NStepTransitionsDiscountByGammaToTheN) {
+    DoubleDqnBatch b;
+    b.actionCount = 2;
+    b.rewards = {1.5f, 1.5f, 1.5f};
+    b.dones = {0.0f, 0.0f, 1.0f};
+    b.nextOnlineQ = {0.0f, 1.0f, 0.0f, 1.0f, 0.0f, 1.0f};
+    b.nextTargetQ = {7.0f, 4.0f, 7.0f, 4.0f, 7.0f, 4.0f};
+    b.steps = {1, 3, 3};
+    const std::vector<float> y = doubleDqnTargets(b, 0.5f, false);
+    EXPECT_FLOAT_EQ(y[0], 1.5f + 0.5f * 4.0f);   // one step: gamma
+    EXPECT_FLOAT_EQ(y[1], 1.5f + 0.125f * 4.0f); // three steps: gamma^3
+    EXPECT_FLOAT_EQ(y[2], 1.5f);                 // ended within the three steps
+    b.steps = {1, 0, 1};
+    EXPECT_THROW(doubleDqnTargets(b, 0.5f, false), std::invalid_argument);
+    b.steps = {1};
+    EXPECT_THROW(doubleDqnTargets(b, 0.5f, false), std::invalid_argument);
+}
+
 TEST(DoubleDqnTargets, MaskedArgmaxTiesAndEmpty) {
     const float q[] = {1.0f, 3.0f, 3.0f, -2.0f};
     const char all[] = {1, 1, 1, 1};

@@ -5,7 +5,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
+#include <dlfcn.h>
+#include <iterator>
 #include <limits>
+#include <mutex>
 #include <stdexcept>
 #include <string>
 
@@ -19,6 +23,18 @@ namespace {
 void useOneThread() {
     if (at::get_num_threads() != 1)
         at::set_num_threads(1);
+    // Debian's libtorch calls the generic BLAS; when that is OpenBLAS its own thread pool
+    // would oversubscribe the cores (as OPENBLAS_NUM_THREADS=1 avoids). Looked up at run
+    // time because the reference BLAS has no such function.
+    static std::once_flag blasOnce;
+    std::call_once(blasOnce, [] {
+        if (std::getenv("FC_NO_MKLDNN"))
+            at::globalContext().setUserEnabledMkldnn(false);
+        using SetThreads = void (*)(int);
+        if (auto set =
+                reinterpret_cast<SetThreads>(dlsym(RTLD_DEFAULT, "openblas_set_num_threads")))
+            set(1);
+    });
 }
 
 int uniformChoice(const std::vector<char>& mask, int count, bool masked, std::mt19937_64& rng) {
@@ -57,7 +73,7 @@ DqnAgent::DqnAgent(int imageSize, int actionCount, DqnHyperParameters params)
       memory_(static_cast<std::size_t>(params.replayCapacity > 0 ? params.replayCapacity : 1)),
       rng_(params.seed) {
     if (params.replayCapacity <= 0 || params.batchSize <= 0 || params.targetSyncInterval <= 0 ||
-        params.trainInterval <= 0)
+        params.trainInterval <= 0 || params.inputChannels <= 0)
         throw std::invalid_argument("DqnAgent: capacity, batch and intervals must be positive");
     useOneThread();
     torch::manual_seed(params.seed);
@@ -80,13 +96,14 @@ std::vector<float> DqnAgent::targetQValues(const std::vector<float>& observation
 
 std::vector<float> DqnAgent::evaluate(bool target, const std::vector<float>& observations,
                                       int batch) const {
-    const std::int64_t pixels = 3LL * imageSize_ * imageSize_;
+    const std::int64_t pixels =
+        static_cast<std::int64_t>(params_.inputChannels) * imageSize_ * imageSize_;
     if (batch <= 0 || static_cast<std::int64_t>(observations.size()) != batch * pixels)
         throw std::invalid_argument("DqnAgent::qValues: observation size mismatch");
     torch::NoGradGuard noGrad;
     const torch::Tensor input =
         torch::from_blob(const_cast<float*>(observations.data()),
-                         {batch, 3, imageSize_, imageSize_}, torch::kFloat32);
+                         {batch, params_.inputChannels, imageSize_, imageSize_}, torch::kFloat32);
     QNetwork& network = target ? impl_->target : impl_->online;
     const torch::Tensor q = network->forward(input).contiguous();
     return std::vector<float>(q.data_ptr<float>(), q.data_ptr<float>() + q.numel());
@@ -114,7 +131,8 @@ int DqnAgent::act(const std::vector<float>& observation, const std::vector<char>
 }
 
 void DqnAgent::remember(Transition transition) {
-    const std::size_t pixels = 3U * static_cast<std::size_t>(imageSize_ * imageSize_);
+    const std::size_t pixels = static_cast<std::size_t>(params_.inputChannels) *
+                               static_cast<std::size_t>(imageSize_ * imageSize_);
     if (transition.observation.size() != pixels || transition.nextObservation.size() != pixels ||
         transition.nextMask.size() != static_cast<std::size_t>(actionCount_) ||
         transition.action < 0 || transition.action >= actionCount_)
@@ -126,7 +144,8 @@ double DqnAgent::trainStep() {
     useOneThread();
     const auto batch = static_cast<std::size_t>(params_.batchSize);
     const std::vector<std::size_t> indices = memory_.sample(batch, rng_);
-    const std::size_t pixels = 3U * static_cast<std::size_t>(imageSize_ * imageSize_);
+    const std::size_t pixels = static_cast<std::size_t>(params_.inputChannels) *
+                               static_cast<std::size_t>(imageSize_ * imageSize_);
     const auto actions = static_cast<std::size_t>(actionCount_);
 
     std::vector<float> observations(batch * pixels);
@@ -136,6 +155,7 @@ double DqnAgent::trainStep() {
     targetsInput.actionCount = actionCount_;
     targetsInput.rewards.resize(batch);
     targetsInput.dones.resize(batch);
+    targetsInput.steps.resize(batch);
     targetsInput.nextMask.resize(batch * actions);
     for (std::size_t i = 0; i < batch; ++i) {
         const Transition& t = memory_.at(indices[i]);
@@ -147,11 +167,13 @@ double DqnAgent::trainStep() {
         chosen[i] = t.action;
         targetsInput.rewards[i] = t.reward;
         targetsInput.dones[i] = t.done ? 1.0f : 0.0f;
+        targetsInput.steps[i] = t.steps;
     }
 
     const auto b = static_cast<std::int64_t>(batch);
     const torch::Tensor next =
-        torch::from_blob(nextObservations.data(), {b, 3, imageSize_, imageSize_}, torch::kFloat32);
+        torch::from_blob(nextObservations.data(),
+                         {b, params_.inputChannels, imageSize_, imageSize_}, torch::kFloat32);
     {
         torch::NoGradGuard noGrad;
         const torch::Tensor onlineQ = impl_->online->forward(next).contiguous();
@@ -164,8 +186,8 @@ double DqnAgent::trainStep() {
     std::vector<float> y =
         doubleDqnTargets(targetsInput, static_cast<float>(params_.gamma), params_.maskTargetArgmax);
 
-    const torch::Tensor input =
-        torch::from_blob(observations.data(), {b, 3, imageSize_, imageSize_}, torch::kFloat32);
+    const torch::Tensor input = torch::from_blob(
+        observations.data(), {b, params_.inputChannels, imageSize_, imageSize_}, torch::kFloat32);
     const torch::Tensor actionIndex = torch::from_blob(chosen.data(), {b, 1}, torch::kInt64);
     const torch::Tensor targets = torch::from_blob(y.data(), {b}, torch::kFloat32);
 
@@ -234,6 +256,39 @@ void DqnAgent::loadWeights(std::istream& in) {
     }
     copyWeights(loaded, impl_->online);
     syncTarget();
+}
+
+void DqnAgent::saveOptimizer(std::ostream& out) const {
+    torch::serialize::OutputArchive archive;
+    impl_->optimizer.save(archive);
+    archive.save_to(out);
+}
+
+void DqnAgent::loadOptimizer(std::istream& in) {
+    // Load into a scratch optimiser over a scratch network first, so that a bad stream leaves
+    // this agent's optimiser untouched.
+    QNetwork scratch(imageSize_, actionCount_, params_);
+    torch::optim::Adam check(scratch->parameters(),
+                             torch::optim::AdamOptions(params_.learningRate));
+    std::string bytes(std::istreambuf_iterator<char>(in), {});
+    try {
+        torch::serialize::InputArchive archive;
+        archive.load_from(bytes.data(), bytes.size());
+        check.load(archive);
+        torch::serialize::InputArchive again;
+        again.load_from(bytes.data(), bytes.size());
+        impl_->optimizer.load(again);
+    } catch (const c10::Error& e) {
+        throw std::runtime_error(std::string("DqnAgent: cannot load the optimiser state: ") +
+                                 e.what_without_backtrace());
+    }
+}
+
+void DqnAgent::restoreCounters(long steps, long trainSteps) {
+    if (steps < 0 || trainSteps < 0)
+        throw std::invalid_argument("DqnAgent::restoreCounters: negative count");
+    steps_ = steps;
+    trainSteps_ = trainSteps;
 }
 
 } // namespace fc

@@ -1,5 +1,5 @@
 // Double-DQN agent (SPEC sect. 5; van Hasselt et al. 2016) over the CoverageEnvironment's
-// 3 x SIZE x SIZE observations, one action per corner-graph node. LibTorch stays behind a
+// channels x SIZE x SIZE observations, one action per corner-graph node. LibTorch stays behind a
 // pimpl: this header exposes no torch types.
 //
 // Faithful defaults (the paper's network and optimiser): 3 convolution + 2 dense layers, Adam
@@ -19,8 +19,9 @@
 namespace fc {
 
 struct DqnHyperParameters {
-    // Network: conv 3 -> conv1 -> conv2 -> conv3 (3x3, padding 1, ReLU), dense -> hidden ->
-    // actions.
+    // Network: conv inputChannels -> conv1 -> conv2 -> conv3 (3x3, padding 1, ReLU), dense ->
+    // hidden -> actions.
+    int inputChannels = 3; // the paper's image; 5 with the environment's cost channels
     int conv1Channels = 32;
     int conv2Channels = 64;
     int conv3Channels = 64;
@@ -89,6 +90,12 @@ public:
     // target. Throws std::runtime_error on a stream that does not fit this architecture.
     void saveWeights(std::ostream& out) const;
     void loadWeights(std::istream& in);
+    // Adam's moments, so that a resumed training continues where it stopped. Throws
+    // std::runtime_error on a stream that does not fit.
+    void saveOptimizer(std::ostream& out) const;
+    void loadOptimizer(std::istream& in);
+    // Step counters of a resumed training (epsilon schedule, target sync phase).
+    void restoreCounters(long steps, long trainSteps);
 
     int imageSize() const { return imageSize_; }
     int actionCount() const { return actionCount_; }

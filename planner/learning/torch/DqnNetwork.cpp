@@ -15,7 +15,7 @@ torch::nn::Conv2d conv(int in, int out) {
 QNetworkImpl::QNetworkImpl(int imageSize, int actionCount, const DqnHyperParameters& params) {
     if (imageSize <= 0 || actionCount <= 0)
         throw std::invalid_argument("QNetwork: image size and action count must be positive");
-    conv1_ = register_module("conv1", conv(3, params.conv1Channels));
+    conv1_ = register_module("conv1", conv(params.inputChannels, params.conv1Channels));
     conv2_ = register_module("conv2", conv(params.conv1Channels, params.conv2Channels));
     conv3_ = register_module("conv3", conv(params.conv2Channels, params.conv3Channels));
     const std::int64_t flat =

@@ -1,5 +1,6 @@
 #include "learning/torch/DqnTargets.h"
 
+#include <cmath>
 #include <stdexcept>
 
 namespace fc {
@@ -23,6 +24,8 @@ std::vector<float> doubleDqnTargets(const DoubleDqnBatch& batch, float gamma, bo
         throw std::invalid_argument("doubleDqnTargets: inconsistent batch sizes");
     if (maskArgmax && batch.nextMask.size() != n * actions)
         throw std::invalid_argument("doubleDqnTargets: mask size differs from the Q values");
+    if (!batch.steps.empty() && batch.steps.size() != n)
+        throw std::invalid_argument("doubleDqnTargets: step counts differ from the batch size");
 
     std::vector<float> targets(n);
     for (std::size_t i = 0; i < n; ++i) {
@@ -34,7 +37,11 @@ std::vector<float> doubleDqnTargets(const DoubleDqnBatch& batch, float gamma, bo
             if (best >= 0)
                 bootstrap = batch.nextTargetQ[i * actions + static_cast<std::size_t>(best)];
         }
-        targets[i] = batch.rewards[i] + gamma * (1.0f - batch.dones[i]) * bootstrap;
+        const int steps = batch.steps.empty() ? 1 : batch.steps[i];
+        if (steps < 1)
+            throw std::invalid_argument("doubleDqnTargets: a transition spans no step");
+        const auto discount = static_cast<float>(std::pow(gamma, steps));
+        targets[i] = batch.rewards[i] + discount * (1.0f - batch.dones[i]) * bootstrap;
     }
     return targets;
 }

@@ -1,7 +1,8 @@
 // The Double-DQN bootstrap targets (van Hasselt et al. 2016) as a pure function of plain
 // vectors, so that the arithmetic is testable without LibTorch:
-//   y_i = r_i + gamma * (1 - done_i) * Q_target(s'_i, argmax_a Q_online(s'_i, a)),
-// the argmax taken over the actions valid in s'_i when masking is on.
+//   y_i = r_i + gamma^n_i * (1 - done_i) * Q_target(s'_i, argmax_a Q_online(s'_i, a)),
+// the argmax taken over the actions valid in s'_i when masking is on; n_i = 1 except for
+// n-step transitions (r_i then already sums n_i discounted rewards).
 #pragma once
 
 #include <vector>
@@ -14,6 +15,7 @@ struct DoubleDqnBatch {
     std::vector<float> nextOnlineQ; // batch x actionCount, row-major
     std::vector<float> nextTargetQ; // batch x actionCount, row-major
     std::vector<char> nextMask;     // batch x actionCount; may be empty when not masking
+    std::vector<int> steps;         // batch, n_i >= 1; may be empty (all 1)
     int actionCount = 0;
 };
 

@@ -8,12 +8,13 @@
 namespace fc {
 
 struct Transition {
-    std::vector<float> observation; // 3 x SIZE x SIZE
+    std::vector<float> observation; // channels x SIZE x SIZE
     int action = 0;
-    float reward = 0.0f;
-    std::vector<float> nextObservation; // 3 x SIZE x SIZE
+    float reward = 0.0f;                // n-step: sum of gamma^i x r_i over the `steps` rewards
+    std::vector<float> nextObservation; // channels x SIZE x SIZE
     std::vector<char> nextMask;         // per action, valid in nextObservation
     bool done = false;
+    int steps = 1; // environment steps between observation and nextObservation
 };
 
 class ReplayMemory {

@@ -1,0 +1,222 @@
+// floorcover-dqn-report: trains the Double-DQN planner in the paper's and in the improved
+// setting on sample plans under a fixed time budget (one thread), records learning curves
+// and measures the gap to exact/heuristic on 100 random queries.
+//   floorcover-dqn-report [--seconds S] [--seed N] [--queries N] [--cases a,b]
+//                         [--settings paper,improved,improved+gamma=1,...] --out DIR
+// A setting is "paper" or "improved", optionally followed by "+key=value" changes (an
+// ablation): mask=0|1, reward=paper|cost, nstep=N, gamma=G, lr=R, eps=STEPS, net=paper|small,
+// refine=none|corners|local-search, sync=STEPS, batch=N, features=0|1.
+// Writes DIR/curves-<case>-<setting>.csv and prints a Markdown table (docs/dqn.md).
+#include "formats/PlanIO.h"
+#include "learning/dqn/DqnTrainer.h"
+#include "pipeline/Planner.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <fstream>
+#include <iostream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+using namespace fc;
+using Clock = std::chrono::steady_clock;
+
+namespace {
+
+struct Case {
+    std::string plan;
+    QuerySet queries;
+};
+
+struct Options {
+    double seconds = 300.0;
+    std::uint64_t seed = 1;
+    int queries = 100;
+    std::vector<std::string> cases{"simple", "room-obstacle", "office"};
+    std::vector<std::string> settings{"paper", "improved"};
+    std::string out = ".";
+};
+
+std::vector<std::string> split(const std::string& text) {
+    std::vector<std::string> out;
+    std::stringstream in(text);
+    for (std::string item; std::getline(in, item, ',');)
+        if (!item.empty())
+            out.push_back(item);
+    return out;
+}
+
+TrainingOptions settingOptions(const std::string& setting, std::uint64_t seed) {
+    const std::vector<std::string> parts = [&] {
+        std::vector<std::string> out;
+        std::stringstream in(setting);
+        for (std::string item; std::getline(in, item, '+');)
+            out.push_back(item);
+        return out;
+    }();
+    TrainingOptions o =
+        parts.at(0) == "paper" ? TrainingOptions::paper(seed) : TrainingOptions::improved(seed);
+    const TrainingOptions paper = TrainingOptions::paper(seed);
+    for (std::size_t i = 1; i < parts.size(); ++i) {
+        const std::string key = parts[i].substr(0, parts[i].find('='));
+        const std::string value = parts[i].substr(parts[i].find('=') + 1);
+        if (key == "mask")
+            o.agent.maskActions = o.agent.maskTargetArgmax = value == "1";
+        else if (key == "reward") {
+            const bool cost = value == "cost";
+            o.environment = cost ? TrainingOptions::improved(seed).environment : paper.environment;
+        } else if (key == "nstep")
+            o.nStep = std::stoi(value);
+        else if (key == "gamma")
+            o.agent.gamma = std::stod(value);
+        else if (key == "lr")
+            o.agent.learningRate = std::stod(value);
+        else if (key == "eps")
+            o.agent.epsilonDecaySteps = std::stol(value);
+        else if (key == "sync")
+            o.agent.targetSyncInterval = std::stoi(value);
+        else if (key == "batch")
+            o.agent.batchSize = std::stoi(value);
+        else if (key == "net") {
+            const DqnHyperParameters& from =
+                value == "paper" ? paper.agent : TrainingOptions::improved(seed).agent;
+            o.agent.conv1Channels = from.conv1Channels;
+            o.agent.conv2Channels = from.conv2Channels;
+            o.agent.conv3Channels = from.conv3Channels;
+            o.agent.hiddenUnits = from.hiddenUnits;
+        } else if (key == "refine")
+            o.refinement = refinementFromName(value);
+        else
+            throw std::invalid_argument("unknown setting change " + key);
+    }
+    o.setting = setting;
+    return o;
+}
+
+double since(Clock::time_point t0) {
+    return std::chrono::duration<double>(Clock::now() - t0).count();
+}
+
+struct FinalFigures {
+    int queries = 0, failures = 0, exactReferences = 0;
+    double meanGap = 0, maxGap = 0, meanRefinedGap = 0, maxRefinedGap = 0, greedyGap = 0;
+    double meanMs = 0, maxMs = 0;
+};
+
+// Plans `queries` random queries with the trained policy (raw and as the dqn solver, i.e.
+// with the model's refinement) and compares with the exact optimum (<= 12 cells) or the
+// heuristic solver.
+FinalFigures measure(const DqnTrainer& trainer, const Case& c, int count, std::uint64_t seed) {
+    const CornerGraph& graph = trainer.graph();
+    FinalFigures f;
+    for (const Query& q : randomQueries(graph, count, seed * 1000003ULL + 17ULL, c.queries)) {
+        const int cells = static_cast<int>(std::count(q.required.begin(), q.required.end(), 1));
+        const bool exact = cells <= 12;
+        const double reference = std::max(
+            exact ? solveExact(graph, q).graphCost : solveHeuristic(graph, q).graphCost, 1e-9);
+        f.exactReferences += exact ? 1 : 0;
+        ++f.queries;
+        try {
+            const EnvironmentOptions& environment = trainer.options().environment;
+            const Solution raw = solveWithPolicy(trainer.agent(), graph, q, environment);
+            const auto t0 = Clock::now();
+            const Solution solved = solveWithPolicy(trainer.agent(), graph, q, environment,
+                                                    trainer.options().refinement);
+            const double ms = 1000.0 * since(t0);
+            f.meanMs += ms;
+            f.maxMs = std::max(f.maxMs, ms);
+            const double gap = raw.graphCost / reference - 1.0;
+            const double refined = solved.graphCost / reference - 1.0;
+            f.meanGap += gap;
+            f.maxGap = std::max(f.maxGap, gap);
+            f.meanRefinedGap += refined;
+            f.maxRefinedGap = std::max(f.maxRefinedGap, refined);
+            f.greedyGap += solveGreedy(graph, q).graphCost / reference - 1.0;
+        } catch (const SolverError& e) {
+            ++f.failures;
+            std::cerr << "failure: " << e.what() << "\n";
+        }
+    }
+    const int ok = std::max(1, f.queries - f.failures);
+    f.meanGap /= ok;
+    f.meanRefinedGap /= ok;
+    f.greedyGap /= ok;
+    f.meanMs /= ok;
+    return f;
+}
+
+} // namespace
+
+int main(int argc, char** argv) {
+    Options o;
+    for (int i = 1; i + 1 < argc; i += 2) {
+        const std::string key = argv[i], value = argv[i + 1];
+        if (key == "--seconds")
+            o.seconds = std::stod(value);
+        else if (key == "--seed")
+            o.seed = std::stoull(value);
+        else if (key == "--queries")
+            o.queries = std::stoi(value);
+        else if (key == "--cases")
+            o.cases = split(value);
+        else if (key == "--settings")
+            o.settings = split(value);
+        else if (key == "--out")
+            o.out = value;
+        else {
+            std::cerr << "unknown option " << key << "\n";
+            return 2;
+        }
+    }
+    std::printf("| plan | setting | episodes | env steps | gap (policy) | max gap | gap (dqn "
+                "solver) | max | greedy gap | failures | reference | ms/query (max) |\n");
+    std::printf("|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---|---:|\n");
+    for (const std::string& name : o.cases) {
+        const Case c{name, name == "office" || name == "ward" ? QuerySet::RoomSubsets
+                                                              : QuerySet::AllCells};
+        const Project project =
+            loadProjectFile(std::string(FC_PLANS_DIR) + "/" + name + ".geojson");
+        const PreparedPlan prepared = preparePlan(project.plan, project.robot, 90.0);
+        for (const std::string& setting : o.settings) {
+            const TrainingOptions options = settingOptions(setting, o.seed);
+            DqnTrainer trainer(prepared.graph, options, 90.0, project.robot.coverageWidth);
+            std::ofstream csv(o.out + "/curves-" + name + "-" + setting + ".csv");
+            csv << "episode,seconds,reward,moving_average,loss,epsilon,gap,refined_gap\n";
+            const double evaluationEvery = o.seconds / 20.0;
+            double nextEvaluation = 0.0;
+            trainer.train(0, o.seconds, [&](const TrainingProgress& p) {
+                csv << p.episode << ',' << p.elapsedSeconds << ',' << p.reward << ','
+                    << p.movingAverage << ',' << (std::isnan(p.loss) ? 0.0 : p.loss) << ','
+                    << p.epsilon;
+                if (p.elapsedSeconds >= nextEvaluation) {
+                    const EvaluationReport r = trainer.evaluate();
+                    csv << ',' << r.meanGap << ',' << r.meanRefinedGap;
+                    nextEvaluation += evaluationEvery;
+                } else {
+                    csv << ",,";
+                }
+                csv << '\n';
+            });
+            const EvaluationReport last = trainer.evaluate();
+            csv << trainer.episodes() << ',' << o.seconds << ",,,,," << last.meanGap << ','
+                << last.meanRefinedGap << '\n';
+            const FinalFigures f = measure(trainer, c, o.queries, o.seed);
+            const char* reference = f.exactReferences == f.queries ? "exact"
+                                    : f.exactReferences == 0       ? "heuristic"
+                                                                   : "exact/heuristic";
+            std::printf(
+                "| %s | %s | %ld | %ld | %.2f%% | %.1f%% | %.2f%% | %.2f%% | %.2f%% | %d/%d "
+                "| %s | %.1f (%.1f) |\n",
+                name.c_str(), setting.c_str(), trainer.episodes(), trainer.agent().stepCount(),
+                100 * f.meanGap, 100 * f.maxGap, 100 * f.meanRefinedGap, 100 * f.maxRefinedGap,
+                100 * f.greedyGap, f.failures, f.queries, reference, f.meanMs, f.maxMs);
+            std::fflush(stdout);
+            trainer.save(o.out + "/model-" + name + "-" + setting + ".fcdqn");
+        }
+    }
+    return 0;
+}

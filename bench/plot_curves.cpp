@@ -1,0 +1,134 @@
+// floorcover-plot-curves: renders the learning curves written by floorcover-dqn-report as
+// one PNG per plan (QCustomPlot, off screen): reward and gap to the reference, against
+// episodes and against training seconds, for the paper's and the improved setting.
+//   floorcover-plot-curves DIR CASE[,CASE..] OUTDIR
+#include <QApplication>
+#include <QFile>
+#include <QTextStream>
+#include <cstdio>
+#include <qcustomplot.h>
+
+namespace {
+
+struct Curve {
+    QVector<double> episode, seconds, reward, average, gapEpisode, gapSeconds, gap;
+};
+
+Curve readCurve(const QString& path) {
+    Curve c;
+    QFile file(path);
+    if (!file.open(QIODevice::ReadOnly | QIODevice::Text))
+        return c;
+    QTextStream in(&file);
+    in.readLine(); // header
+    while (!in.atEnd()) {
+        const QStringList f = in.readLine().split(',');
+        if (f.size() < 8)
+            continue;
+        const double episode = f[0].toDouble(), seconds = f[1].toDouble();
+        if (!f[3].isEmpty()) {
+            c.episode << episode;
+            c.seconds << seconds;
+            c.reward << f[2].toDouble();
+            c.average << f[3].toDouble();
+        }
+        if (!f[6].isEmpty()) {
+            c.gapEpisode << episode;
+            c.gapSeconds << seconds;
+            c.gap << 100.0 * f[6].toDouble();
+        }
+    }
+    return c;
+}
+
+void addLine(QCPAxisRect* rect, QCPAxis* valueAxis, const QVector<double>& x,
+             const QVector<double>& y, const QColor& color, const QString& name, QCustomPlot& plot,
+             bool dots = false) {
+    QCPGraph* g = plot.addGraph(rect->axis(QCPAxis::atBottom), valueAxis);
+    g->setData(x, y, true);
+    g->setPen(QPen(color, dots ? 1.0 : 2.0));
+    g->setName(name);
+    if (dots) {
+        g->setLineStyle(QCPGraph::lsNone);
+        g->setScatterStyle(QCPScatterStyle(QCPScatterStyle::ssDot));
+    }
+    valueAxis->setVisible(true);
+    valueAxis->rescale();
+    rect->axis(QCPAxis::atBottom)->rescale();
+}
+
+} // namespace
+
+int main(int argc, char** argv) {
+    if (qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM"))
+        qputenv("QT_QPA_PLATFORM", "offscreen");
+    QApplication app(argc, argv);
+    if (argc != 4) {
+        std::fprintf(stderr, "usage: floorcover-plot-curves DIR CASE[,CASE..] OUTDIR\n");
+        return 2;
+    }
+    const QString dir = argv[1];
+    const QColor paperColor(0xd9, 0x5f, 0x02), improvedColor(0x1b, 0x9e, 0x77);
+    for (const QString& name : QString(argv[2]).split(',')) {
+        const Curve paper = readCurve(dir + "/curves-" + name + "-paper.csv");
+        const Curve improved = readCurve(dir + "/curves-" + name + "-improved.csv");
+        QCustomPlot plot;
+        plot.plotLayout()->clear();
+        plot.plotLayout()->addElement(
+            0, 0,
+            new QCPTextElement(&plot, "DQN learning curves: " + name + " (one CPU thread)",
+                               QFont("Sans", 12, QFont::Bold)));
+        auto* grid = new QCPLayoutGrid;
+        plot.plotLayout()->addElement(1, 0, grid);
+        const struct {
+            const char* x;
+            bool seconds;
+        } axes[] = {{"episodes", false}, {"training seconds", true}};
+        for (int column = 0; column < 2; ++column) {
+            const bool bySeconds = axes[column].seconds;
+            // Reward: each setting has its own reward function, so each its own axis.
+            auto* reward = new QCPAxisRect(&plot);
+            grid->addElement(0, column, reward);
+            reward->axis(QCPAxis::atBottom)->setLabel(axes[column].x);
+            reward->axis(QCPAxis::atLeft)->setLabel("paper: episode reward (avg of 100)");
+            reward->axis(QCPAxis::atRight)->setLabel("improved: -graph cost / longest edge");
+            addLine(reward, reward->axis(QCPAxis::atLeft),
+                    bySeconds ? paper.seconds : paper.episode, paper.average, paperColor, "paper",
+                    plot);
+            addLine(reward, reward->axis(QCPAxis::atRight),
+                    bySeconds ? improved.seconds : improved.episode, improved.average,
+                    improvedColor, "improved", plot);
+            reward->axis(QCPAxis::atBottom)
+                ->setRange(0, std::max(bySeconds ? paper.seconds.value(paper.seconds.size() - 1)
+                                                 : paper.episode.value(paper.episode.size() - 1),
+                                       bySeconds
+                                           ? improved.seconds.value(improved.seconds.size() - 1)
+                                           : improved.episode.value(improved.episode.size() - 1)));
+            // Gap of the greedy policy (no refinement) to the reference solver.
+            auto* gap = new QCPAxisRect(&plot);
+            grid->addElement(1, column, gap);
+            gap->axis(QCPAxis::atBottom)->setLabel(axes[column].x);
+            gap->axis(QCPAxis::atLeft)->setLabel("policy gap to exact/heuristic (%)");
+            addLine(gap, gap->axis(QCPAxis::atLeft),
+                    bySeconds ? paper.gapSeconds : paper.gapEpisode, paper.gap, paperColor, "paper",
+                    plot);
+            addLine(gap, gap->axis(QCPAxis::atLeft),
+                    bySeconds ? improved.gapSeconds : improved.gapEpisode, improved.gap,
+                    improvedColor, "improved", plot);
+            gap->axis(QCPAxis::atLeft)->setRangeLower(0.0);
+            gap->axis(QCPAxis::atBottom)->setRange(reward->axis(QCPAxis::atBottom)->range());
+            auto* legend = new QCPLegend;
+            gap->insetLayout()->addElement(legend, Qt::AlignTop | Qt::AlignRight);
+            legend->setLayer("legend");
+            for (int i = plot.graphCount() - 2; i < plot.graphCount(); ++i)
+                legend->addItem(new QCPPlottableLegendItem(legend, plot.graph(i)));
+        }
+        const QString out = QString(argv[3]) + "/dqn-curves-" + name + ".png";
+        if (!plot.savePng(out, 1200, 800)) {
+            std::fprintf(stderr, "cannot write %s\n", qPrintable(out));
+            return 1;
+        }
+        std::printf("%s\n", qPrintable(out));
+    }
+    return 0;
+}

@@ -1,0 +1,67 @@
+#include "learning/dqn/DqnSolver.h"
+
+#include "learning/dqn/DqnModelFile.h"
+#include "learning/dqn/DqnPolicy.h"
+#include "model/Plan.h"
+#include "pipeline/Planner.h"
+#include "pipeline/SolverRegistry.h"
+
+#include <filesystem>
+#include <map>
+#include <memory>
+#include <mutex>
+
+namespace fc {
+namespace {
+
+struct CachedModel {
+    std::filesystem::file_time_type modified;
+    std::uintmax_t size = 0;
+    std::shared_ptr<const DqnModel> model;
+};
+
+// Loading the weights costs more than a query; the GUI and the benchmarks plan many
+// queries with one model.
+std::shared_ptr<const DqnModel> cachedModel(const std::string& path) {
+    if (path.empty())
+        throw InputError("solver dqn needs a trained model (--model FILE; make one with "
+                         "floorcover-cli train)");
+    static std::mutex mutex;
+    static std::map<std::string, CachedModel> cache;
+    std::error_code error;
+    const auto modified = std::filesystem::last_write_time(path, error);
+    const std::uintmax_t size = error ? 0 : std::filesystem::file_size(path, error);
+    if (error)
+        throw InputError(path + ": cannot open the model file");
+    std::lock_guard<std::mutex> lock(mutex);
+    auto it = cache.find(path);
+    if (it != cache.end() && it->second.modified == modified && it->second.size == size)
+        return it->second.model;
+    auto model = std::make_shared<DqnModel>(loadDqnModelFile(path));
+    cache[path] = CachedModel{modified, size, model};
+    return model;
+}
+
+Solution solveDqn(const PreparedPlan& prepared, const Query& query, const std::string& modelPath,
+                  const SolveControl& control) {
+    const std::shared_ptr<const DqnModel> model = cachedModel(modelPath);
+    checkModelFitsGraph(model->info, prepared.graph, modelPath);
+    return solveWithPolicy(*model->agent, prepared.graph, query, model->info.environment,
+                           model->info.refinement, control);
+}
+
+} // namespace
+
+void registerDqnSolver() {
+    RegisteredSolver solver;
+    solver.name = "dqn";
+    solver.solve = solveDqn;
+    solver.sweepAngle = [](const std::string& modelPath) -> std::optional<double> {
+        if (modelPath.empty())
+            return std::nullopt;
+        return loadDqnModelInfo(modelPath).stripeAngleDeg;
+    };
+    registerSolver(std::move(solver));
+}
+
+} // namespace fc

@@ -1,0 +1,261 @@
+#include "learning/dqn/DqnTrainer.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numeric>
+#include <stdexcept>
+
+namespace fc {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+// Up to this many required cells the evaluation's reference is the exact optimum.
+constexpr int kExactReferenceCells = 12;
+
+double secondsSince(Clock::time_point start) {
+    return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+} // namespace
+
+TrainingOptions TrainingOptions::paper(std::uint64_t seed) {
+    TrainingOptions o;
+    o.setting = "paper";
+    o.agent.seed = seed;
+    o.agent.maskActions = false;
+    o.agent.maskTargetArgmax = false;
+    return o;
+}
+
+TrainingOptions TrainingOptions::improved(std::uint64_t seed) {
+    TrainingOptions o;
+    o.setting = "improved";
+    DqnHyperParameters& a = o.agent;
+    a.seed = seed;
+    a.maskActions = true;
+    a.maskTargetArgmax = true;
+    // A narrower network: on a 16 x 16 image (office) the paper's costs 120 ms per update on
+    // one core, this one about 30 ms.
+    a.conv1Channels = 16;
+    a.conv2Channels = 32;
+    a.conv3Channels = 32;
+    a.hiddenUnits = 128;
+    a.learningRate = 1e-3;
+    a.epsilonDecaySteps = 8'000;
+    a.targetSyncInterval = 500;
+    a.replayCapacity = 20'000;
+    a.gradientClipNorm = 10.0;
+    // With masking every episode reaches the goal, so the final reward carries no
+    // information; the return is minus the walk's graph cost (in units of the longest edge).
+    o.environment.rewardIsNegativeGraphCost = true;
+    o.environment.finalReward = 0.0;
+    o.environment.costScale = 1.0;
+    o.environment.costChannels = true;
+    o.nStep = 3;
+    o.refinement = OrderRefinement::LocalSearch;
+    return o;
+}
+
+DqnTrainer::DqnTrainer(const CornerGraph& graph, TrainingOptions options, double stripeAngleDeg,
+                       double coverageWidth)
+    : graph_(std::make_unique<CornerGraph>(graph)), options_(std::move(options)),
+      stripeAngleDeg_(stripeAngleDeg), coverageWidth_(coverageWidth), rng_(options_.agent.seed) {
+    if (options_.nStep < 1)
+        throw std::invalid_argument("DqnTrainer: n-step must be at least 1");
+    environment_ = std::make_unique<CoverageEnvironment>(*graph_, options_.environment);
+    options_.agent.inputChannels = environment_->channelCount();
+    agent_ = std::make_unique<DqnAgent>(environment_->size(), environment_->actionCount(),
+                                        options_.agent);
+}
+
+DqnTrainer::DqnTrainer(const CornerGraph& graph, DqnModel model, const std::string& source)
+    : graph_(std::make_unique<CornerGraph>(graph)) {
+    checkModelFitsGraph(model.info, graph, source);
+    const DqnModelInfo& info = model.info;
+    options_.setting = info.setting;
+    options_.agent = info.agent;
+    options_.environment = info.environment;
+    options_.nStep = info.nStep;
+    options_.refinement = info.refinement;
+    stripeAngleDeg_ = info.stripeAngleDeg;
+    coverageWidth_ = info.coverageWidth;
+    episodes_ = info.episodes;
+    seconds_ = info.trainingSeconds;
+    // A different stream than the first run's, still a function of the seed and progress.
+    rng_.seed(info.agent.seed + static_cast<std::uint64_t>(info.episodes) * 7919U);
+    environment_ = std::make_unique<CoverageEnvironment>(*graph_, options_.environment);
+    agent_ = std::move(model.agent);
+}
+
+DqnTrainer::~DqnTrainer() = default;
+
+void DqnTrainer::flush(std::deque<PendingStep>& pending, const std::vector<float>& next,
+                       const std::vector<char>& nextMask, bool done, bool all, double& lossSum,
+                       int& lossCount) {
+    const double gamma = options_.agent.gamma;
+    while (!pending.empty()) {
+        double reward = 0.0;
+        double discount = 1.0;
+        for (const PendingStep& p : pending) {
+            reward += discount * p.reward;
+            discount *= gamma;
+        }
+        Transition t;
+        t.observation = std::move(pending.front().observation);
+        t.action = pending.front().action;
+        t.reward = static_cast<float>(reward);
+        t.nextObservation = next;
+        t.nextMask = nextMask;
+        t.done = done;
+        t.steps = static_cast<int>(pending.size());
+        pending.pop_front();
+        const double loss = agent_->observe(std::move(t));
+        if (!std::isnan(loss)) {
+            lossSum += loss;
+            ++lossCount;
+        }
+        if (!all)
+            break;
+    }
+}
+
+double DqnTrainer::runEpisode(double& lossSum, int& lossCount) {
+    CoverageEnvironment& env = *environment_;
+    std::vector<float> observation = env.reset(rng_);
+    std::deque<PendingStep> pending;
+    double episodeReward = 0.0;
+    while (!env.done()) {
+        const int action = agent_->act(observation, env.actionMask(), agent_->epsilon(), rng_);
+        const StepResult result = env.step(action);
+        episodeReward += result.reward;
+        pending.push_back({std::move(observation), action, result.reward});
+        observation = env.observation();
+        const std::vector<char> mask = env.actionMask();
+        if (result.done)
+            flush(pending, observation, mask, true, true, lossSum, lossCount);
+        else if (static_cast<int>(pending.size()) >= options_.nStep)
+            flush(pending, observation, mask, false, false, lossSum, lossCount);
+    }
+    return episodeReward;
+}
+
+TrainingStop DqnTrainer::train(long episodes, double seconds,
+                               const std::function<void(const TrainingProgress&)>& progress,
+                               const std::function<bool()>& cancelled) {
+    if (episodes <= 0 && seconds <= 0.0 && !cancelled)
+        throw std::invalid_argument("DqnTrainer::train: no episode or time limit");
+    const Clock::time_point start = Clock::now();
+    const long firstSteps = agent_->stepCount();
+    const double earlierSeconds = seconds_;
+    long done = 0;
+    for (;;) {
+        if (cancelled && cancelled())
+            return TrainingStop::Cancelled;
+        if (episodes > 0 && done >= episodes)
+            return TrainingStop::EpisodeLimit;
+        if (seconds > 0.0 && secondsSince(start) >= seconds)
+            return TrainingStop::TimeLimit;
+
+        double lossSum = 0.0;
+        int lossCount = 0;
+        TrainingProgress p;
+        p.reward = runEpisode(lossSum, lossCount);
+        ++episodes_;
+        ++done;
+        recentRewards_.push_back(p.reward);
+        while (static_cast<int>(recentRewards_.size()) > std::max(1, options_.movingAverageWindow))
+            recentRewards_.pop_front();
+        const double elapsed = secondsSince(start);
+        seconds_ = earlierSeconds + elapsed;
+
+        p.episode = episodes_;
+        p.movingAverage = std::accumulate(recentRewards_.begin(), recentRewards_.end(), 0.0) /
+                          static_cast<double>(recentRewards_.size());
+        p.loss = lossCount > 0 ? lossSum / lossCount : std::numeric_limits<double>::quiet_NaN();
+        p.epsilon = agent_->epsilon();
+        p.totalSteps = agent_->stepCount();
+        p.stepsPerSecond =
+            elapsed > 0.0 ? static_cast<double>(p.totalSteps - firstSteps) / elapsed : 0.0;
+        if (options_.evaluationInterval > 0 && episodes_ % options_.evaluationInterval == 0) {
+            p.evaluation = evaluate();
+            seconds_ = earlierSeconds + secondsSince(start); // evaluation time counts too
+        }
+        p.elapsedSeconds = seconds_;
+        if (progress)
+            progress(p);
+    }
+}
+
+EvaluationReport DqnTrainer::evaluate() {
+    if (evaluationQueries_.empty()) {
+        const QuerySet kind = roomCount(*graph_) > 1 ? QuerySet::RoomSubsets : QuerySet::AllCells;
+        evaluationQueries_ = randomQueries(*graph_, std::max(1, options_.evaluationQueries),
+                                           options_.agent.seed ^ 0x5eedULL, kind);
+        int exactCount = 0;
+        for (const Query& q : evaluationQueries_) {
+            const int cells = static_cast<int>(std::count(q.required.begin(), q.required.end(), 1));
+            const bool exact = cells <= kExactReferenceCells;
+            exactCount += exact ? 1 : 0;
+            referenceCosts_.push_back(exact ? solveExact(*graph_, q).graphCost
+                                            : solveHeuristic(*graph_, q).graphCost);
+        }
+        referenceName_ = exactCount == static_cast<int>(evaluationQueries_.size()) ? "exact"
+                         : exactCount == 0                                         ? "heuristic"
+                                           : "exact/heuristic";
+    }
+    EvaluationReport report;
+    report.reference = referenceName_;
+    report.queries = static_cast<int>(evaluationQueries_.size());
+    int finished = 0;
+    for (std::size_t i = 0; i < evaluationQueries_.size(); ++i) {
+        const Clock::time_point start = Clock::now();
+        try {
+            const Solution raw =
+                solveWithPolicy(*agent_, *graph_, evaluationQueries_[i], options_.environment);
+            const Solution refined =
+                refineCellOrder(*graph_, evaluationQueries_[i], raw, options_.refinement);
+            report.meanMilliseconds += 1000.0 * secondsSince(start);
+            const double reference = std::max(referenceCosts_[i], 1e-9);
+            const double gap = raw.graphCost / reference - 1.0;
+            report.meanGap += gap;
+            report.maxGap = std::max(report.maxGap, gap);
+            report.meanRefinedGap += refined.graphCost / reference - 1.0;
+            ++finished;
+        } catch (const SolverError&) {
+            ++report.failures;
+        }
+    }
+    if (finished > 0) {
+        report.meanGap /= finished;
+        report.meanRefinedGap /= finished;
+        report.meanMilliseconds /= finished;
+    }
+    return report;
+}
+
+DqnModelInfo DqnTrainer::modelInfo() const {
+    DqnModelInfo info;
+    info.setting = options_.setting;
+    info.agent = options_.agent;
+    info.environment = options_.environment;
+    info.nStep = options_.nStep;
+    info.refinement = options_.refinement;
+    info.graphFingerprint = graphFingerprint(*graph_);
+    info.nodeCount = static_cast<int>(graph_->nodes.size());
+    info.cellCount = static_cast<int>(graph_->cells.size());
+    info.stripeAngleDeg = stripeAngleDeg_;
+    info.coverageWidth = coverageWidth_;
+    info.episodes = episodes_;
+    info.steps = agent_->stepCount();
+    info.trainSteps = agent_->trainStepCount();
+    info.trainingSeconds = seconds_;
+    return info;
+}
+
+void DqnTrainer::save(const std::string& path) const {
+    saveDqnModelFile(path, modelInfo(), *agent_);
+}
+
+} // namespace fc

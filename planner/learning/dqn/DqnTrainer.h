@@ -1,0 +1,119 @@
+// Training of the Double-DQN planner for one corner graph (SPEC sect. 5): the episode loop,
+// n-step transitions, progress reports, cancellation between episodes and resumption, and
+// the periodic evaluation on a fixed query set against the exact or heuristic solver.
+// Runs on any thread; the caller's callbacks run on the training thread.
+#pragma once
+
+#include "learning/CoverageEnvironment.h"
+#include "learning/dqn/DqnModelFile.h"
+#include "learning/dqn/DqnPolicy.h"
+#include "learning/torch/DqnAgent.h"
+
+#include <chrono>
+#include <deque>
+#include <functional>
+#include <memory>
+#include <optional>
+#include <random>
+#include <string>
+
+namespace fc {
+
+struct TrainingOptions {
+    std::string setting = "custom"; // recorded in the model file
+    DqnHyperParameters agent;
+    EnvironmentOptions environment;
+    int nStep = 1;                                      // 1 = the paper's one-step target
+    OrderRefinement refinement = OrderRefinement::None; // what the dqn solver applies
+    int evaluationInterval = 0;                         // episodes; 0 = no evaluation
+    int evaluationQueries = 20;
+    int movingAverageWindow = 100;
+
+    // The paper's setting: its network, optimiser and schedule, no masking, one-step targets,
+    // the paper's rewards, the learnt walk as it is.
+    static TrainingOptions paper(std::uint64_t seed = 1);
+    // Ours: masked acting and argmax, reward = minus the added graph cost, 3-step returns,
+    // a schedule sized for minutes on two cores, and the walk's corners and order refined by
+    // the true-cost local search at inference.
+    static TrainingOptions improved(std::uint64_t seed = 1);
+};
+
+struct EvaluationReport {
+    int queries = 0;
+    int failures = 0;     // rollouts that did not finish (never with masking)
+    double meanGap = 0.0; // policy alone vs reference, mean of cost / reference - 1
+    double maxGap = 0.0;
+    double meanRefinedGap = 0.0; // after the model's refinement
+    double meanMilliseconds = 0.0;
+    std::string reference; // "exact", "heuristic" or a mix
+};
+
+struct TrainingProgress {
+    long episode = 0;           // episodes so far (including earlier runs)
+    double reward = 0.0;        // of the episode just finished
+    double movingAverage = 0.0; // over the last movingAverageWindow episodes
+    double loss = 0.0;          // mean over the episode's gradient steps; NaN if none
+    double epsilon = 0.0;
+    double stepsPerSecond = 0.0; // in this run
+    long totalSteps = 0;
+    double elapsedSeconds = 0.0;                // training time including earlier runs
+    std::optional<EvaluationReport> evaluation; // set when this episode was evaluated
+};
+
+enum class TrainingStop { EpisodeLimit, TimeLimit, Cancelled };
+
+class DqnTrainer {
+public:
+    // A new model for `graph`; the graph is copied.
+    DqnTrainer(const CornerGraph& graph, TrainingOptions options, double stripeAngleDeg = 90.0,
+               double coverageWidth = 1.0);
+    // Resumes a saved model (throws InputError when it was trained for another graph). The
+    // replay memory is not saved: it refills from the restored policy.
+    DqnTrainer(const CornerGraph& graph, DqnModel model, const std::string& source);
+    ~DqnTrainer();
+
+    // Trains until `episodes` more episodes (<= 0: no limit) or `seconds` more seconds (<= 0:
+    // no limit) have passed or `cancelled` returns true; checked between episodes, so the
+    // model is always consistent. Call again to resume. Without any limit and without a
+    // cancellation callback it throws std::invalid_argument.
+    TrainingStop train(long episodes, double seconds,
+                       const std::function<void(const TrainingProgress&)>& progress = {},
+                       const std::function<bool()>& cancelled = {});
+
+    // The fixed query set (all cells, or random room subsets on floors with several rooms).
+    EvaluationReport evaluate();
+
+    DqnModelInfo modelInfo() const;
+    void save(const std::string& path) const;
+    const DqnAgent& agent() const { return *agent_; }
+    const CornerGraph& graph() const { return *graph_; }
+    const TrainingOptions& options() const { return options_; }
+    long episodes() const { return episodes_; }
+
+private:
+    struct PendingStep {
+        std::vector<float> observation;
+        int action = 0;
+        double reward = 0.0;
+    };
+    double runEpisode(double& lossSum, int& lossCount);
+    void flush(std::deque<PendingStep>& pending, const std::vector<float>& next,
+               const std::vector<char>& nextMask, bool done, bool all, double& lossSum,
+               int& lossCount);
+
+    std::unique_ptr<CornerGraph> graph_; // stable address for the environment
+    TrainingOptions options_;
+    double stripeAngleDeg_ = 90.0;
+    double coverageWidth_ = 1.0;
+    std::unique_ptr<CoverageEnvironment> environment_;
+    std::unique_ptr<DqnAgent> agent_;
+    std::mt19937_64 rng_;
+    long episodes_ = 0;
+    double seconds_ = 0.0;
+    std::deque<double> recentRewards_;
+    std::vector<Query> evaluationQueries_;
+    std::vector<double> referenceCosts_;
+    std::string referenceName_;
+};
+
+} // namespace fc

@@ -1,0 +1,57 @@
+// Refinement of a given cell order (e.g. the DQN policy's): the exact corner choice of
+// OrderEvaluator, then optionally the heuristic solver's true-cost local search.
+#include "solvers/OrderEvaluator.h"
+#include "solvers/OrderPolish.h"
+#include "solvers/ProxyDistances.h"
+#include "solvers/Solver.h"
+#include "solvers/SolverCommon.h"
+#include "solvers/TransitSearch.h"
+
+namespace fc {
+
+using namespace solver_detail;
+
+namespace {
+
+// Neighbours per cell the local search considers (as the heuristic solver on large floors).
+constexpr int kNeighbourCount = 10;
+
+} // namespace
+
+Solution refineCellOrder(const CornerGraph& graph, const Query& query, const Solution& given,
+                         OrderRefinement refinement, std::uint64_t workBudget,
+                         const SolveControl& control) {
+    if (refinement == OrderRefinement::None)
+        return given;
+    const char* name = given.solver.c_str();
+    const Problem problem = makeProblem(graph, query, name);
+    const int tasks = problem.taskCount();
+    if (tasks == 0)
+        return given;
+    std::vector<int> order;
+    std::vector<char> seen(static_cast<std::size_t>(tasks), 0);
+    for (int cell : given.cellOrder) {
+        const int task = problem.taskOfCell[static_cast<std::size_t>(cell)];
+        if (task < 0 || seen[static_cast<std::size_t>(task)])
+            continue; // not required, or covered again later: not a new task
+        seen[static_cast<std::size_t>(task)] = 1;
+        order.push_back(task);
+    }
+    if (static_cast<int>(order.size()) != tasks)
+        throw SolverError(given.solver + ": the walk to refine does not cover every cell once");
+
+    const TransitGraph transit(problem);
+    TransitSearch search(transit);
+    OrderEvaluator evaluator(transit, search);
+    double cost = evaluator.setBase(order);
+    if (refinement == OrderRefinement::LocalSearch && cost < kInfinity) {
+        ProxyDistances distances(transit, search, std::min(tasks - 1, kNeighbourCount));
+        OrderPolish polish(evaluator, distances, tasks, problem.seed);
+        cost = polish.improve(order, workBudget, control);
+    }
+    if (!(cost < given.graphCost - 1e-9))
+        return given; // e.g. infeasible under the covered state, or no better
+    return finishSolution(graph, query, name, evaluator.walk(order));
+}
+
+} // namespace fc

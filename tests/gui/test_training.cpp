@@ -1,0 +1,174 @@
+// The training dock driven as a user would: start, see points on the reward plot, pause,
+// resume, stop, save and reload the model, and the model offered to solver "dqn". The
+// trainer runs on the dock's worker thread while this (GUI) thread keeps processing events.
+#include "EditorFixture.h"
+#include "PlanningController.h"
+#include "formats/PlanIO.h"
+#include "learning/dqn/DqnModelFile.h"
+#include "learning/dqn/DqnSolver.h"
+#include "training/TrainingDock.h"
+
+#include <QElapsedTimer>
+#include <QPushButton>
+#include <QSignalSpy>
+#include <QTemporaryDir>
+#include <QtTest>
+#include <qcustomplot.h>
+
+using namespace fc;
+using namespace fc::ui;
+
+namespace {
+
+std::shared_ptr<const PreparedPlan> preparedSample(const char* name, double angle = 90.0) {
+    const Project project = loadProjectFile(std::string(FC_PLANS_DIR) + "/" + name + ".geojson");
+    return std::make_shared<const PreparedPlan>(preparePlan(project.plan, project.robot, angle));
+}
+
+TrainingOptions smallOptions() {
+    TrainingOptions o = TrainingOptions::improved(1);
+    o.agent.conv1Channels = o.agent.conv2Channels = o.agent.conv3Channels = 8;
+    o.agent.hiddenUnits = 32;
+    o.agent.learningStarts = 50;
+    o.agent.batchSize = 16;
+    return o;
+}
+
+} // namespace
+
+class TrainingDockTest : public QObject {
+    Q_OBJECT
+private slots:
+    void trainsPausesResumesAndSaves();
+    void refusesAModelOfAnotherPlanAndKeepsItsOwn();
+    void planChangeInvalidatesTheModel();
+    void mainWindowTrainsAndPlansWithDqn();
+};
+
+void TrainingDockTest::trainsPausesResumesAndSaves() {
+    registerDqnSolver();
+    TrainingDock dock;
+    dock.setTrainingOptions(smallOptions());
+    QSignalSpy ready(&dock, &TrainingDock::modelReady);
+    dock.setPreparedPlan(preparedSample("simple"));
+    QCOMPARE(dock.state(), TrainingDock::State::Idle);
+
+    dock.start();
+    QCOMPARE(dock.state(), TrainingDock::State::Running);
+    // The GUI thread stays free: events are processed while points arrive.
+    QElapsedTimer longestGap;
+    qint64 worst = 0;
+    QElapsedTimer total;
+    total.start();
+    longestGap.start();
+    while (dock.plottedPoints() < 20 && total.elapsed() < 30000) {
+        QCoreApplication::processEvents(QEventLoop::AllEvents, 20);
+        worst = std::max(worst, longestGap.restart());
+    }
+    QVERIFY2(dock.plottedPoints() >= 20, "no reward points on the plot");
+    QVERIFY(dock.plot()->graph(1)->dataCount() >= 20); // moving average too
+    QVERIFY2(worst < 1000, qPrintable(QString("event loop blocked for %1 ms").arg(worst)));
+
+    dock.pause();
+    QCOMPARE(dock.state(), TrainingDock::State::Paused);
+    QTRY_VERIFY_WITH_TIMEOUT(!ready.isEmpty(), 10000); // saved to the cache on pause
+    const QString cached = ready.last().at(0).toString();
+    QVERIFY(QFile::exists(cached));
+    const long pausedEpisodes = dock.episodes();
+    QVERIFY(pausedEpisodes > 0);
+
+    dock.resumeTraining();
+    QCOMPARE(dock.state(), TrainingDock::State::Running);
+    QTRY_VERIFY_WITH_TIMEOUT(dock.episodes() > pausedEpisodes + 5, 30000);
+    dock.stop();
+    QCOMPARE(dock.state(), TrainingDock::State::Finished);
+    QTRY_VERIFY_WITH_TIMEOUT(ready.size() >= 2, 10000);
+
+    QTemporaryDir dir;
+    const QString path = dir.filePath("simple.fcdqn");
+    QVERIFY2(dock.saveModel(path), qPrintable(dock.lastError()));
+    const DqnModelInfo info = loadDqnModelInfo(path.toStdString());
+    QCOMPARE(info.episodes, dock.episodes());
+    QCOMPARE(dock.modelPath(), path);
+
+    // The saved model plans through solver dqn.
+    PlanRequest request;
+    request.plan = loadProjectFile(std::string(FC_PLANS_DIR) + "/simple.geojson").plan;
+    request.solver = "dqn";
+    request.modelPath = path.toStdString();
+    QVERIFY(planCoverage(request).metrics.coverage >= 0.99);
+}
+
+void TrainingDockTest::refusesAModelOfAnotherPlanAndKeepsItsOwn() {
+    QTemporaryDir dir;
+    const QString other = dir.filePath("room-obstacle.fcdqn");
+    {
+        DqnTrainer trainer(preparedSample("room-obstacle")->graph, smallOptions());
+        trainer.train(3, 0.0);
+        trainer.save(other.toStdString());
+    }
+    TrainingDock dock;
+    dock.setTrainingOptions(smallOptions());
+    dock.setPreparedPlan(preparedSample("simple"));
+    QVERIFY(!dock.loadModel(other));
+    QVERIFY2(dock.lastError().contains("another floor plan"), qPrintable(dock.lastError()));
+    QCOMPARE(dock.state(), TrainingDock::State::Idle);
+    const QString broken = dir.filePath("broken.fcdqn");
+    QFile file(broken);
+    QVERIFY(file.open(QIODevice::WriteOnly));
+    file.write("FLOORCOVER-DQN 1\n{");
+    file.close();
+    QVERIFY(!dock.loadModel(broken));
+    QVERIFY(dock.lastError().contains("broken.fcdqn"));
+}
+
+void TrainingDockTest::planChangeInvalidatesTheModel() {
+    TrainingDock dock;
+    dock.setTrainingOptions(smallOptions());
+    QSignalSpy ready(&dock, &TrainingDock::modelReady);
+    dock.setPreparedPlan(preparedSample("simple"));
+    dock.start();
+    QTRY_VERIFY_WITH_TIMEOUT(dock.plottedPoints() > 0, 30000);
+    dock.stop();
+    QTRY_VERIFY_WITH_TIMEOUT(!ready.isEmpty() && !ready.last().at(0).toString().isEmpty(), 10000);
+    dock.setPreparedPlan(preparedSample("simple")); // same graph: the model stays
+    QVERIFY(!dock.modelPath().isEmpty());
+    dock.setPreparedPlan(preparedSample("simple", 0.0)); // another graph
+    QCOMPARE(dock.state(), TrainingDock::State::Idle);
+    QVERIFY(dock.modelPath().isEmpty());
+    QVERIFY(ready.last().at(0).toString().isEmpty());
+}
+
+void TrainingDockTest::mainWindowTrainsAndPlansWithDqn() {
+    registerDqnSolver();
+    auto window = fc::ui::test::makeWindow();
+    QVERIFY(window->openFile(QStringLiteral(FC_PLANS_DIR "/room-obstacle.geojson")));
+    TrainingDock* dock = window->trainingDock();
+    QVERIFY(dock);
+    dock->setTrainingOptions(smallOptions());
+    QPushButton* startButton = nullptr;
+    QPushButton* stopButton = nullptr;
+    for (QPushButton* b : dock->findChildren<QPushButton*>()) {
+        if (b->text() == QLatin1String("Start"))
+            startButton = b;
+        if (b->text() == QLatin1String("Stop"))
+            stopButton = b;
+    }
+    QVERIFY(startButton && stopButton);
+    QTRY_VERIFY_WITH_TIMEOUT(startButton->isEnabled(), 10000); // follows the planner's graph
+    QTest::mouseClick(startButton, Qt::LeftButton);
+    QTRY_VERIFY_WITH_TIMEOUT(dock->plottedPoints() >= 10, 30000);
+    QTest::mouseClick(stopButton, Qt::LeftButton);
+    QTRY_VERIFY_WITH_TIMEOUT(!dock->modelPath().isEmpty(), 10000);
+
+    window->document()->setSolver(QStringLiteral("dqn"));
+    QVERIFY2(window->planningController()->planAndWait(),
+             qPrintable(window->planningController()->errorMessage()));
+    const auto result = window->planningController()->result();
+    QVERIFY(result);
+    QCOMPARE(QString::fromStdString(result->solution.solver), QStringLiteral("dqn"));
+    QVERIFY(result->metrics.coverage >= 0.99);
+}
+
+QTEST_MAIN(TrainingDockTest)
+#include "test_training.moc"
