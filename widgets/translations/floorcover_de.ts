@@ -868,6 +868,160 @@ Abdeckungspfadplanung für Reinigungs- und Desinfektionsroboter.</translation>
     </message>
 </context>
 <context>
+    <name>fc::ui::TrainingDock</name>
+    <message>
+        <source>Training</source>
+        <translation>Training</translation>
+    </message>
+    <message>
+        <source>Improved</source>
+        <translation>Verbessert</translation>
+    </message>
+    <message>
+        <source>Paper</source>
+        <translation>Wie im Artikel</translation>
+    </message>
+    <message>
+        <source>Improved: masking, graph-cost reward, 3-step returns and a refined walk. Paper: the published setting.</source>
+        <translation>Verbessert: Maskierung, Belohnung nach Graphkosten, 3-Schritt-Erträge und ein verfeinerter Weg. Wie im Artikel: die veröffentlichte Einstellung.</translation>
+    </message>
+    <message>
+        <source> s</source>
+        <translation> s</translation>
+    </message>
+    <message>
+        <source>Training time for one run</source>
+        <translation>Trainingszeit für einen Lauf</translation>
+    </message>
+    <message>
+        <source>Start</source>
+        <translation>Starten</translation>
+    </message>
+    <message>
+        <source>Pause</source>
+        <translation>Pause</translation>
+    </message>
+    <message>
+        <source>Stop</source>
+        <translation>Stopp</translation>
+    </message>
+    <message>
+        <source>No model yet</source>
+        <translation>Noch kein Modell</translation>
+    </message>
+    <message>
+        <source>Episode</source>
+        <translation>Episode</translation>
+    </message>
+    <message>
+        <source>Reward</source>
+        <translation>Belohnung</translation>
+    </message>
+    <message>
+        <source>Loss / epsilon</source>
+        <translation>Verlust / Epsilon</translation>
+    </message>
+    <message>
+        <source>Episode reward</source>
+        <translation>Episodenbelohnung</translation>
+    </message>
+    <message>
+        <source>Moving average (100)</source>
+        <translation>Gleitender Mittelwert (100)</translation>
+    </message>
+    <message>
+        <source>Loss</source>
+        <translation>Verlust</translation>
+    </message>
+    <message>
+        <source>Epsilon</source>
+        <translation>Epsilon</translation>
+    </message>
+    <message>
+        <source>Save Model…</source>
+        <translation>Modell speichern…</translation>
+    </message>
+    <message>
+        <source>Load Model…</source>
+        <translation>Modell laden…</translation>
+    </message>
+    <message>
+        <source>The plan changed: the model no longer fits it. Start to train for the new plan.</source>
+        <translation>Der Plan hat sich geändert: Das Modell passt nicht mehr dazu. Starten Sie das Training für den neuen Plan.</translation>
+    </message>
+    <message>
+        <source>There is no valid plan to train for.</source>
+        <translation>Es gibt keinen gültigen Plan zum Trainieren.</translation>
+    </message>
+    <message>
+        <source>Episode %1 · %2 steps/s · epsilon %3 · average reward %4</source>
+        <translation>Episode %1 · %2 Schritte/s · Epsilon %3 · mittlere Belohnung %4</translation>
+    </message>
+    <message>
+        <source>%1% · %2 left</source>
+        <translation>%1 % · noch %2</translation>
+    </message>
+    <message>
+        <source>Model after %1 episodes (%2 of training) ready for solver dqn</source>
+        <translation>Modell nach %1 Episoden (%2 Training) für den Löser dqn bereit</translation>
+    </message>
+    <message>
+        <source>Pause the training before saving the model.</source>
+        <translation>Pausieren Sie das Training, bevor Sie das Modell speichern.</translation>
+    </message>
+    <message>
+        <source>Cannot save the model to %1: %2</source>
+        <translation>Das Modell kann nicht nach %1 gespeichert werden: %2</translation>
+    </message>
+    <message>
+        <source>Stop the training before loading a model.</source>
+        <translation>Stoppen Sie das Training, bevor Sie ein Modell laden.</translation>
+    </message>
+    <message>
+        <source>Loaded %1 (%2 episodes of training)</source>
+        <translation>%1 geladen (%2 Episoden Training)</translation>
+    </message>
+    <message>
+        <source>Save Model</source>
+        <translation>Modell speichern</translation>
+    </message>
+    <message>
+        <source>FloorCover DQN model (*.fcdqn)</source>
+        <translation>FloorCover-DQN-Modell (*.fcdqn)</translation>
+    </message>
+    <message>
+        <source>Load Model</source>
+        <translation>Modell laden</translation>
+    </message>
+    <message>
+        <source>%p%</source>
+        <translation>%p %</translation>
+    </message>
+    <message>
+        <source>Resume</source>
+        <translation>Fortsetzen</translation>
+    </message>
+</context>
+<context>
+    <name>fc::ui::TrainingWorker</name>
+    <message>
+        <source>There is no valid plan to train for.</source>
+        <translation>Es gibt keinen gültigen Plan zum Trainieren.</translation>
+    </message>
+    <message>
+        <source>Training cannot start: %1</source>
+        <translation>Das Training kann nicht beginnen: %1</translation>
+    </message>
+    <message>
+        <source>Training failed: %1</source>
+        <translation>Das Training ist fehlgeschlagen: %1</translation>
+    </message>
+    <message>
+        <source>there is no trained model yet</source>
+        <translation>es gibt noch kein trainiertes Modell</translation>
+    </message>
+</context>
+<context>
     <name>fc::ui::Translations</name>
     <message>
         <source>System language</source>

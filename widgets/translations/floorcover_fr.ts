@@ -868,6 +868,160 @@ Planification de trajets de couverture pour robots de nettoyage et de désinfect
     </message>
 </context>
 <context>
+    <name>fc::ui::TrainingDock</name>
+    <message>
+        <source>Training</source>
+        <translation>Entraînement</translation>
+    </message>
+    <message>
+        <source>Improved</source>
+        <translation>Amélioré</translation>
+    </message>
+    <message>
+        <source>Paper</source>
+        <translation>Comme l’article</translation>
+    </message>
+    <message>
+        <source>Improved: masking, graph-cost reward, 3-step returns and a refined walk. Paper: the published setting.</source>
+        <translation>Amélioré : masquage, récompense selon le coût du graphe, retours à 3 pas et un parcours affiné. Comme l’article : le réglage publié.</translation>
+    </message>
+    <message>
+        <source> s</source>
+        <translation> s</translation>
+    </message>
+    <message>
+        <source>Training time for one run</source>
+        <translation>Durée d’entraînement d’une exécution</translation>
+    </message>
+    <message>
+        <source>Start</source>
+        <translation>Démarrer</translation>
+    </message>
+    <message>
+        <source>Pause</source>
+        <translation>Pause</translation>
+    </message>
+    <message>
+        <source>Stop</source>
+        <translation>Arrêter</translation>
+    </message>
+    <message>
+        <source>No model yet</source>
+        <translation>Pas encore de modèle</translation>
+    </message>
+    <message>
+        <source>Episode</source>
+        <translation>Épisode</translation>
+    </message>
+    <message>
+        <source>Reward</source>
+        <translation>Récompense</translation>
+    </message>
+    <message>
+        <source>Loss / epsilon</source>
+        <translation>Perte / epsilon</translation>
+    </message>
+    <message>
+        <source>Episode reward</source>
+        <translation>Récompense par épisode</translation>
+    </message>
+    <message>
+        <source>Moving average (100)</source>
+        <translation>Moyenne mobile (100)</translation>
+    </message>
+    <message>
+        <source>Loss</source>
+        <translation>Perte</translation>
+    </message>
+    <message>
+        <source>Epsilon</source>
+        <translation>Epsilon</translation>
+    </message>
+    <message>
+        <source>Save Model…</source>
+        <translation>Enregistrer le modèle…</translation>
+    </message>
+    <message>
+        <source>Load Model…</source>
+        <translation>Charger un modèle…</translation>
+    </message>
+    <message>
+        <source>The plan changed: the model no longer fits it. Start to train for the new plan.</source>
+        <translation>Le plan a changé : le modèle ne lui correspond plus. Lancez l’entraînement pour le nouveau plan.</translation>
+    </message>
+    <message>
+        <source>There is no valid plan to train for.</source>
+        <translation>Aucun plan valide pour l’entraînement.</translation>
+    </message>
+    <message>
+        <source>Episode %1 · %2 steps/s · epsilon %3 · average reward %4</source>
+        <translation>Épisode %1 · %2 pas/s · epsilon %3 · récompense moyenne %4</translation>
+    </message>
+    <message>
+        <source>%1% · %2 left</source>
+        <translation>%1 % · reste %2</translation>
+    </message>
+    <message>
+        <source>Model after %1 episodes (%2 of training) ready for solver dqn</source>
+        <translation>Modèle après %1 épisodes (%2 d’entraînement) prêt pour le solveur dqn</translation>
+    </message>
+    <message>
+        <source>Pause the training before saving the model.</source>
+        <translation>Mettez l’entraînement en pause avant d’enregistrer le modèle.</translation>
+    </message>
+    <message>
+        <source>Cannot save the model to %1: %2</source>
+        <translation>Impossible d’enregistrer le modèle dans %1 : %2</translation>
+    </message>
+    <message>
+        <source>Stop the training before loading a model.</source>
+        <translation>Arrêtez l’entraînement avant de charger un modèle.</translation>
+    </message>
+    <message>
+        <source>Loaded %1 (%2 episodes of training)</source>
+        <translation>%1 chargé (%2 épisodes d’entraînement)</translation>
+    </message>
+    <message>
+        <source>Save Model</source>
+        <translation>Enregistrer le modèle</translation>
+    </message>
+    <message>
+        <source>FloorCover DQN model (*.fcdqn)</source>
+        <translation>Modèle DQN FloorCover (*.fcdqn)</translation>
+    </message>
+    <message>
+        <source>Load Model</source>
+        <translation>Charger un modèle</translation>
+    </message>
+    <message>
+        <source>%p%</source>
+        <translation>%p %</translation>
+    </message>
+    <message>
+        <source>Resume</source>
+        <translation>Reprendre</translation>
+    </message>
+</context>
+<context>
+    <name>fc::ui::TrainingWorker</name>
+    <message>
+        <source>There is no valid plan to train for.</source>
+        <translation>Aucun plan valide pour l’entraînement.</translation>
+    </message>
+    <message>
+        <source>Training cannot start: %1</source>
+        <translation>L’entraînement ne peut pas démarrer : %1</translation>
+    </message>
+    <message>
+        <source>Training failed: %1</source>
+        <translation>Échec de l’entraînement : %1</translation>
+    </message>
+    <message>
+        <source>there is no trained model yet</source>
+        <translation>il n’y a pas encore de modèle entraîné</translation>
+    </message>
+</context>
+<context>
     <name>fc::ui::Translations</name>
     <message>
         <source>System language</source>
