@@ -1,6 +1,6 @@
-// One undoable edit of the project. It keeps the project before and after the edit
-// (plans are small values, so a snapshot is cheaper than per-field bookkeeping and
-// cannot get out of step with the model) and which parts changed.
+// One undoable edit of the project. It keeps the project before and after the edit (a
+// snapshot cannot get out of step with the model the way per-field bookkeeping can) and
+// which parts changed; edits that leave the plan alone keep no copy of it.
 #pragma once
 
 #include "formats/PlanIO.h"
@@ -23,11 +23,14 @@ public:
     bool mergeWith(const QUndoCommand* other) override;
 
 private:
+    void apply(const Project& state);
+
     Document* document_;
     Project before_;
     Project after_;
     unsigned changes_;
     int mergeId_;
+    bool keepsPlan_ = true;
 };
 
 } // namespace fc::ui

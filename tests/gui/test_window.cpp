@@ -28,6 +28,7 @@ private slots:
     void savedFileAppearsInRecentFiles();
     void preferencesStoreTheLanguage();
     void newDocumentStartsWithTheBoundaryTool();
+    void undoInterleavesGeometryAndSettings();
 };
 
 void WindowTest::initTestCase() {
@@ -88,6 +89,33 @@ void WindowTest::newDocumentStartsWithTheBoundaryTool() {
     QVERIFY(window->document()->plan().boundary.empty());
     QCOMPARE(window->toolManager()->activeTool()->objectName(), QStringLiteral("drawBoundary"));
     QVERIFY(!window->document()->isModified());
+}
+
+void WindowTest::undoInterleavesGeometryAndSettings() {
+    auto window = makeWindow();
+    window->openSample();
+    Document* document = window->document();
+    const size_t obstacles = document->plan().obstacles.size();
+    fc::RobotProfile robot = document->project().robot;
+    robot.coverageWidth = 0.8;
+    QVERIFY(document->setRobot(robot));
+    QVERIFY(document->addPolygon(PolygonRole::Obstacle, {{2, 2}, {3, 2}, {3, 3}, {2, 3}}));
+    QVERIFY(document->setSweep({0.0, false}));
+    QUndoStack* stack = document->undoStack();
+    stack->undo(); // sweep
+    QCOMPARE(document->plan().obstacles.size(), obstacles + 1);
+    stack->undo(); // obstacle
+    QCOMPARE(document->plan().obstacles.size(), obstacles);
+    QCOMPARE(document->project().robot.coverageWidth, 0.8);
+    stack->undo(); // robot: the plan stays as it is
+    QCOMPARE(document->project().robot.coverageWidth, 1.0);
+    QCOMPARE(document->plan().obstacles.size(), obstacles);
+    stack->redo();
+    stack->redo();
+    stack->redo();
+    QCOMPARE(document->plan().obstacles.size(), obstacles + 1);
+    QCOMPARE(document->project().robot.coverageWidth, 0.8);
+    QCOMPARE(document->project().sweep.angleDeg, 0.0);
 }
 
 QTEST_MAIN(WindowTest)
