@@ -36,6 +36,7 @@ private slots:
     void wheelZoomsAroundCursor();
     void middleDragPans();
     void statusBarShowsCursorCoordinates();
+    void refusedVertexMoveKeepsThePlan();
     void doubleClickInsertsVertex();
     void rightClickDeletesVertex();
     void deleteKeyDeletesSelectedPolygon();
@@ -99,6 +100,17 @@ void CanvasTest::statusBarShowsCursorCoordinates() {
     for (const QLabel* label : window->statusBar()->findChildren<QLabel*>())
         found = found || label->text().contains(QLatin1String("7.00 m"));
     QVERIFY(found);
+}
+
+void CanvasTest::refusedVertexMoveKeepsThePlan() {
+    auto window = floorWithObstacle();
+    useTool(*window, "editVertices");
+    const fc::Ring before = window->document()->plan().obstacles.at(0);
+    drag(*window, {16, 8}, {21, 9}); // the obstacle's corner outside the boundary
+    QVERIFY(window->document()->plan().obstacles.at(0) == before);
+    QVERIFY2(window->lastError().contains(QLatin1String("obstacle")),
+             qPrintable(window->lastError()));
+    QCOMPARE(window->document()->undoStack()->count(), 2);
 }
 
 void CanvasTest::doubleClickInsertsVertex() {

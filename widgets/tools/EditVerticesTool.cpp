@@ -126,6 +126,7 @@ void EditVerticesTool::showHover(std::optional<VertexRef> vertex) {
 void EditVerticesTool::mousePressed(const ToolMouseEvent& event) {
     if (!document())
         return;
+    endDrag(); // also clears a refused move's red outline
     const double tolerance = kHitPixels * event.metresPerPixel;
     const std::optional<VertexRef> vertex = vertexAt(event.position, tolerance);
     if (event.button == Qt::RightButton) {
@@ -182,9 +183,14 @@ void EditVerticesTool::mouseReleased(const ToolMouseEvent& event) {
                        2.0 * event.metresPerPixel; // a click selects without moving
     const PolygonRef polygon = *selected_;
     const int vertex = selectedVertex_;
+    dragging_ = false;
+    if (moved && !document()->moveVertex(polygon, vertex, toVec2(event.snapped)) && dragPreview_) {
+        // Refused by validation: the outline stays in red until the next click, with the
+        // message in the status bar, so that the user sees what was wrong.
+        dragPreview_->setPen(style::cosmeticPen(QColor(220, 30, 30), 2.0, Qt::DashLine));
+        return;
+    }
     endDrag();
-    if (moved)
-        document()->moveVertex(polygon, vertex, toVec2(event.snapped));
 }
 
 void EditVerticesTool::mouseDoubleClicked(const ToolMouseEvent& event) {
