@@ -39,6 +39,7 @@ MainWindow::MainWindow(QWidget* parent)
       tools_(new ToolManager(this)), planningDock_(new PlanningDock(this)),
       autosaver_(new Autosaver(this)) {
     setObjectName(QStringLiteral("MainWindow"));
+    setAcceptDrops(true);
     view_->setScene(scene_);
     setCentralWidget(view_);
     scene_->setPlanningController(planner_);

@@ -73,6 +73,9 @@ public:
 
 protected:
     void closeEvent(QCloseEvent* event) override;
+    // Dropping a plan or project file on the window opens it.
+    void dragEnterEvent(QDragEnterEvent* event) override;
+    void dropEvent(QDropEvent* event) override;
 
 private:
     void createTools();

@@ -11,15 +11,19 @@
 
 #include <QAction>
 #include <QApplication>
+#include <QDragEnterEvent>
+#include <QDropEvent>
 #include <QFileDialog>
 #include <QFileInfo>
 #include <QImage>
 #include <QMenu>
 #include <QMenuBar>
+#include <QMimeData>
 #include <QPainter>
 #include <QSettings>
 #include <QStatusBar>
 #include <QSvgGenerator>
+#include <QUrl>
 
 namespace fc::ui {
 
@@ -66,6 +70,35 @@ void MainWindow::createFileMenu() {
     });
     file->addSeparator();
     file->addAction(tr("&Quit"), QKeySequence::Quit, this, &QWidget::close);
+}
+
+namespace {
+
+// The first local file of a drag with a plan's or project's extension, else empty.
+QString droppedPlan(const QMimeData* data) {
+    for (const QUrl& url : data->urls()) {
+        const QString suffix = QFileInfo(url.toLocalFile()).suffix().toLower();
+        if (url.isLocalFile() &&
+            (suffix == QLatin1String("fcproj") || suffix == QLatin1String("geojson") ||
+             suffix == QLatin1String("json")))
+            return url.toLocalFile();
+    }
+    return {};
+}
+
+} // namespace
+
+void MainWindow::dragEnterEvent(QDragEnterEvent* event) {
+    if (!droppedPlan(event->mimeData()).isEmpty())
+        event->acceptProposedAction();
+}
+
+void MainWindow::dropEvent(QDropEvent* event) {
+    const QString path = droppedPlan(event->mimeData());
+    if (path.isEmpty() || !maybeSave())
+        return;
+    event->acceptProposedAction();
+    openFile(path);
 }
 
 void MainWindow::openWithDialog() {

@@ -9,6 +9,7 @@
 #include <QComboBox>
 #include <QMenu>
 #include <QMenuBar>
+#include <QMimeData>
 #include <QStandardPaths>
 #include <QTemporaryDir>
 #include <QUndoStack>
@@ -29,6 +30,7 @@ private slots:
     void preferencesStoreTheLanguage();
     void newDocumentStartsWithTheBoundaryTool();
     void undoInterleavesGeometryAndSettings();
+    void droppedFileOpens();
 };
 
 void WindowTest::initTestCase() {
@@ -116,6 +118,23 @@ void WindowTest::undoInterleavesGeometryAndSettings() {
     QCOMPARE(document->plan().obstacles.size(), obstacles + 1);
     QCOMPARE(document->project().robot.coverageWidth, 0.8);
     QCOMPARE(document->project().sweep.angleDeg, 0.0);
+}
+
+void WindowTest::droppedFileOpens() {
+    auto window = makeWindow();
+    QMimeData data;
+    data.setUrls({QUrl::fromLocalFile(QStringLiteral(FC_PLANS_DIR "/room-obstacle.geojson"))});
+    QDragEnterEvent enter(QPoint(200, 200), Qt::CopyAction, &data, Qt::LeftButton, {});
+    QCoreApplication::sendEvent(window.get(), &enter);
+    QVERIFY(enter.isAccepted());
+    QDropEvent drop(QPointF(200, 200), Qt::CopyAction, &data, Qt::LeftButton, {});
+    QCoreApplication::sendEvent(window.get(), &drop);
+    QCOMPARE(window->document()->displayName(), QStringLiteral("room-obstacle"));
+    QMimeData text;
+    text.setText(QStringLiteral("not a file"));
+    QDragEnterEvent refused(QPoint(200, 200), Qt::CopyAction, &text, Qt::LeftButton, {});
+    QCoreApplication::sendEvent(window.get(), &refused);
+    QVERIFY(!refused.isAccepted());
 }
 
 QTEST_MAIN(WindowTest)
