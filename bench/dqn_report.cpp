@@ -6,16 +6,17 @@
 // A setting is "paper" or "improved", optionally followed by "+key=value" changes (an
 // ablation): mask=0|1, reward=paper|cost, nstep=N, gamma=G, lr=R, eps=STEPS, net=paper|small,
 // refine=none|corners|local-search, sync=STEPS, batch=N, features=0|1.
-// Writes DIR/curves-<case>-<setting>.csv and prints a Markdown table (docs/dqn.md).
+// Writes DIR/curves-<case>-<setting>.csv and prints a Markdown table (docs/dqn.md). Time is
+// the training thread's CPU time, so a busy machine does not change the figures.
 #include "formats/PlanIO.h"
 #include "learning/dqn/DqnTrainer.h"
 #include "pipeline/Planner.h"
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <ctime>
 #include <fstream>
 #include <iostream>
 #include <sstream>
@@ -23,7 +24,6 @@
 #include <vector>
 
 using namespace fc;
-using Clock = std::chrono::steady_clock;
 
 namespace {
 
@@ -68,7 +68,9 @@ TrainingOptions settingOptions(const std::string& setting, std::uint64_t seed) {
             o.agent.maskActions = o.agent.maskTargetArgmax = value == "1";
         else if (key == "reward") {
             const bool cost = value == "cost";
+            const bool features = o.environment.costChannels;
             o.environment = cost ? TrainingOptions::improved(seed).environment : paper.environment;
+            o.environment.costChannels = features; // a separate lever
         } else if (key == "nstep")
             o.nStep = std::stoi(value);
         else if (key == "gamma")
@@ -88,7 +90,9 @@ TrainingOptions settingOptions(const std::string& setting, std::uint64_t seed) {
             o.agent.conv2Channels = from.conv2Channels;
             o.agent.conv3Channels = from.conv3Channels;
             o.agent.hiddenUnits = from.hiddenUnits;
-        } else if (key == "refine")
+        } else if (key == "features")
+            o.environment.costChannels = value == "1";
+        else if (key == "refine")
             o.refinement = refinementFromName(value);
         else
             throw std::invalid_argument("unknown setting change " + key);
@@ -97,9 +101,14 @@ TrainingOptions settingOptions(const std::string& setting, std::uint64_t seed) {
     return o;
 }
 
-double since(Clock::time_point t0) {
-    return std::chrono::duration<double>(Clock::now() - t0).count();
+// CPU time of this thread: the budget and the curves' time axis, so that other work on a
+// shared machine does not change the results (one thread = one dedicated core).
+double threadCpuSeconds() {
+    timespec t{};
+    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
+    return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
 }
+
 
 struct FinalFigures {
     int queries = 0, failures = 0, exactReferences = 0;
@@ -123,10 +132,10 @@ FinalFigures measure(const DqnTrainer& trainer, const Case& c, int count, std::u
         try {
             const EnvironmentOptions& environment = trainer.options().environment;
             const Solution raw = solveWithPolicy(trainer.agent(), graph, q, environment);
-            const auto t0 = Clock::now();
+            const double t0 = threadCpuSeconds();
             const Solution solved = solveWithPolicy(trainer.agent(), graph, q, environment,
                                                     trainer.options().refinement);
-            const double ms = 1000.0 * since(t0);
+            const double ms = 1000.0 * (threadCpuSeconds() - t0);
             f.meanMs += ms;
             f.maxMs = std::max(f.maxMs, ms);
             const double gap = raw.graphCost / reference - 1.0;
@@ -188,19 +197,27 @@ int main(int argc, char** argv) {
             csv << "episode,seconds,reward,moving_average,loss,epsilon,gap,refined_gap\n";
             const double evaluationEvery = o.seconds / 20.0;
             double nextEvaluation = 0.0;
-            trainer.train(0, o.seconds, [&](const TrainingProgress& p) {
-                csv << p.episode << ',' << p.elapsedSeconds << ',' << p.reward << ','
-                    << p.movingAverage << ',' << (std::isnan(p.loss) ? 0.0 : p.loss) << ','
-                    << p.epsilon;
-                if (p.elapsedSeconds >= nextEvaluation) {
-                    const EvaluationReport r = trainer.evaluate();
-                    csv << ',' << r.meanGap << ',' << r.meanRefinedGap;
-                    nextEvaluation += evaluationEvery;
-                } else {
-                    csv << ",,";
-                }
-                csv << '\n';
-            });
+            const double cpuStart = threadCpuSeconds();
+            double evaluationCpu = 0.0; // not counted as training time
+            auto trainingCpu = [&] { return threadCpuSeconds() - cpuStart - evaluationCpu; };
+            trainer.train(
+                0, 0.0,
+                [&](const TrainingProgress& p) {
+                    const double cpu = trainingCpu();
+                    csv << p.episode << ',' << cpu << ',' << p.reward << ',' << p.movingAverage
+                        << ',' << (std::isnan(p.loss) ? 0.0 : p.loss) << ',' << p.epsilon;
+                    if (cpu >= nextEvaluation) {
+                        const double before = threadCpuSeconds();
+                        const EvaluationReport r = trainer.evaluate();
+                        evaluationCpu += threadCpuSeconds() - before;
+                        csv << ',' << r.meanGap << ',' << r.meanRefinedGap;
+                        nextEvaluation += evaluationEvery;
+                    } else {
+                        csv << ",,";
+                    }
+                    csv << '\n';
+                },
+                [&] { return trainingCpu() >= o.seconds; });
             const EvaluationReport last = trainer.evaluate();
             csv << trainer.episodes() << ',' << o.seconds << ",,,,," << last.meanGap << ','
                 << last.meanRefinedGap << '\n';

@@ -115,6 +115,7 @@ TEST(DqnTrainer, CancelsBetweenEpisodesAndResumesFromAModel) {
 TEST(DqnModelFile, RoundTripKeepsPolicyAndMetadata) {
     const PreparedPlan plan = prepared("room-obstacle");
     TrainingOptions options = smallOptions(TrainingOptions::improved(7));
+    options.nStep = 3; // a non-default value must round-trip too
     DqnTrainer trainer(plan.graph, options, 90.0, 1.0);
     trainer.train(15, 0.0);
     std::istringstream in(serialized(trainer));

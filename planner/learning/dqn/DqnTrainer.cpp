@@ -53,7 +53,9 @@ TrainingOptions TrainingOptions::improved(std::uint64_t seed) {
     o.environment.finalReward = 0.0;
     o.environment.costScale = 1.0;
     o.environment.costChannels = true;
-    o.nStep = 3;
+    // n-step returns (nStep > 1) learnt slower here: with epsilon-greedy behaviour the
+    // uncorrected n-step target is biased (docs/dqn.md, ablation).
+    o.nStep = 1;
     o.refinement = OrderRefinement::LocalSearch;
     return o;
 }

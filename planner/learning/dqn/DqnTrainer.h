@@ -32,9 +32,9 @@ struct TrainingOptions {
     // The paper's setting: its network, optimiser and schedule, no masking, one-step targets,
     // the paper's rewards, the learnt walk as it is.
     static TrainingOptions paper(std::uint64_t seed = 1);
-    // Ours: masked acting and argmax, reward = minus the added graph cost, 3-step returns,
-    // a schedule sized for minutes on two cores, and the walk's corners and order refined by
-    // the true-cost local search at inference.
+    // Ours: masked acting and argmax, reward = minus the added graph cost, cost channels in
+    // the state, a narrower network and a schedule sized for minutes on one core, and the
+    // walk's corners and order refined by the true-cost local search at inference.
     static TrainingOptions improved(std::uint64_t seed = 1);
 };
 
