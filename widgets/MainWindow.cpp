@@ -248,6 +248,12 @@ void MainWindow::closeEvent(QCloseEvent* event) {
     event->accept();
 }
 
+void MainWindow::changeEvent(QEvent* event) {
+    if (event->type() == QEvent::PaletteChange)
+        scene_->restyle();
+    QMainWindow::changeEvent(event);
+}
+
 bool MainWindow::recoverAutosave() {
     if (!Autosaver::hasRecovery())
         return false;

@@ -42,6 +42,12 @@ void PlanScene::setPlanningController(PlanningController* controller) {
     connect(controller, &PlanningController::preparedChanged, this, &PlanScene::rebuildMarkers);
 }
 
+void PlanScene::restyle() {
+    rebuildPolygons();
+    rebuildMarkers();
+    overlays_->rebuild();
+}
+
 void PlanScene::updateSceneRect() {
     // Generous margins so that the view can pan well beyond the plan.
     QRectF bounds(-10, -10, 40, 30);

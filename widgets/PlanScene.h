@@ -33,6 +33,10 @@ public:
     Document* document() const { return document_; }
     OverlayLayer* overlays() const { return overlays_; }
 
+    // Redraws everything in the colours of the current application palette (dark or light
+    // theme switched while running).
+    void restyle();
+
     // Outlines the polygon the edit tool works on.
     void setHighlight(std::optional<PolygonRef> polygon);
     // The polygon whose outline passes within `tolerance` of a point, else the innermost

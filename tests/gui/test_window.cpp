@@ -1,12 +1,15 @@
 // Window-level behaviour: the automatic sweep angle, recent files, preferences.
 #include "EditorFixture.h"
+#include "PlanScene.h"
 #include "PlanningController.h"
 #include "PlanningDock.h"
 #include "PreferencesDialog.h"
 #include "Translations.h"
 
+#include <QApplication>
 #include <QCheckBox>
 #include <QComboBox>
+#include <QGraphicsPathItem>
 #include <QMenu>
 #include <QMenuBar>
 #include <QMimeData>
@@ -31,6 +34,7 @@ private slots:
     void newDocumentStartsWithTheBoundaryTool();
     void undoInterleavesGeometryAndSettings();
     void droppedFileOpens();
+    void paletteChangeRestylesTheScene();
 };
 
 void WindowTest::initTestCase() {
@@ -135,6 +139,28 @@ void WindowTest::droppedFileOpens() {
     QDragEnterEvent refused(QPoint(200, 200), Qt::CopyAction, &text, Qt::LeftButton, {});
     QCoreApplication::sendEvent(window.get(), &refused);
     QVERIFY(!refused.isAccepted());
+}
+
+void WindowTest::paletteChangeRestylesTheScene() {
+    auto window = makeWindow();
+    QVERIFY(window->openFile(QStringLiteral(FC_PLANS_DIR "/simple.geojson"))); // an obstacle
+    const auto obstacleColour = [&window]() {
+        for (QGraphicsItem* item : window->scene()->items())
+            if (auto* path = dynamic_cast<QGraphicsPathItem*>(item);
+                path && path->brush().style() == Qt::SolidPattern && path->zValue() == 1.0)
+                return path->brush().color();
+        return QColor();
+    };
+    const QPalette light = QApplication::palette();
+    const QColor before = obstacleColour();
+    QVERIFY(before.isValid());
+    QPalette dark = light;
+    dark.setColor(QPalette::Base, QColor(30, 30, 30));
+    dark.setColor(QPalette::Text, QColor(230, 230, 230));
+    QApplication::setPalette(dark);
+    QTRY_VERIFY(obstacleColour() != before);
+    QApplication::setPalette(light);
+    QTRY_COMPARE(obstacleColour(), before);
 }
 
 QTEST_MAIN(WindowTest)
