@@ -40,6 +40,7 @@ void PlanScene::setPlanningController(PlanningController* controller) {
     overlays_->setPlanningController(controller);
     // The markers show the corner the planner snaps them to, which needs the graph.
     connect(controller, &PlanningController::preparedChanged, this, &PlanScene::rebuildMarkers);
+    connect(controller, &PlanningController::resultChanged, this, &PlanScene::rebuildMarkers);
 }
 
 void PlanScene::restyle() {
@@ -111,7 +112,10 @@ void PlanScene::rebuildMarkers() {
     if (!document_)
         return;
     const Project& project = document_->project();
-    const auto prepared = controller_ ? controller_->prepared() : nullptr;
+    // The graph the path was planned on when there is a path ("auto" may pick another angle).
+    const auto result = controller_ ? controller_->result() : nullptr;
+    const auto prepared = result ? std::shared_ptr<const PreparedPlan>(result, &result->prepared)
+                                 : (controller_ ? controller_->prepared() : nullptr);
     const auto showSnap = [&](Vec2 point) {
         if (!prepared || prepared->graph.nodes.empty())
             return;
