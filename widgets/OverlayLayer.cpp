@@ -126,11 +126,8 @@ void OverlayLayer::rebuild() {
         freshGroup(static_cast<OverlayKind>(i), z::Overlays + 0.1 * i);
     if (!controller_)
         return;
-    // After planning, the plan's own decomposition is shown: with "auto" its angle may
-    // differ from the preview's, and cells and path must agree.
     const auto result = controller_->result();
-    const auto prepared = result ? std::shared_ptr<const PreparedPlan>(result, &result->prepared)
-                                 : controller_->prepared();
+    const auto prepared = controller_->shownPlan();
     if (prepared) {
         addCells(*prepared);
         addCriticalSlices(*prepared);

@@ -112,10 +112,7 @@ void PlanScene::rebuildMarkers() {
     if (!document_)
         return;
     const Project& project = document_->project();
-    // The graph the path was planned on when there is a path ("auto" may pick another angle).
-    const auto result = controller_ ? controller_->result() : nullptr;
-    const auto prepared = result ? std::shared_ptr<const PreparedPlan>(result, &result->prepared)
-                                 : (controller_ ? controller_->prepared() : nullptr);
+    const auto prepared = controller_ ? controller_->shownPlan() : nullptr;
     const auto showSnap = [&](Vec2 point) {
         if (!prepared || prepared->graph.nodes.empty())
             return;

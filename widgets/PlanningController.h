@@ -29,6 +29,13 @@ public:
     std::shared_ptr<const PreparedPlan> prepared() const { return prepared_; }
     // The latest plan of the document as it is now (null after any relevant edit).
     std::shared_ptr<const PlanResult> result() const { return result_; }
+    // What the canvas shows: the plan's own decomposition when there is a path (with "auto"
+    // its angle may differ from the preview's, and cells and path must agree), else the
+    // preview's.
+    std::shared_ptr<const PreparedPlan> shownPlan() const {
+        return result_ ? std::shared_ptr<const PreparedPlan>(result_, &result_->prepared)
+                       : prepared_;
+    }
     QString errorMessage() const { return error_; }
     bool isBusy() const { return running_ > 0 || pendingPrepare_; }
 
