@@ -119,7 +119,7 @@ void PlanningController::startPrepare() {
     if (project.plan.boundary.empty()) {
         prepared_.reset();
         emit preparedChanged();
-        setError(tr("Draw the boundary of the floor to see cells and plan a path."));
+        setError(QString()); // a new drawing, not a mistake: the dock shows a hint
         if (!isBusy())
             emit busyChanged(false);
         return;

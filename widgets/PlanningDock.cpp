@@ -139,6 +139,7 @@ void PlanningDock::setDocument(Document* document) {
         connect(document_, &Document::sweepChanged, this, &PlanningDock::refreshSweep);
         connect(document_, &Document::solverChanged, this, &PlanningDock::refreshSolver);
         connect(document_, &Document::roomsChanged, this, &PlanningDock::refreshRooms);
+        connect(document_, &Document::geometryChanged, this, &PlanningDock::refreshStatus);
         // A refused edit puts the document's values back into the widgets.
         connect(document_, &Document::editRejected, this, &PlanningDock::refreshRobot);
         connect(document_, &Document::editRejected, this, &PlanningDock::refreshSweep);
@@ -149,6 +150,7 @@ void PlanningDock::setDocument(Document* document) {
     refreshSweep();
     refreshSolver();
     refreshRooms();
+    refreshStatus();
 }
 
 void PlanningDock::setPlanningController(PlanningController* controller) {
@@ -297,7 +299,12 @@ void PlanningDock::refreshStatus() {
         status_->setText(error);
     } else {
         status_->setStyleSheet(QString());
-        status_->setText(controller_->isBusy() ? tr("Planning…") : QString());
+        if (controller_->isBusy())
+            status_->setText(tr("Planning…"));
+        else if (document_ && document_->plan().boundary.empty())
+            status_->setText(tr("Draw the boundary of the floor to see cells and plan a path."));
+        else
+            status_->clear();
     }
     if (const auto result = controller_->result(); result && !result->warnings.empty())
         status_->setText(fromStd(result->warnings.front()));

@@ -711,13 +711,6 @@ Abdeckungspfadplanung für Reinigungs- und Desinfektionsroboter.</translation>
     </message>
 </context>
 <context>
-    <name>fc::ui::PlanningController</name>
-    <message>
-        <source>Draw the boundary of the floor to see cells and plan a path.</source>
-        <translation>Zeichnen Sie die Außenwand der Fläche, um Zellen zu sehen und einen Pfad zu planen.</translation>
-    </message>
-</context>
-<context>
     <name>fc::ui::PlanningDock</name>
     <message>
         <source>Planning</source>
@@ -850,6 +843,10 @@ Abdeckungspfadplanung für Reinigungs- und Desinfektionsroboter.</translation>
     <message>
         <source>Planning…</source>
         <translation>Planung läuft…</translation>
+    </message>
+    <message>
+        <source>Draw the boundary of the floor to see cells and plan a path.</source>
+        <translation>Zeichnen Sie die Außenwand der Fläche, um Zellen zu sehen und einen Pfad zu planen.</translation>
     </message>
 </context>
 <context>

@@ -711,13 +711,6 @@ Planification de trajets de couverture pour robots de nettoyage et de désinfect
     </message>
 </context>
 <context>
-    <name>fc::ui::PlanningController</name>
-    <message>
-        <source>Draw the boundary of the floor to see cells and plan a path.</source>
-        <translation>Dessinez le contour de la surface pour voir les cellules et planifier un trajet.</translation>
-    </message>
-</context>
-<context>
     <name>fc::ui::PlanningDock</name>
     <message>
         <source>Planning</source>
@@ -850,6 +843,10 @@ Planification de trajets de couverture pour robots de nettoyage et de désinfect
     <message>
         <source>Planning…</source>
         <translation>Planification…</translation>
+    </message>
+    <message>
+        <source>Draw the boundary of the floor to see cells and plan a path.</source>
+        <translation>Dessinez le contour de la surface pour voir les cellules et planifier un trajet.</translation>
     </message>
 </context>
 <context>
