@@ -28,6 +28,10 @@ QPixmap swatch(OverlayKind kind) {
     case OverlayKind::CornerNodes:
         painter.drawEllipse(QPointF(14, 8), 4, 4);
         break;
+    case OverlayKind::CoverageGaps:
+        for (double x : {8.0, 14.0, 20.0})
+            painter.drawEllipse(QPointF(x, 8), 2, 2);
+        break;
     case OverlayKind::Unreachable:
         painter.drawLine(QPointF(9, 3), QPointF(19, 13));
         painter.drawLine(QPointF(9, 13), QPointF(19, 3));

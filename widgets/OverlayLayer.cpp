@@ -48,6 +48,7 @@ QString overlayName(OverlayKind kind) {
         QT_TRANSLATE_NOOP("fc::ui::OverlayLayer", "Path"),
         QT_TRANSLATE_NOOP("fc::ui::OverlayLayer", "Overlap Segments"),
         QT_TRANSLATE_NOOP("fc::ui::OverlayLayer", "Unreachable Areas"),
+        QT_TRANSLATE_NOOP("fc::ui::OverlayLayer", "Coverage Gaps"),
     };
     return QCoreApplication::translate("fc::ui::OverlayLayer", names[static_cast<int>(kind)]);
 }
@@ -73,6 +74,8 @@ OverlayStyle overlayStyle(OverlayKind kind) {
         return {style::cosmeticPen(QColor(210, 50, 30), 1.8), QColor(150, 20, 10)};
     case OverlayKind::Overlaps: // blue like the paper's figures, see-through over the path
         return {style::cosmeticPen(QColor(30, 90, 255, 170), 4.0), Qt::NoBrush};
+    case OverlayKind::CoverageGaps:
+        return {Qt::NoPen, QColor(230, 0, 200, 200)};
     case OverlayKind::Unreachable:
         break;
     }
@@ -255,6 +258,15 @@ void OverlayLayer::addPath(const PlanResult& result) {
     }
     addPathItem(groups_[static_cast<int>(OverlayKind::Overlaps)], overlaps,
                 overlayStyle(OverlayKind::Overlaps).pen);
+
+    // Missed spots as small dots: the metric's raster samples, at most ~20,000 of them.
+    QPainterPath gaps;
+    const double dot = 0.06 * width;
+    for (Vec2 p : result.metrics.uncovered)
+        gaps.addEllipse(toQt(p), dot, dot);
+    const OverlayStyle gapLook = overlayStyle(OverlayKind::CoverageGaps);
+    addPathItem(groups_[static_cast<int>(OverlayKind::CoverageGaps)], gaps, gapLook.pen,
+                gapLook.brush);
 }
 
 } // namespace fc::ui

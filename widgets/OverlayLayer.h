@@ -33,8 +33,9 @@ enum class OverlayKind {
     Path,
     Overlaps,
     Unreachable,
+    CoverageGaps, // sample points of sweepable area the path missed
 };
-constexpr int kOverlayKindCount = 10;
+constexpr int kOverlayKindCount = 11;
 
 // Menu text of an overlay kind (translated).
 QString overlayName(OverlayKind kind);

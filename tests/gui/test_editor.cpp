@@ -193,6 +193,7 @@ void EditorTest::planShowsPathAndMetrics() {
     QTest::mouseClick(window->planningDock()->planButton(), Qt::LeftButton);
     QTRY_VERIFY_WITH_TIMEOUT(planner->result() != nullptr, 30000);
     QVERIFY(overlays->itemCount(OverlayKind::Path) > 0);
+    QCOMPARE(overlays->itemCount(OverlayKind::CoverageGaps), 1); // one path of dots
     const fc::Metrics& metrics = planner->result()->metrics;
     QVERIFY(metrics.coverage >= 0.99);
     QVERIFY(metrics.length > 0);

@@ -506,6 +506,10 @@ Abdeckungspfadplanung für Reinigungs- und Desinfektionsroboter.</translation>
         <source>Unreachable: %1 (%2 m²)</source>
         <translation>Unerreichbar: %1 (%2 m²)</translation>
     </message>
+    <message>
+        <source>Coverage Gaps</source>
+        <translation>Abdeckungslücken</translation>
+    </message>
 </context>
 <context>
     <name>fc::ui::PathPreviewBar</name>

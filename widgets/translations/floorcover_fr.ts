@@ -506,6 +506,10 @@ Planification de trajets de couverture pour robots de nettoyage et de désinfect
         <source>Unreachable: %1 (%2 m²)</source>
         <translation>Inaccessible : %1 (%2 m²)</translation>
     </message>
+    <message>
+        <source>Coverage Gaps</source>
+        <translation>Zones non couvertes</translation>
+    </message>
 </context>
 <context>
     <name>fc::ui::PathPreviewBar</name>
