@@ -78,7 +78,14 @@ INSTANTIATE_TEST_SUITE_P(
                       Case{"room-obstacle", "greedy"}, Case{"room-notches", "exact"},
                       Case{"room-notches", "heuristic"}, Case{"room-notches", "greedy"},
                       Case{"office", "heuristic"}, Case{"office", "greedy"},
-                      Case{"ward", "heuristic"}, Case{"ward", "greedy"}),
+                      Case{"ward", "heuristic"}, Case{"ward", "greedy"},
+                      // The paper's baselines pass the same checks on every sample plan.
+                      Case{"simple", "reeb-cpp"}, Case{"simple", "adjacency-ga"},
+                      Case{"simple-diamond", "reeb-cpp"}, Case{"simple-diamond", "adjacency-ga"},
+                      Case{"room-obstacle", "reeb-cpp"}, Case{"room-obstacle", "adjacency-ga"},
+                      Case{"room-notches", "reeb-cpp"}, Case{"room-notches", "adjacency-ga"},
+                      Case{"office", "reeb-cpp"}, Case{"office", "adjacency-ga"},
+                      Case{"ward", "reeb-cpp"}, Case{"ward", "adjacency-ga"}),
     [](const ::testing::TestParamInfo<Case>& info) {
         std::string n = info.param.plan + "_" + info.param.solver;
         for (char& ch : n)

@@ -1,0 +1,215 @@
+#include "solvers/BaselineSupport.h"
+
+#include "decomposition/StripePlanner.h"
+
+#include <algorithm>
+#include <queue>
+#include <string>
+
+namespace fc {
+
+BaselineQuery makeBaselineQuery(const Plan& plan, const Decomposition& decomposition,
+                                const CornerGraph& graph, const Query& query) {
+    BaselineQuery out;
+    out.plan = &plan;
+    out.coverageWidth = decomposition.coverageWidth;
+    out.stripeAngleDeg = decomposition.frame.stripeAngleDeg();
+    out.requiredRooms.assign(decomposition.roomNames.size(), 0);
+    for (const GraphCell& c : graph.cells)
+        if (c.id < static_cast<int>(query.required.size()) && query.required[c.id])
+            out.requiredRooms[c.room] = 1;
+    out.start = graph.nodes.at(query.startNode).position;
+    out.seed = query.seed;
+    return out;
+}
+
+namespace baseline_detail {
+namespace {
+
+// Cells whose corners the start node reaches over the graph's edges.
+std::vector<char> cellsConnectedTo(const CornerGraph& g, int startNode) {
+    std::vector<char> seen(g.nodes.size(), 0), cells(g.cells.size(), 0);
+    std::queue<int> queue;
+    queue.push(startNode);
+    seen[startNode] = 1;
+    while (!queue.empty()) {
+        const int u = queue.front();
+        queue.pop();
+        cells[g.nodes[u].cell] = 1;
+        for (int e : g.incident[u]) {
+            const int v = g.edges[e].other(u);
+            if (!seen[v]) {
+                seen[v] = 1;
+                queue.push(v);
+            }
+        }
+    }
+    return cells;
+}
+
+std::vector<std::pair<double, Interval>> clearRuns(const Cell& cell) {
+    std::vector<std::pair<double, Interval>> runs;
+    for (size_t i = 0; i < cell.stripes.size(); ++i)
+        if (!cell.stripeSpans[i].empty())
+            runs.push_back({cell.stripes[i], cell.stripeSpans[i]});
+    return runs;
+}
+
+} // namespace
+
+BaselineWorld makeBaselineWorld(const BaselineQuery& query, const char* solverName) {
+    BaselineWorld world;
+    DecompositionOptions options;
+    options.coverageWidth = query.coverageWidth;
+    options.stripeAngleDeg = query.stripeAngleDeg;
+    options.transitionCells = false; // the papers' classic decomposition
+    world.decomposition = decompose(*query.plan, options);
+    world.graph = buildCornerGraph(world.decomposition);
+    if (world.decomposition.roomNames.size() != query.requiredRooms.size())
+        throw SolverError(std::string(solverName) + ": the rooms of the plan changed");
+    world.start = query.start;
+    world.seed = query.seed;
+    const int startNode = nearestNode(world.graph, query.start);
+    world.startCell = world.graph.nodes[startNode].cell;
+    world.usable = cellsConnectedTo(world.graph, startNode);
+    world.required.assign(world.graph.cells.size(), 0);
+    for (const GraphCell& c : world.graph.cells) {
+        world.usable[c.id] = world.usable[c.id] && c.reachable;
+        world.required[c.id] =
+            world.usable[c.id] && query.requiredRooms[c.room] && !c.coverageEdges.empty();
+    }
+    if (std::none_of(world.required.begin(), world.required.end(), [](char r) { return r; }))
+        throw SolverError(std::string(solverName) +
+                          ": no required area can be reached from the start");
+    return world;
+}
+
+std::set<std::pair<int, int>> connectedCellPairs(const CornerGraph& graph) {
+    std::set<std::pair<int, int>> pairs;
+    for (const GraphEdge& e : graph.edges) {
+        const int a = graph.nodes[e.u].cell, b = graph.nodes[e.v].cell;
+        if (e.kind == EdgeKind::Inter && a != b)
+            pairs.insert({std::min(a, b), std::max(a, b)});
+    }
+    return pairs;
+}
+
+Vec2 cellCentre(const Cell& cell) {
+    const auto runs = clearRuns(cell);
+    const auto& [x, span] = runs.at(runs.size() / 2);
+    return {x, 0.5 * (span.lo + span.hi)};
+}
+
+Pattern halfBoustrophedon(const Cell& cell, const ClearanceField& field, double width, bool topHalf,
+                          bool leftToRight, bool startAtWall) {
+    auto runs = clearRuns(cell);
+    if (!leftToRight)
+        std::reverse(runs.begin(), runs.end());
+    const int forward = leftToRight ? 1 : -1; // towards the next stripe, in x
+    Pattern out;
+    // Seals the wall end of a stripe on one side (see appendStripeEndSeal).
+    auto seal = [&](double x, double wallY, int side, bool evenIfFlat) {
+        const int begin = static_cast<int>(out.points.size()) - 1;
+        if (detail::appendStripeEndSeal(out.points, cell, x, wallY, topHalf, side * forward,
+                                        evenIfFlat, field, width))
+            out.excursions.push_back({begin, static_cast<int>(out.points.size()) - 1, topHalf});
+    };
+    bool atWall = startAtWall;
+    const size_t last = runs.size() - 1;
+    for (size_t i = 0; i < runs.size(); ++i) {
+        const double x = runs[i].first;
+        const Interval span = runs[i].second;
+        const double wallY = topHalf ? span.hi : span.lo;
+        const Vec2 middle{x, 0.5 * (span.lo + span.hi)}, wall{x, wallY};
+        const Vec2 a = atWall ? wall : middle, b = atWall ? middle : wall;
+        if (out.points.empty() || out.points.back() != a)
+            out.points.push_back(a);
+        // The wall end is joined along the wall to the stripe behind (when the stripe starts
+        // there) or ahead (when it finishes there); seal its other sides, the outer sides of
+        // the first and last stripe even under a flat wall.
+        auto sealWallEnd = [&]() {
+            if (!(atWall && i > 0))
+                seal(x, wallY, -1, i == 0);
+            if (!(!atWall && i < last))
+                seal(x, wallY, +1, i == last);
+        };
+        if (atWall)
+            sealWallEnd();
+        if (b != a)
+            out.points.push_back(b);
+        if (!atWall)
+            sealWallEnd();
+        if (i == last)
+            break;
+        const auto& [nx, nspan] = runs[i + 1];
+        const Vec2 next = atWall ? Vec2{nx, 0.5 * (nspan.lo + nspan.hi)}
+                                 : Vec2{nx, topHalf ? nspan.hi : nspan.lo};
+        // Along the wall at the wall end (as the full pattern does), straight in the middle.
+        Polyline step =
+            atWall ? Polyline{b, next} : detail::traceBorder(cell, x, nx, topHalf, field);
+        if (step.size() < 2 || !field.polylineIsClear(step))
+            step = field.findPath(b, next);
+        if (step.empty())
+            throw SolverError("no collision-free step between two stripes of a half cell");
+        out.points.insert(out.points.end(), step.begin() + 1, step.end());
+        atWall = !atWall;
+    }
+    return out;
+}
+
+TourBuilder::TourBuilder(const BaselineWorld& world, const ClearanceField& field,
+                         const char* solverName)
+    : world_(world), field_(field), solverName_(solverName) {
+    tour_.path.points.push_back(world.start);
+}
+
+void TourBuilder::append(Vec2 p, SegmentKind kind) {
+    tour_.path.points.push_back(p);
+    tour_.path.kinds.push_back(kind);
+}
+
+void TourBuilder::travelTo(Vec2 target) {
+    const Vec2 from = position();
+    if (distance(from, target) < 1e-9)
+        return;
+    if (field_.segmentIsClear(from, target)) {
+        append(target, SegmentKind::Transit);
+        return;
+    }
+    const Polyline route = field_.findPath(from, target);
+    if (route.empty())
+        throw SolverError(std::string(solverName_) + ": no collision-free transit between cells");
+    for (size_t i = 1; i < route.size(); ++i)
+        append(route[i], SegmentKind::Transit);
+}
+
+void TourBuilder::follow(const Pattern& pattern) {
+    travelTo(pattern.points.front());
+    const int offset = static_cast<int>(tour_.path.points.size()) - 1;
+    for (size_t i = 1; i < pattern.points.size(); ++i)
+        append(pattern.points[i], SegmentKind::Stripe);
+    for (const Excursion& x : pattern.excursions)
+        tour_.excursions.push_back({x.begin + offset, x.end + offset, x.towardsCeiling});
+}
+
+void TourBuilder::cover(int coverageEdge, int from) {
+    const GraphEdge& e = world_.graph.edges[coverageEdge];
+    Pattern pattern{e.geometry, e.excursions};
+    if (e.u != from) {
+        const int last = static_cast<int>(e.geometry.size()) - 1;
+        std::reverse(pattern.points.begin(), pattern.points.end());
+        for (Excursion& x : pattern.excursions)
+            x = {last - x.end, last - x.begin, x.towardsCeiling};
+    }
+    follow(pattern);
+}
+
+Solution baselineSolution(const char* solverName, DirectPath tour) {
+    Solution s;
+    s.solver = solverName;
+    s.directPath = std::move(tour);
+    return s;
+}
+
+} // namespace baseline_detail
+} // namespace fc
