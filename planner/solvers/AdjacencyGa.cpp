@@ -1,7 +1,8 @@
 // adjacency-ga (Tung & Liu 2019), as the paper describes it: the adjacency graph of the
 // classic decomposition's cells, a genetic algorithm for the travelling-salesman order of the
 // cells with four entry/exit options per cell (start at any corner; the stripe parity fixes
-// the exit), transits through the centres of the cells in between, back to the start.
+// the exit), transits between cells that are not neighbours through the centres of the cells
+// on the way (the one left and the one entered included), back to the start.
 #include "solvers/BaselineSupport.h"
 #include "solvers/SolverCommon.h"
 
@@ -30,7 +31,6 @@ struct CoverOption {
 struct Routes {
     std::vector<double> dist;
     std::vector<int> previous; // previous cell on the route, -1 at the source
-    std::vector<int> firstHop; // first cell after the source
 };
 
 class CellTransits {
@@ -51,15 +51,17 @@ public:
 
     void computeRoutesFrom(int cell) { routes_[cell] = dijkstra(cell); }
 
-    // Cells whose centres a transit from cell a to cell b passes (none between neighbours).
-    std::vector<int> between(int a, int b) const {
+    // Cells whose centres a transit from cell a to cell b passes: none between neighbours
+    // (straight across their border), otherwise a, the cells between and b, as in the
+    // paper's figure 14B where the robot returns through the middle of cells 4 and 1.
+    std::vector<int> through(int a, int b) const {
         std::vector<int> cells;
         if (a == b || adjacent(a, b))
             return cells;
         const Routes& r = routes_[a];
         if (r.dist[b] == kInf)
             throw SolverError(std::string(kName) + ": a required cell is not connected");
-        for (int c = r.previous[b]; c != a; c = r.previous[c])
+        for (int c = b; c >= 0; c = r.previous[c])
             cells.push_back(c);
         std::reverse(cells.begin(), cells.end());
         return cells;
@@ -68,12 +70,7 @@ public:
     double cost(int a, Vec2 p, int b, Vec2 q) const {
         if (a == b || adjacent(a, b))
             return distance(p, q);
-        const Routes& r = routes_[a];
-        if (r.dist[b] == kInf)
-            return kInf;
-        const int first = r.firstHop[b], last = r.previous[b];
-        return distance(p, centre_[first]) + r.dist[last] - r.dist[first] +
-               distance(centre_[last], q);
+        return distance(p, centre_[a]) + routes_[a].dist[b] + distance(centre_[b], q);
     }
 
     Vec2 centre(int cell) const { return centre_[cell]; }
@@ -85,7 +82,7 @@ private:
 
     Routes dijkstra(int source) const {
         const size_t n = centre_.size();
-        Routes r{std::vector<double>(n, kInf), std::vector<int>(n, -1), std::vector<int>(n, -1)};
+        Routes r{std::vector<double>(n, kInf), std::vector<int>(n, -1)};
         using Item = std::pair<double, int>;
         std::priority_queue<Item, std::vector<Item>, std::greater<Item>> queue;
         r.dist[source] = 0;
@@ -100,7 +97,6 @@ private:
                 if (nd < r.dist[v]) {
                     r.dist[v] = nd;
                     r.previous[v] = u;
-                    r.firstHop[v] = u == source ? v : r.firstHop[u];
                     queue.push({nd, v});
                 }
             }
@@ -302,13 +298,13 @@ Solution solveAdjacencyGa(const BaselineQuery& query) {
     TourBuilder path(world, field, kName);
     int cell = world.startCell;
     for (int t : best.order) {
-        for (int through : transits.between(cell, cells[t]))
+        for (int through : transits.through(cell, cells[t]))
             path.travelTo(transits.centre(through));
         const CoverOption& o = options[t][best.option[t]];
         path.cover(o.edge, o.entryNode);
         cell = cells[t];
     }
-    for (int through : transits.between(cell, world.startCell))
+    for (int through : transits.through(cell, world.startCell))
         path.travelTo(transits.centre(through));
     path.travelTo(world.start);
     return baselineSolution(kName, path.take());
