@@ -110,9 +110,20 @@ Pattern halfBoustrophedon(const Cell& cell, const ClearanceField& field, double 
     // Seals the wall end of a stripe on one side (see appendStripeEndSeal).
     auto seal = [&](double x, double wallY, int side, bool evenIfFlat) {
         const int begin = static_cast<int>(out.points.size()) - 1;
+        const Vec2 end = out.points.back();
         if (detail::appendStripeEndSeal(out.points, cell, x, wallY, topHalf, side * forward,
-                                        evenIfFlat, field, width))
+                                        evenIfFlat, field, width)) {
             out.excursions.push_back({begin, static_cast<int>(out.points.size()) - 1, topHalf});
+            return;
+        }
+        // The traced border needs one clear span across the cell where the seal turns; at a
+        // slice split by an obstacle's side there are two, so drive straight along the wall.
+        const Vec2 tip{std::clamp(x + side * forward * 0.5 * width, cell.x0, cell.x1), wallY};
+        if (evenIfFlat && distance(tip, end) >= 0.125 * width && field.segmentIsClear(end, tip)) {
+            out.points.push_back(tip);
+            out.points.push_back(end);
+            out.excursions.push_back({begin, static_cast<int>(out.points.size()) - 1, topHalf});
+        }
     };
     bool atWall = startAtWall;
     const size_t last = runs.size() - 1;
@@ -125,13 +136,15 @@ Pattern halfBoustrophedon(const Cell& cell, const ClearanceField& field, double 
         if (out.points.empty() || out.points.back() != a)
             out.points.push_back(a);
         // The wall end is joined along the wall to the stripe behind (when the stripe starts
-        // there) or ahead (when it finishes there); seal its other sides, the outer sides of
-        // the first and last stripe even under a flat wall.
+        // there) or ahead (when it finishes there); seal its other sides. The outer sides of
+        // the first and last stripe, and both sides of a wall end that no step along the wall
+        // meets (no turn there sweeps its corners), are sealed even under a flat wall.
         auto sealWallEnd = [&]() {
+            const bool stepAtWall = atWall ? i > 0 : i < last;
             if (!(atWall && i > 0))
-                seal(x, wallY, -1, i == 0);
+                seal(x, wallY, -1, i == 0 || !stepAtWall);
             if (!(!atWall && i < last))
-                seal(x, wallY, +1, i == last);
+                seal(x, wallY, +1, i == last || !stepAtWall);
         };
         if (atWall)
             sealWallEnd();
