@@ -19,10 +19,9 @@ using namespace baseline_detail;
 constexpr const char* kName = "adjacency-ga";
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
-// One way to cover a cell: enter at a corner, follow a coverage edge, leave at its other end.
+// One way to cover a cell: its boustrophedon from one of the four corners.
 struct CoverOption {
-    int edge = -1;
-    int entryNode = -1;
+    Pattern pattern;
     Vec2 entry, exit;
     double length = 0;
 };
@@ -262,14 +261,21 @@ private:
     solver_detail::SeededRandom random_;
 };
 
-std::vector<CoverOption> coverOptions(const CornerGraph& g, int cell) {
+// Start at any of the four corners: stripes left to right or right to left, the first
+// one up or down (the stripe parity then fixes the exit corner).
+std::vector<CoverOption> coverOptions(const BaselineWorld& w, const ClearanceField& field,
+                                      int cell) {
     std::vector<CoverOption> options;
-    for (int e : g.cells[cell].coverageEdges) {
-        const GraphEdge& edge = g.edges[e];
-        for (bool reversed : {false, true}) {
-            const int entry = reversed ? edge.v : edge.u, exitNode = reversed ? edge.u : edge.v;
-            options.push_back(
-                {e, entry, g.nodes[entry].position, g.nodes[exitNode].position, edge.length});
+    for (bool leftToRight : {true, false}) {
+        for (bool startLow : {true, false}) {
+            CoverOption o;
+            o.pattern =
+                boustrophedon(w.decomposition.cells[cell], field, w.decomposition.coverageWidth,
+                              CellPart::Whole, leftToRight, startLow);
+            o.entry = o.pattern.points.front();
+            o.exit = o.pattern.points.back();
+            o.length = polylineLength(o.pattern.points);
+            options.push_back(std::move(o));
         }
     }
     return options;
@@ -279,6 +285,7 @@ std::vector<CoverOption> coverOptions(const CornerGraph& g, int cell) {
 
 Solution solveAdjacencyGa(const BaselineQuery& query) {
     const BaselineWorld world = makeBaselineWorld(query, kName);
+    const ClearanceField field(world.decomposition.freeSpace, 0.5 * query.coverageWidth);
     CellTransits transits(world);
     std::vector<int> cells;
     std::vector<std::vector<CoverOption>> options;
@@ -287,21 +294,19 @@ Solution solveAdjacencyGa(const BaselineQuery& query) {
         if (!world.required[c.id])
             continue;
         cells.push_back(c.id);
-        options.push_back(coverOptions(world.graph, c.id));
+        options.push_back(coverOptions(world, field, c.id));
         transits.computeRoutesFrom(c.id);
     }
     const Individual best = GeneticTour(world, transits, cells, options).run();
     if (best.cost == kInf)
         throw SolverError(std::string(kName) + ": a required cell is not connected");
 
-    const ClearanceField field(world.decomposition.freeSpace, 0.5 * query.coverageWidth);
-    TourBuilder path(world, field, kName);
+    TourBuilder path(world.start, field, kName);
     int cell = world.startCell;
     for (int t : best.order) {
         for (int through : transits.through(cell, cells[t]))
             path.travelTo(transits.centre(through));
-        const CoverOption& o = options[t][best.option[t]];
-        path.cover(o.edge, o.entryNode);
+        path.follow(options[t][best.option[t]].pattern);
         cell = cells[t];
     }
     for (int through : transits.through(cell, world.startCell))

@@ -100,20 +100,43 @@ Vec2 cellCentre(const Cell& cell) {
     return {x, 0.5 * (span.lo + span.hi)};
 }
 
-Pattern halfBoustrophedon(const Cell& cell, const ClearanceField& field, double width, bool topHalf,
-                          bool leftToRight, bool startAtWall) {
+namespace {
+
+// Where a stripe of a band ends: y of its low and high end, and which of them are walls.
+struct StripeEnds {
+    double low, high;
+    bool lowAtWall, highAtWall;
+};
+
+StripeEnds stripeEnds(Interval span, CellPart part) {
+    const double middle = 0.5 * (span.lo + span.hi);
+    switch (part) {
+    case CellPart::Top:
+        return {middle, span.hi, false, true};
+    case CellPart::Bottom:
+        return {span.lo, middle, true, false};
+    case CellPart::Whole:
+        break;
+    }
+    return {span.lo, span.hi, true, true};
+}
+
+} // namespace
+
+Pattern boustrophedon(const Cell& cell, const ClearanceField& field, double width, CellPart part,
+                      bool leftToRight, bool startLow) {
     auto runs = clearRuns(cell);
     if (!leftToRight)
         std::reverse(runs.begin(), runs.end());
     const int forward = leftToRight ? 1 : -1; // towards the next stripe, in x
     Pattern out;
     // Seals the wall end of a stripe on one side (see appendStripeEndSeal).
-    auto seal = [&](double x, double wallY, int side, bool evenIfFlat) {
+    auto seal = [&](double x, double wallY, bool top, int side, bool evenIfFlat) {
         const int begin = static_cast<int>(out.points.size()) - 1;
         const Vec2 end = out.points.back();
-        if (detail::appendStripeEndSeal(out.points, cell, x, wallY, topHalf, side * forward,
-                                        evenIfFlat, field, width)) {
-            out.excursions.push_back({begin, static_cast<int>(out.points.size()) - 1, topHalf});
+        if (detail::appendStripeEndSeal(out.points, cell, x, wallY, top, side * forward, evenIfFlat,
+                                        field, width)) {
+            out.excursions.push_back({begin, static_cast<int>(out.points.size()) - 1, top});
             return;
         }
         // The traced border needs one clear span across the cell where the seal turns; at a
@@ -122,58 +145,57 @@ Pattern halfBoustrophedon(const Cell& cell, const ClearanceField& field, double 
         if (evenIfFlat && distance(tip, end) >= 0.125 * width && field.segmentIsClear(end, tip)) {
             out.points.push_back(tip);
             out.points.push_back(end);
-            out.excursions.push_back({begin, static_cast<int>(out.points.size()) - 1, topHalf});
+            out.excursions.push_back({begin, static_cast<int>(out.points.size()) - 1, top});
         }
     };
-    bool atWall = startAtWall;
+    // A wall end is joined along the wall to the stripe behind (where the stripe starts) or
+    // ahead (where it finishes); the turn onto that step sweeps the corner on the other
+    // side under a flat wall. Sides no step joins are sealed where the wall is slanted, and
+    // even under a flat wall where no step meets the end at all (no turn sweeps it).
+    auto sealWallEnd = [&](double x, double wallY, bool top, bool stepBehind, bool stepAhead) {
+        const bool turn = stepBehind || stepAhead;
+        if (!stepBehind)
+            seal(x, wallY, top, -1, !turn);
+        if (!stepAhead)
+            seal(x, wallY, top, +1, !turn);
+    };
+    bool up = startLow;
     const size_t last = runs.size() - 1;
     for (size_t i = 0; i < runs.size(); ++i) {
         const double x = runs[i].first;
-        const Interval span = runs[i].second;
-        const double wallY = topHalf ? span.hi : span.lo;
-        const Vec2 middle{x, 0.5 * (span.lo + span.hi)}, wall{x, wallY};
-        const Vec2 a = atWall ? wall : middle, b = atWall ? middle : wall;
+        const StripeEnds ends = stripeEnds(runs[i].second, part);
+        const Vec2 low{x, ends.low}, high{x, ends.high};
+        const Vec2 a = up ? low : high, b = up ? high : low;
+        const bool aAtWall = up ? ends.lowAtWall : ends.highAtWall;
+        const bool bAtWall = up ? ends.highAtWall : ends.lowAtWall;
         if (out.points.empty() || out.points.back() != a)
             out.points.push_back(a);
-        // The wall end is joined along the wall to the stripe behind (when the stripe starts
-        // there) or ahead (when it finishes there); seal its other sides. The outer sides of
-        // the first and last stripe, and both sides of a wall end that no step along the wall
-        // meets (no turn there sweeps its corners), are sealed even under a flat wall.
-        auto sealWallEnd = [&]() {
-            const bool stepAtWall = atWall ? i > 0 : i < last;
-            if (!(atWall && i > 0))
-                seal(x, wallY, -1, i == 0 || !stepAtWall);
-            if (!(!atWall && i < last))
-                seal(x, wallY, +1, i == last || !stepAtWall);
-        };
-        if (atWall)
-            sealWallEnd();
+        if (aAtWall)
+            sealWallEnd(x, a.y, !up, i > 0, false);
         if (b != a)
             out.points.push_back(b);
-        if (!atWall)
-            sealWallEnd();
+        if (bAtWall)
+            sealWallEnd(x, b.y, up, false, i < last);
         if (i == last)
             break;
-        const auto& [nx, nspan] = runs[i + 1];
-        const Vec2 next = atWall ? Vec2{nx, 0.5 * (nspan.lo + nspan.hi)}
-                                 : Vec2{nx, topHalf ? nspan.hi : nspan.lo};
-        // Along the wall at the wall end (as the full pattern does), straight in the middle.
-        Polyline step =
-            atWall ? Polyline{b, next} : detail::traceBorder(cell, x, nx, topHalf, field);
+        // The step to the next stripe: along the wall at a wall end, straight in the middle.
+        const StripeEnds nextEnds = stripeEnds(runs[i + 1].second, part);
+        const double nx = runs[i + 1].first;
+        const Vec2 next{nx, up ? nextEnds.high : nextEnds.low};
+        Polyline step = bAtWall ? detail::traceBorder(cell, x, nx, up, field) : Polyline{b, next};
         if (step.size() < 2 || !field.polylineIsClear(step))
             step = field.findPath(b, next);
         if (step.empty())
-            throw SolverError("no collision-free step between two stripes of a half cell");
+            throw SolverError("no collision-free step between two stripes of a cell");
         out.points.insert(out.points.end(), step.begin() + 1, step.end());
-        atWall = !atWall;
+        up = !up;
     }
     return out;
 }
 
-TourBuilder::TourBuilder(const BaselineWorld& world, const ClearanceField& field,
-                         const char* solverName)
-    : world_(world), field_(field), solverName_(solverName) {
-    tour_.path.points.push_back(world.start);
+TourBuilder::TourBuilder(Vec2 start, const ClearanceField& field, const char* solverName)
+    : field_(field), solverName_(solverName) {
+    tour_.path.points.push_back(start);
 }
 
 void TourBuilder::append(Vec2 p, SegmentKind kind) {
@@ -203,18 +225,6 @@ void TourBuilder::follow(const Pattern& pattern) {
         append(pattern.points[i], SegmentKind::Stripe);
     for (const Excursion& x : pattern.excursions)
         tour_.excursions.push_back({x.begin + offset, x.end + offset, x.towardsCeiling});
-}
-
-void TourBuilder::cover(int coverageEdge, int from) {
-    const GraphEdge& e = world_.graph.edges[coverageEdge];
-    Pattern pattern{e.geometry, e.excursions};
-    if (e.u != from) {
-        const int last = static_cast<int>(e.geometry.size()) - 1;
-        std::reverse(pattern.points.begin(), pattern.points.end());
-        for (Excursion& x : pattern.excursions)
-            x = {last - x.end, last - x.begin, x.towardsCeiling};
-    }
-    follow(pattern);
 }
 
 Solution baselineSolution(const char* solverName, DirectPath tour) {

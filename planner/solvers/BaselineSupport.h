@@ -39,17 +39,21 @@ struct Pattern {
     std::vector<Excursion> excursions;
 };
 
-// Half of a cell's boustrophedon: every stripe from the wall (floor, or ceiling for the top
-// half) to the middle of its clear span, stripes visited left to right or right to left,
-// the first stripe starting at the wall or in the middle. Split cells on the Reeb graph's
-// duplicated edges are covered this way, with the turns in the middle that it causes.
-Pattern halfBoustrophedon(const Cell& cell, const ClearanceField& field, double width, bool topHalf,
-                          bool leftToRight, bool startAtWall);
+enum class CellPart { Whole, Top, Bottom };
 
-// Accumulates a tour that starts at the world's start point.
+// A cell's boustrophedon over its whole clear height, or over its top or bottom half (from
+// the ceiling or floor to the middle of each stripe's clear span: how the Reeb-graph method
+// covers a cell on a duplicated edge, with the turns in the middle that it causes). Stripes
+// are visited left to right or right to left; the first runs up (startLow) or down. Steps
+// follow the wall at wall ends and run straight in the middle; stripe ends at walls are
+// sealed as the corner graph's patterns are (see appendStripeEndSeal).
+Pattern boustrophedon(const Cell& cell, const ClearanceField& field, double width, CellPart part,
+                      bool leftToRight, bool startLow);
+
+// Accumulates a tour from a start point.
 class TourBuilder {
 public:
-    TourBuilder(const BaselineWorld& world, const ClearanceField& field, const char* solverName);
+    TourBuilder(Vec2 start, const ClearanceField& field, const char* solverName);
 
     Vec2 position() const { return tour_.path.points.back(); }
     // Straight when clear, else the shortest path around the walls; throws SolverError when
@@ -57,15 +61,12 @@ public:
     void travelTo(Vec2 target);
     // Travels to the pattern's first point, then follows it (kind Stripe).
     void follow(const Pattern& pattern);
-    // The graph's coverage edge traversed from node `from`.
-    void cover(int coverageEdge, int from);
 
     DirectPath take() { return std::move(tour_); }
 
 private:
     void append(Vec2 p, SegmentKind kind);
 
-    const BaselineWorld& world_;
     const ClearanceField& field_;
     const char* solverName_;
     DirectPath tour_;

@@ -273,31 +273,17 @@ std::vector<Step> eulerCircuit(const ReebGraph& reeb, const std::vector<int>& to
     return circuit;
 }
 
-// Covers a cell in one pass from the corner of its entry side nearest to the robot.
-void coverWhole(TourBuilder& tour, const BaselineWorld& w, int cell, bool fromRight) {
-    int bestCorner = -1, bestEdge = -1;
-    for (int corner : endCorners(w.graph, cell, fromRight)) {
-        for (int e : w.graph.cells[cell].coverageEdges) {
-            const GraphEdge& edge = w.graph.edges[e];
-            if ((edge.u == corner || edge.v == corner) &&
-                (bestCorner < 0 ||
-                 distance(w.graph.nodes[corner].position, tour.position()) <
-                     distance(w.graph.nodes[bestCorner].position, tour.position())))
-                bestCorner = corner, bestEdge = e;
-        }
-    }
-    tour.cover(bestEdge, bestCorner);
-}
-
-void coverHalf(TourBuilder& tour, const BaselineWorld& w, const ClearanceField& field, int cell,
-               bool topHalf, bool leftToRight) {
+// Covers a cell, or its top or bottom half, crossing it in the given direction from the
+// stripe end nearer to the robot.
+void coverPart(TourBuilder& tour, const BaselineWorld& w, const ClearanceField& field, int cell,
+               CellPart part, bool leftToRight) {
     const Cell& c = w.decomposition.cells[cell];
     const double width = w.decomposition.coverageWidth;
-    Pattern atWall = halfBoustrophedon(c, field, width, topHalf, leftToRight, true);
-    Pattern inMiddle = halfBoustrophedon(c, field, width, topHalf, leftToRight, false);
-    const bool wallFirst = distance(atWall.points.front(), tour.position()) <=
-                           distance(inMiddle.points.front(), tour.position());
-    tour.follow(wallFirst ? atWall : inMiddle);
+    const Pattern up = boustrophedon(c, field, width, part, leftToRight, true);
+    const Pattern down = boustrophedon(c, field, width, part, leftToRight, false);
+    const bool upFirst = distance(up.points.front(), tour.position()) <=
+                         distance(down.points.front(), tour.position());
+    tour.follow(upFirst ? up : down);
 }
 
 } // namespace
@@ -321,7 +307,7 @@ Solution solveReebPostman(const BaselineQuery& query) {
     const std::vector<Step> circuit = eulerCircuit(reeb, tour, startNode);
 
     const ClearanceField field(world.decomposition.freeSpace, 0.5 * query.coverageWidth);
-    TourBuilder path(world, field, kName);
+    TourBuilder path(world.start, field, kName);
     std::vector<int> passes(world.decomposition.cells.size(), 0), passesMade(passes.size(), 0);
     for (const Step& s : circuit)
         if (reeb.edges[s.edge].cell >= 0)
@@ -331,9 +317,10 @@ Solution solveReebPostman(const BaselineQuery& query) {
         const int pass = cell >= 0 ? passesMade[cell]++ : 0;
         const bool leftToRight = cell >= 0 && reeb.nodeOfEnd[endIndex(cell, false)] == s.from;
         if (cell >= 0 && world.required[cell] && passes[cell] == 1)
-            coverWhole(path, world, cell, !leftToRight);
+            coverPart(path, world, field, cell, CellPart::Whole, leftToRight);
         else if (cell >= 0 && world.required[cell] && pass < 2)
-            coverHalf(path, world, field, cell, pass == 0, leftToRight);
+            coverPart(path, world, field, cell, pass == 0 ? CellPart::Top : CellPart::Bottom,
+                      leftToRight);
         else // a link, a cell that need not be covered, or a third pass: cross it
             path.travelTo(closestTo(reeb.corners[s.to], path.position()));
     }
