@@ -301,7 +301,7 @@ Solution solveAdjacencyGa(const BaselineQuery& query) {
     if (best.cost == kInf)
         throw SolverError(std::string(kName) + ": a required cell is not connected");
 
-    TourBuilder path(world.start, field, kName);
+    TourBuilder path(world.start, field, world.graph, kName);
     int cell = world.startCell;
     for (int t : best.order) {
         for (int through : transits.through(cell, cells[t]))

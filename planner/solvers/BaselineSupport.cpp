@@ -3,6 +3,8 @@
 #include "decomposition/StripePlanner.h"
 
 #include <algorithm>
+#include <cmath>
+#include <functional>
 #include <queue>
 #include <string>
 
@@ -193,8 +195,9 @@ Pattern boustrophedon(const Cell& cell, const ClearanceField& field, double widt
     return out;
 }
 
-TourBuilder::TourBuilder(Vec2 start, const ClearanceField& field, const char* solverName)
-    : field_(field), solverName_(solverName) {
+TourBuilder::TourBuilder(Vec2 start, const ClearanceField& field, const CornerGraph& graph,
+                         const char* solverName)
+    : field_(field), graph_(graph), solverName_(solverName) {
     tour_.path.points.push_back(start);
 }
 
@@ -207,15 +210,64 @@ void TourBuilder::travelTo(Vec2 target) {
     const Vec2 from = position();
     if (distance(from, target) < 1e-9)
         return;
-    if (field_.segmentIsClear(from, target)) {
-        append(target, SegmentKind::Transit);
-        return;
-    }
-    const Polyline route = field_.findPath(from, target);
+    Polyline route = field_.segmentIsClear(from, target) ? Polyline{from, target}
+                                                         : field_.findPath(from, target);
+    if (route.empty())
+        route = routeOverGraph(from, target);
     if (route.empty())
         throw SolverError(std::string(solverName_) + ": no collision-free transit between cells");
     for (size_t i = 1; i < route.size(); ++i)
         append(route[i], SegmentKind::Transit);
+}
+
+Polyline TourBuilder::routeOverGraph(Vec2 from, Vec2 target) const {
+    // The nearest corner joined to a point by a clear straight segment.
+    auto nearestSeen = [&](Vec2 p) {
+        int best = -1;
+        for (const GraphNode& n : graph_.nodes)
+            if ((best < 0 || distance(n.position, p) < distance(graph_.nodes[best].position, p)) &&
+                field_.segmentIsClear(p, n.position))
+                best = n.id;
+        return best;
+    };
+    const int source = nearestSeen(from), goal = nearestSeen(target);
+    if (source < 0 || goal < 0)
+        return {};
+    // Dijkstra over contour and inter-cell edges (a coverage edge is a whole pattern).
+    std::vector<double> dist(graph_.nodes.size(), INFINITY);
+    std::vector<int> via(graph_.nodes.size(), -1);
+    using Item = std::pair<double, int>;
+    std::priority_queue<Item, std::vector<Item>, std::greater<Item>> queue;
+    dist[source] = 0;
+    queue.push({0.0, source});
+    while (!queue.empty()) {
+        const auto [d, u] = queue.top();
+        queue.pop();
+        if (d > dist[u])
+            continue;
+        for (int e : graph_.incident[u]) {
+            const GraphEdge& edge = graph_.edges[e];
+            const int v = edge.other(u);
+            if (edge.kind != EdgeKind::Coverage && d + edge.length < dist[v]) {
+                dist[v] = d + edge.length;
+                via[v] = e;
+                queue.push({dist[v], v});
+            }
+        }
+    }
+    if (dist[goal] == INFINITY)
+        return {};
+    Polyline reversed{target};
+    for (int v = goal; v != source; v = graph_.edges[via[v]].other(v)) {
+        const GraphEdge& edge = graph_.edges[via[v]];
+        if (edge.v == v)
+            reversed.insert(reversed.end(), edge.geometry.rbegin(), edge.geometry.rend());
+        else
+            reversed.insert(reversed.end(), edge.geometry.begin(), edge.geometry.end());
+    }
+    reversed.push_back(graph_.nodes[source].position);
+    reversed.push_back(from);
+    return Polyline(reversed.rbegin(), reversed.rend());
 }
 
 void TourBuilder::follow(const Pattern& pattern) {

@@ -53,11 +53,14 @@ Pattern boustrophedon(const Cell& cell, const ClearanceField& field, double widt
 // Accumulates a tour from a start point.
 class TourBuilder {
 public:
-    TourBuilder(Vec2 start, const ClearanceField& field, const char* solverName);
+    // graph: the classic decomposition's corner graph, whose contour and inter-cell edges
+    // carry transits through gaps exactly W wide that the clearance search cannot find.
+    TourBuilder(Vec2 start, const ClearanceField& field, const CornerGraph& graph,
+                const char* solverName);
 
     Vec2 position() const { return tour_.path.points.back(); }
-    // Straight when clear, else the shortest path around the walls; throws SolverError when
-    // none exists.
+    // Straight when clear, else the shortest path around the walls, else over the corner
+    // graph's edges; throws SolverError when none exists.
     void travelTo(Vec2 target);
     // Travels to the pattern's first point, then follows it (kind Stripe).
     void follow(const Pattern& pattern);
@@ -66,8 +69,10 @@ public:
 
 private:
     void append(Vec2 p, SegmentKind kind);
+    Polyline routeOverGraph(Vec2 from, Vec2 target) const;
 
     const ClearanceField& field_;
+    const CornerGraph& graph_;
     const char* solverName_;
     DirectPath tour_;
 };

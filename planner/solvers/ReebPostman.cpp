@@ -307,7 +307,7 @@ Solution solveReebPostman(const BaselineQuery& query) {
     const std::vector<Step> circuit = eulerCircuit(reeb, tour, startNode);
 
     const ClearanceField field(world.decomposition.freeSpace, 0.5 * query.coverageWidth);
-    TourBuilder path(world.start, field, kName);
+    TourBuilder path(world.start, field, world.graph, kName);
     std::vector<int> passes(world.decomposition.cells.size(), 0), passesMade(passes.size(), 0);
     for (const Step& s : circuit)
         if (reeb.edges[s.edge].cell >= 0)
