@@ -7,9 +7,7 @@
 #include "solvers/SolverCommon.h"
 
 #include <algorithm>
-#include <functional>
 #include <limits>
-#include <queue>
 
 namespace fc {
 namespace {
@@ -24,12 +22,6 @@ struct CoverOption {
     Pattern pattern;
     Vec2 entry, exit;
     double length = 0;
-};
-
-// Shortest routes between cell centres over the adjacency graph, from one cell.
-struct Routes {
-    std::vector<double> dist;
-    std::vector<int> previous; // previous cell on the route, -1 at the source
 };
 
 class CellTransits {
@@ -57,10 +49,10 @@ public:
         std::vector<int> cells;
         if (a == b || adjacent(a, b))
             return cells;
-        const Routes& r = routes_[a];
+        const ShortestPaths& r = routes_[a];
         if (r.dist[b] == kInf)
             throw SolverError(std::string(kName) + ": a required cell is not connected");
-        for (int c = b; c >= 0; c = r.previous[c])
+        for (int c = b; c >= 0; c = r.via[c])
             cells.push_back(c);
         std::reverse(cells.begin(), cells.end());
         return cells;
@@ -79,33 +71,17 @@ private:
         return std::find(neighbours_[a].begin(), neighbours_[a].end(), b) != neighbours_[a].end();
     }
 
-    Routes dijkstra(int source) const {
-        const size_t n = centre_.size();
-        Routes r{std::vector<double>(n, kInf), std::vector<int>(n, -1)};
-        using Item = std::pair<double, int>;
-        std::priority_queue<Item, std::vector<Item>, std::greater<Item>> queue;
-        r.dist[source] = 0;
-        queue.push({0.0, source});
-        while (!queue.empty()) {
-            const auto [d, u] = queue.top();
-            queue.pop();
-            if (d > r.dist[u])
-                continue;
-            for (int v : neighbours_[u]) {
-                const double nd = d + distance(centre_[u], centre_[v]);
-                if (nd < r.dist[v]) {
-                    r.dist[v] = nd;
-                    r.previous[v] = u;
-                    queue.push({nd, v});
-                }
-            }
-        }
-        return r;
+    // Shortest routes between cell centres over the adjacency graph.
+    ShortestPaths dijkstra(int source) const {
+        return shortestPaths(centre_.size(), {source}, [&](int u, auto&& visit) {
+            for (int v : neighbours_[u])
+                visit(v, distance(centre_[u], centre_[v]), u);
+        });
     }
 
     std::vector<Vec2> centre_;
     std::vector<std::vector<int>> neighbours_;
-    std::vector<Routes> routes_;
+    std::vector<ShortestPaths> routes_; // from a cell: via = the previous cell
 };
 
 struct Individual {

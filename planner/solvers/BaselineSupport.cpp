@@ -1,11 +1,9 @@
 #include "solvers/BaselineSupport.h"
 
 #include "decomposition/StripePlanner.h"
+#include "solvers/SolverCommon.h"
 
 #include <algorithm>
-#include <cmath>
-#include <functional>
-#include <queue>
 #include <string>
 
 namespace fc {
@@ -27,27 +25,6 @@ BaselineQuery makeBaselineQuery(const Plan& plan, const Decomposition& decomposi
 
 namespace baseline_detail {
 namespace {
-
-// Cells whose corners the start node reaches over the graph's edges.
-std::vector<char> cellsConnectedTo(const CornerGraph& g, int startNode) {
-    std::vector<char> seen(g.nodes.size(), 0), cells(g.cells.size(), 0);
-    std::queue<int> queue;
-    queue.push(startNode);
-    seen[startNode] = 1;
-    while (!queue.empty()) {
-        const int u = queue.front();
-        queue.pop();
-        cells[g.nodes[u].cell] = 1;
-        for (int e : g.incident[u]) {
-            const int v = g.edges[e].other(u);
-            if (!seen[v]) {
-                seen[v] = 1;
-                queue.push(v);
-            }
-        }
-    }
-    return cells;
-}
 
 std::vector<std::pair<double, Interval>> clearRuns(const Cell& cell) {
     std::vector<std::pair<double, Interval>> runs;
@@ -73,7 +50,11 @@ BaselineWorld makeBaselineWorld(const BaselineQuery& query, const char* solverNa
     world.seed = query.seed;
     const int startNode = nearestNode(world.graph, query.start);
     world.startCell = world.graph.nodes[startNode].cell;
-    world.usable = cellsConnectedTo(world.graph, startNode);
+    // Cells whose corners the start node reaches over the graph's edges.
+    world.usable.assign(world.graph.cells.size(), 0);
+    const std::vector<char> seen = solver_detail::reachableFrom(world.graph, startNode);
+    for (const GraphNode& n : world.graph.nodes)
+        world.usable[n.cell] = world.usable[n.cell] || seen[n.id];
     world.required.assign(world.graph.cells.size(), 0);
     for (const GraphCell& c : world.graph.cells) {
         world.usable[c.id] = world.usable[c.id] && c.reachable;
@@ -233,33 +214,17 @@ Polyline TourBuilder::routeOverGraph(Vec2 from, Vec2 target) const {
     const int source = nearestSeen(from), goal = nearestSeen(target);
     if (source < 0 || goal < 0)
         return {};
-    // Dijkstra over contour and inter-cell edges (a coverage edge is a whole pattern).
-    std::vector<double> dist(graph_.nodes.size(), INFINITY);
-    std::vector<int> via(graph_.nodes.size(), -1);
-    using Item = std::pair<double, int>;
-    std::priority_queue<Item, std::vector<Item>, std::greater<Item>> queue;
-    dist[source] = 0;
-    queue.push({0.0, source});
-    while (!queue.empty()) {
-        const auto [d, u] = queue.top();
-        queue.pop();
-        if (d > dist[u])
-            continue;
-        for (int e : graph_.incident[u]) {
-            const GraphEdge& edge = graph_.edges[e];
-            const int v = edge.other(u);
-            if (edge.kind != EdgeKind::Coverage && d + edge.length < dist[v]) {
-                dist[v] = d + edge.length;
-                via[v] = e;
-                queue.push({dist[v], v});
-            }
-        }
-    }
-    if (dist[goal] == INFINITY)
+    // Over contour and inter-cell edges (a coverage edge is a whole pattern).
+    const ShortestPaths sp = shortestPaths(graph_.nodes.size(), {source}, [&](int u, auto&& visit) {
+        for (int e : graph_.incident[u])
+            if (graph_.edges[e].kind != EdgeKind::Coverage)
+                visit(graph_.edges[e].other(u), graph_.edges[e].length, e);
+    });
+    if (sp.dist[goal] == INFINITY)
         return {};
     Polyline reversed{target};
-    for (int v = goal; v != source; v = graph_.edges[via[v]].other(v)) {
-        const GraphEdge& edge = graph_.edges[via[v]];
+    for (int v = goal; v != source; v = graph_.edges[sp.via[v]].other(v)) {
+        const GraphEdge& edge = graph_.edges[sp.via[v]];
         if (edge.v == v)
             reversed.insert(reversed.end(), edge.geometry.rbegin(), edge.geometry.rend());
         else

@@ -5,6 +5,9 @@
 #include "geometry/Clearance.h"
 #include "solvers/Baselines.h"
 
+#include <cmath>
+#include <functional>
+#include <queue>
 #include <set>
 #include <utility>
 #include <vector>
@@ -29,6 +32,41 @@ BaselineWorld makeBaselineWorld(const BaselineQuery& query, const char* solverNa
 // Pairs (lower id, higher id) of cells joined by at least one collision-free inter-cell
 // edge of the graph.
 std::set<std::pair<int, int>> connectedCellPairs(const CornerGraph& graph);
+
+struct ShortestPaths {
+    std::vector<double> dist;
+    std::vector<int> via; // what reached each node (an edge id or the previous node), -1 at
+                          // the sources and at nodes not reached
+};
+
+// Dijkstra from `sources`; forEachNeighbour(u, visit) calls visit(v, length, via) for every
+// neighbour v of node u.
+template <class ForEachNeighbour>
+ShortestPaths shortestPaths(std::size_t nodeCount, const std::vector<int>& sources,
+                            ForEachNeighbour forEachNeighbour) {
+    ShortestPaths sp{std::vector<double>(nodeCount, INFINITY), std::vector<int>(nodeCount, -1)};
+    using Item = std::pair<double, int>;
+    std::priority_queue<Item, std::vector<Item>, std::greater<Item>> queue;
+    for (int s : sources) {
+        sp.dist[s] = 0;
+        queue.push({0.0, s});
+    }
+    while (!queue.empty()) {
+        const double d = queue.top().first;
+        const int u = queue.top().second;
+        queue.pop();
+        if (d > sp.dist[u])
+            continue;
+        forEachNeighbour(u, [&](int v, double length, int via) {
+            if (d + length < sp.dist[v]) {
+                sp.dist[v] = d + length;
+                sp.via[v] = via;
+                queue.push({sp.dist[v], v});
+            }
+        });
+    }
+    return sp;
+}
 
 // A clear point in the middle of a cell: the middle of its middle stripe's clear span.
 Vec2 cellCentre(const Cell& cell);

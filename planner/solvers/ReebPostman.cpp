@@ -7,10 +7,8 @@
 #include "solvers/PerfectMatching.h"
 
 #include <algorithm>
-#include <functional>
 #include <limits>
 #include <numeric>
-#include <queue>
 
 namespace fc {
 namespace {
@@ -148,41 +146,17 @@ ReebGraph buildReebGraph(const BaselineWorld& w) {
     return reeb;
 }
 
-struct ShortestPaths {
-    std::vector<double> dist;
-    std::vector<int> viaEdge; // edge that reached the node, -1 at a source
-};
-
-ShortestPaths shortestPaths(const ReebGraph& reeb, const std::vector<int>& sources) {
-    ShortestPaths sp{std::vector<double>(reeb.nodeCount(), kInf),
-                     std::vector<int>(reeb.nodeCount(), -1)};
-    using Item = std::pair<double, int>;
-    std::priority_queue<Item, std::vector<Item>, std::greater<Item>> queue;
-    for (int s : sources) {
-        sp.dist[s] = 0;
-        queue.push({0.0, s});
-    }
-    while (!queue.empty()) {
-        const auto [d, u] = queue.top();
-        queue.pop();
-        if (d > sp.dist[u])
-            continue;
-        for (int e : reeb.incident[u]) {
-            const int v = reeb.other(e, u);
-            if (d + reeb.edges[e].weight < sp.dist[v]) {
-                sp.dist[v] = d + reeb.edges[e].weight;
-                sp.viaEdge[v] = e;
-                queue.push({sp.dist[v], v});
-            }
-        }
-    }
-    return sp;
+ShortestPaths reebPaths(const ReebGraph& reeb, const std::vector<int>& sources) {
+    return shortestPaths(reeb.nodeCount(), sources, [&](int u, auto&& visit) {
+        for (int e : reeb.incident[u])
+            visit(reeb.other(e, u), reeb.edges[e].weight, e);
+    });
 }
 
 // Adds the edges of the shortest path from a source to `node` to the tour (duplicates).
 void addPathTo(const ReebGraph& reeb, const ShortestPaths& sp, int node, std::vector<int>& tour) {
-    for (int v = node; sp.viaEdge[v] >= 0; v = reeb.other(sp.viaEdge[v], v))
-        tour.push_back(sp.viaEdge[v]);
+    for (int v = node; sp.via[v] >= 0; v = reeb.other(sp.via[v], v))
+        tour.push_back(sp.via[v]);
 }
 
 // The required cells may form several pieces of the Reeb graph (rooms left out): join each
@@ -199,7 +173,7 @@ void connectPieces(const ReebGraph& reeb, std::vector<int>& tour, int startNode)
         for (int v = 0; v < reeb.nodeCount(); ++v)
             if (pieces.find(v) == pieces.find(startNode))
                 inStartPiece.push_back(v);
-        const ShortestPaths sp = shortestPaths(reeb, inStartPiece);
+        const ShortestPaths sp = reebPaths(reeb, inStartPiece);
         int nearest = -1;
         for (int v = 0; v < reeb.nodeCount(); ++v)
             if (touched[v] && pieces.find(v) != pieces.find(startNode) &&
@@ -226,7 +200,7 @@ void makeEulerian(const ReebGraph& reeb, std::vector<int>& tour) {
     std::vector<ShortestPaths> from;
     std::vector<std::vector<double>> cost(odd.size(), std::vector<double>(odd.size(), 0));
     for (size_t i = 0; i < odd.size(); ++i) {
-        from.push_back(shortestPaths(reeb, {odd[i]}));
+        from.push_back(reebPaths(reeb, {odd[i]}));
         for (size_t j = 0; j < odd.size(); ++j)
             cost[i][j] = from[i].dist[odd[j]];
     }
