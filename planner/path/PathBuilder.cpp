@@ -125,4 +125,12 @@ CoveragePath buildCoveragePath(const Decomposition& dec, const DirectPath& direc
     return finish(local, field, dec, endPoint);
 }
 
+CoveragePath buildCoveragePath(const Decomposition& dec, const CornerGraph& graph,
+                               const Solution& solution, std::optional<Vec2> startPoint,
+                               std::optional<Vec2> endPoint) {
+    if (solution.directPath)
+        return buildCoveragePath(dec, *solution.directPath, startPoint, endPoint);
+    return buildCoveragePath(dec, graph, solution.walk, startPoint, endPoint);
+}
+
 } // namespace fc

@@ -187,11 +187,8 @@ PlanResult planAtAngle(const PlanRequest& request, double angle, const SolveCont
                              request.seed, result.warnings);
     result.solution =
         runSolver(request.solver, result.prepared, result.query, request.modelPath, control);
-    result.path = result.solution.directPath
-                      ? buildCoveragePath(result.prepared.decomposition,
-                                          *result.solution.directPath, request.start, request.end)
-                      : buildCoveragePath(result.prepared.decomposition, result.prepared.graph,
-                                          result.solution.walk, request.start, request.end);
+    result.path = buildCoveragePath(result.prepared.decomposition, result.prepared.graph,
+                                    result.solution, request.start, request.end);
     const double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 

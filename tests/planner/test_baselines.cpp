@@ -2,6 +2,7 @@
 // tour is minimal, the tours are deterministic per seed, honour free start and end points,
 // and the comparison ratios are what the paper defines. Collision-freedom and coverage on
 // every sample plan are checked with the other solvers in test_pipeline.cpp.
+#include "TestPlans.h"
 #include "formats/PlanIO.h"
 #include "geometry/SegmentIndex.h"
 #include "pipeline/Comparison.h"
@@ -137,6 +138,25 @@ TEST(Baselines, FreeStartAndEndPointsAndRoomSubsets) {
                       0.5 * r.robot.coverageWidth - 2e-3 * r.robot.coverageWidth)
                 << solver << " segment " << i;
     }
+}
+
+TEST(Baselines, ReebPostmanCoversACellItCrossesTwiceInTwoHalves) {
+    // One rectangle: a Reeb graph of one edge between two odd nodes, so the Chinese Postman
+    // duplicates it and the cell is covered as a top half, then a bottom half.
+    PlanRequest r;
+    r.plan.boundary = test::rectangle(0, 0, 10, 6);
+    r.solver = "reeb-cpp";
+    const PlanResult reeb = planCoverage(r);
+    EXPECT_GE(reeb.metrics.coverage, 0.99);
+    EXPECT_EQ(reeb.path.points.front(), reeb.path.points.back());
+    // Each of the 10 stripes turns in the middle of its clear span (y = 3) in each half; the
+    // second half may start where the first ended.
+    const auto middle = std::count_if(reeb.path.points.begin(), reeb.path.points.end(),
+                                      [](Vec2 p) { return std::abs(p.y - 3.0) < 1e-6; });
+    EXPECT_GE(middle, 19);
+    r.solver = "adjacency-ga";
+    const PlanResult ga = planCoverage(r);
+    EXPECT_GT(reeb.metrics.turns, ga.metrics.turns) << "the halves' turns in the middle";
 }
 
 TEST(Baselines, RatiosAreOursOverEachBaseline) {
