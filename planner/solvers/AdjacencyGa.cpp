@@ -99,7 +99,7 @@ public:
 
     Individual run() {
         const int n = static_cast<int>(cells_.size());
-        const int generations = std::clamp(20 * n, 200, 1000);
+        const int generations = std::clamp(50 * n, 500, 10000);
         std::vector<Individual> population{nearestNeighbour()};
         while (static_cast<int>(population.size()) < kPopulation)
             population.push_back(randomIndividual());
