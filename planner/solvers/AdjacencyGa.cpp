@@ -7,7 +7,6 @@
 #include "solvers/SolverCommon.h"
 
 #include <algorithm>
-#include <limits>
 
 namespace fc {
 namespace {
@@ -15,7 +14,6 @@ namespace {
 using namespace baseline_detail;
 
 constexpr const char* kName = "adjacency-ga";
-constexpr double kInf = std::numeric_limits<double>::infinity();
 
 // One way to cover a cell: its boustrophedon from one of the four corners.
 struct CoverOption {

@@ -14,6 +14,8 @@
 
 namespace fc::baseline_detail {
 
+constexpr double kInf = INFINITY;
+
 // The classic Boustrophedon decomposition and its corner graph: the graph's coverage edges
 // are the cells' full boustrophedon patterns, its corners the cells' entry/exit points.
 struct BaselineWorld {

@@ -7,7 +7,6 @@
 #include "solvers/PerfectMatching.h"
 
 #include <algorithm>
-#include <limits>
 #include <numeric>
 
 namespace fc {
@@ -16,7 +15,6 @@ namespace {
 using namespace baseline_detail;
 
 constexpr const char* kName = "reeb-cpp";
-constexpr double kInf = std::numeric_limits<double>::infinity();
 
 class DisjointSets {
 public:
