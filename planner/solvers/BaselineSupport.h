@@ -14,10 +14,11 @@
 
 namespace fc::baseline_detail {
 
-constexpr double kInf = INFINITY;
+constexpr double kInf = INFINITY; // a distance not reached
 
-// The classic Boustrophedon decomposition and its corner graph: the graph's coverage edges
-// are the cells' full boustrophedon patterns, its corners the cells' entry/exit points.
+// The classic Boustrophedon decomposition and its corner graph, which tells which cells are
+// connected (its inter-cell edges), where the cells' corners are (the Reeb nodes' positions)
+// and carries transits through gaps exactly W wide.
 struct BaselineWorld {
     Decomposition decomposition;
     CornerGraph graph;
