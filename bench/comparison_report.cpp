@@ -205,8 +205,10 @@ int main() {
         "`reeb-cpp` is the Reeb graph with a Chinese Postman tour (odd nodes paired by a "
         "minimum-weight perfect matching, cells on duplicated edges covered as a top half, "
         "then a bottom half); `adjacency-ga` is a genetic-algorithm TSP over the cell adjacency "
-        "graph with four entry/exit options per cell and transits through the centres of the "
-        "cells in between. Both return to the start. See `planner/solvers/Baselines.h`.\n\n");
+        "graph with four entry/exit options per cell, straight transits between neighbouring cells "
+        "and, between other cells, transits through the centres of the cells left, crossed and "
+        "entered. Both return to the start. See `planner/solvers/Baselines.h` and "
+        "`docs/architecture.md`.\n\n");
     printSummary(runs);
     printSimpleCheck(runs);
     printShortfalls(runs);
