@@ -4,8 +4,10 @@
 #include "CliCommon.h"
 #include "formats/PathIO.h"
 #include "formats/PlanIO.h"
+#include "pipeline/Comparison.h"
 #include "pipeline/Planner.h"
 
+#include <cmath>
 #include <cstdio>
 #include <iostream>
 #include <sstream>
@@ -19,12 +21,15 @@ commands:
   plan PLAN     plan a coverage path; prints one JSON line of metrics
                 [--width W] [--robot-diameter L] [--cleaning-diameter D] [--speed V]
                 [--turn-time S] [--angle DEG|auto] [--rooms A,B] [--start X,Y] [--end X,Y]
-                [--solver exact|heuristic|greedy|dqn] [--model FILE] [--seed N] [--out FILE]
+                [--solver exact|heuristic|greedy|dqn|reeb-cpp|adjacency-ga] [--model FILE]
+                [--seed N] [--out FILE]
                 (dqn needs --model, a file written by train; it plans at its sweep angle)
                 (--out format by extension: .geojson .csv .json .yaml)
   graph PLAN    write the corner graph: [--width W] [--angle DEG] --out FILE.json
   compare PLAN  run several solvers on the same query: [--solvers a,b,..] [--json]
-                and the plan options above (dqn is included when --model is given)
+                and the plan options above (dqn is included when --model is given);
+                then the paper's ratios: our best solver's extra distance and turns
+                divided by each baseline's (reeb-cpp, adjacency-ga)
   train PLAN    train the Double-DQN planner for this plan: --out MODEL
                 [--episodes N] [--seconds S] (default 300 s when neither is given)
                 [--seed N] [--setting improved|paper] [--resume] [--evaluate-every N]
@@ -167,6 +172,31 @@ int commandGraph(const Arguments& args) {
     return 0;
 }
 
+// Under the table: the paper's ratios; with --json one more line {"ratios":[...]}.
+void printRatios(const std::vector<BaselineRatio>& ratios, bool json) {
+    if (ratios.empty())
+        return;
+    if (json) {
+        std::ostringstream line;
+        line << "{\"ratios\":[";
+        for (size_t i = 0; i < ratios.size(); ++i) {
+            const BaselineRatio& r = ratios[i];
+            auto number = [](double v) { return std::isfinite(v) ? std::to_string(v) : "null"; };
+            line << (i ? "," : "") << "{\"baseline\":\"" << r.baseline << "\",\"ours\":\"" << r.ours
+                 << "\",\"extra_ratio\":" << number(r.extraRatio)
+                 << ",\"turns_ratio\":" << number(r.turnsRatio) << "}";
+        }
+        std::cout << line.str() << "]}" << std::endl;
+        return;
+    }
+    std::printf("\nthe paper's ratios (ours = %s, the least extra distance):\n",
+                ratios.front().ours.c_str());
+    for (const BaselineRatio& r : ratios)
+        std::printf("  vs %-13s extra %6.1f%%  turns %6.1f%%   (paper: %s)\n", r.baseline.c_str(),
+                    100.0 * r.extraRatio, 100.0 * r.turnsRatio,
+                    paperRatiosText(r.baseline).c_str());
+}
+
 int commandCompare(const Arguments& args) {
     std::vector<std::string> allowed = kPlanOptions;
     allowed.push_back("--solvers");
@@ -190,11 +220,13 @@ int commandCompare(const Arguments& args) {
         std::printf("%-14s %10s %10s %10s %6s %9s %10s %11s %9s\n", "solver", "length_m", "ideal_m",
                     "extra_m", "turns", "coverage", "time_s", "graph_cost", "seconds");
     int failures = 0;
+    std::vector<std::pair<std::string, Metrics>> answered;
     for (const std::string& solver : solvers) {
         request.solver = solver;
         try {
             const PlanResult r = planCoverage(request);
             const Metrics& m = r.metrics;
+            answered.push_back({solver, m});
             if (json)
                 std::cout << metricsJsonLine(solver, m) << std::endl;
             else
@@ -212,6 +244,7 @@ int commandCompare(const Arguments& args) {
             throw InputError(path + ": " + e.what());
         }
     }
+    printRatios(baselineRatios(answered), json);
     return failures == static_cast<int>(solvers.size()) ? 2 : 0;
 }
 

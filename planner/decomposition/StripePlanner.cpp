@@ -108,6 +108,24 @@ Polyline traceBorder(const Cell& cell, double xa, double xb, bool top,
     return simple;
 }
 
+bool appendStripeEndSeal(Polyline& path, const Cell& cell, double x, double endY, bool top,
+                         int side, bool evenIfFlat, const ClearanceField& field, double width) {
+    const double xe = std::clamp(x + side * 0.5 * width, cell.x0, cell.x1);
+    if (std::abs(xe - x) < 0.125 * width)
+        return false;
+    const Polyline line = traceBorder(cell, x, xe, top, field);
+    if (line.size() < 2 || !field.polylineIsClear(line))
+        return false;
+    double deviation = 0;
+    for (const Vec2& p : line)
+        deviation = std::max(deviation, std::abs(p.y - endY));
+    if (deviation < 0.2 * width && !evenIfFlat)
+        return false;
+    path.insert(path.end(), line.begin() + 1, line.end());
+    path.insert(path.end(), line.rbegin() + 1, line.rend());
+    return true;
+}
+
 namespace {
 
 // First x from `from` towards `to` where the cell has a clear span (bisected to 1e-6 W);

@@ -48,23 +48,10 @@ private:
     // border and back so the head reaches the wall there too.
     void sealEnd(Polyline& path, const Cell& cell, const StripeRun& run, bool top, int side,
                  bool evenIfFlat = false) {
-        const double w = dec_.coverageWidth;
-        const double xe = std::clamp(run.x + side * 0.5 * w, cell.x0, cell.x1);
-        if (std::abs(xe - run.x) < 0.125 * w)
-            return;
-        const Polyline line = traceBorder(cell, run.x, xe, top, field_);
-        if (line.size() < 2 || !field_.polylineIsClear(line))
-            return;
-        const double y0 = top ? run.span.hi : run.span.lo;
-        double deviation = 0;
-        for (const Vec2& p : line)
-            deviation = std::max(deviation, std::abs(p.y - y0));
-        if (deviation < 0.2 * w && !evenIfFlat)
-            return;
         const int begin = static_cast<int>(path.size()) - 1;
-        path.insert(path.end(), line.begin() + 1, line.end());
-        path.insert(path.end(), line.rbegin() + 1, line.rend());
-        excursions_.push_back({begin, static_cast<int>(path.size()) - 1, top});
+        if (detail::appendStripeEndSeal(path, cell, run.x, top ? run.span.hi : run.span.lo, top,
+                                        side, evenIfFlat, field_, dec_.coverageWidth))
+            excursions_.push_back({begin, static_cast<int>(path.size()) - 1, top});
     }
 
     Polyline boustrophedon(const Cell& cell, const std::vector<StripeRun>& runs, bool fromBottom) {

@@ -43,57 +43,94 @@ Polyline joinFreePoint(const ClearanceField& field, Vec2 from, Vec2 to, const ch
     return line;
 }
 
+// The path under construction in the sweep frame, and the seal excursions it contains.
+struct LocalPath {
+    CoveragePath path;
+    std::vector<detail::PathExcursion> excursions;
+};
+
+void joinStart(LocalPath& local, const ClearanceField& field, const Decomposition& dec,
+               std::optional<Vec2> startPoint, Vec2 first) {
+    if (startPoint)
+        append(local.path, joinFreePoint(field, dec.frame.toLocal(*startPoint), first, "start"),
+               SegmentKind::Transit);
+    else
+        append(local.path, {first}, SegmentKind::Transit);
+}
+
+// Joins the end point, drops the seal excursions whose margin the rest of the path already
+// sweeps, and converts to the world frame.
+CoveragePath finish(LocalPath& local, const ClearanceField& field, const Decomposition& dec,
+                    std::optional<Vec2> endPoint) {
+    if (endPoint && !local.path.points.empty())
+        append(local.path,
+               joinFreePoint(field, local.path.points.back(), dec.frame.toLocal(*endPoint), "end"),
+               SegmentKind::Transit);
+    const std::vector<char> keep =
+        detail::prunableExcursions(local.path.points, local.excursions, dec.coverageWidth);
+    CoveragePath world;
+    for (size_t i = 0; i < local.path.points.size(); ++i) {
+        if (!keep[i])
+            continue;
+        const Vec2 p = dec.frame.toWorld(local.path.points[i]);
+        if (!world.points.empty()) {
+            if (distance(world.points.back(), p) < 1e-9)
+                continue;
+            world.kinds.push_back(local.path.kinds[i - 1]);
+        }
+        world.points.push_back(p);
+    }
+    return world;
+}
+
 } // namespace
 
 CoveragePath buildCoveragePath(const Decomposition& dec, const CornerGraph& graph, const Walk& walk,
                                std::optional<Vec2> startPoint, std::optional<Vec2> endPoint) {
-    CoveragePath local;
     const ClearanceField field(dec.freeSpace, 0.5 * dec.coverageWidth);
     if (walk.nodes.empty())
-        return local;
-    const Vec2 first = graph.nodes[walk.nodes.front()].position;
-    if (startPoint)
-        append(local, joinFreePoint(field, dec.frame.toLocal(*startPoint), first, "start"),
-               SegmentKind::Transit);
-    else
-        append(local, {first}, SegmentKind::Transit);
-    std::vector<detail::PathExcursion> excursions;
+        return {};
+    LocalPath local;
+    joinStart(local, field, dec, startPoint, graph.nodes[walk.nodes.front()].position);
     for (size_t i = 0; i < walk.edges.size(); ++i) {
         const GraphEdge& e = graph.edges[walk.edges[i]];
         const bool reversed = e.u != walk.nodes[i];
         Polyline piece = e.geometry;
         if (reversed)
             piece.assign(e.geometry.rbegin(), e.geometry.rend());
-        const std::vector<int> index = append(local, piece, kindOf(e.kind));
+        const std::vector<int> index = append(local.path, piece, kindOf(e.kind));
         const int last = static_cast<int>(piece.size()) - 1;
         for (const Excursion& x : e.excursions) {
             const int b = reversed ? last - x.end : x.begin;
             const int en = reversed ? last - x.begin : x.end;
-            excursions.push_back({index[b], index[en], x.towardsCeiling});
+            local.excursions.push_back({index[b], index[en], x.towardsCeiling});
         }
     }
-    if (endPoint)
-        append(local,
-               joinFreePoint(field, graph.nodes[walk.nodes.back()].position,
-                             dec.frame.toLocal(*endPoint), "end"),
-               SegmentKind::Transit);
+    return finish(local, field, dec, endPoint);
+}
 
-    // Drop the seal excursions whose margin the rest of the path already sweeps.
-    const std::vector<char> keep =
-        detail::prunableExcursions(local.points, excursions, dec.coverageWidth);
-    CoveragePath world;
-    for (size_t i = 0; i < local.points.size(); ++i) {
-        if (!keep[i])
-            continue;
-        const Vec2 p = dec.frame.toWorld(local.points[i]);
-        if (!world.points.empty()) {
-            if (distance(world.points.back(), p) < 1e-9)
-                continue;
-            world.kinds.push_back(local.kinds[i - 1]);
-        }
-        world.points.push_back(p);
-    }
-    return world;
+CoveragePath buildCoveragePath(const Decomposition& dec, const DirectPath& direct,
+                               std::optional<Vec2> startPoint, std::optional<Vec2> endPoint) {
+    const ClearanceField field(dec.freeSpace, 0.5 * dec.coverageWidth);
+    const Polyline& points = direct.path.points;
+    if (points.empty())
+        return {};
+    LocalPath local;
+    joinStart(local, field, dec, startPoint, points.front());
+    std::vector<int> index{static_cast<int>(local.path.points.size()) - 1};
+    for (size_t i = 1; i < points.size(); ++i)
+        index.push_back(append(local.path, {points[i]}, direct.path.kinds[i - 1]).back());
+    for (const Excursion& x : direct.excursions)
+        local.excursions.push_back({index[x.begin], index[x.end], x.towardsCeiling});
+    return finish(local, field, dec, endPoint);
+}
+
+CoveragePath buildCoveragePath(const Decomposition& dec, const CornerGraph& graph,
+                               const Solution& solution, std::optional<Vec2> startPoint,
+                               std::optional<Vec2> endPoint) {
+    if (solution.directPath)
+        return buildCoveragePath(dec, *solution.directPath, startPoint, endPoint);
+    return buildCoveragePath(dec, graph, solution.walk, startPoint, endPoint);
 }
 
 } // namespace fc

@@ -15,4 +15,15 @@ CoveragePath buildCoveragePath(const Decomposition& decomposition, const CornerG
                                const Walk& walk, std::optional<Vec2> startPoint = {},
                                std::optional<Vec2> endPoint = {});
 
+// The path of any solver's answer: its walk, or the path it planned itself (directPath).
+CoveragePath buildCoveragePath(const Decomposition& decomposition, const CornerGraph& graph,
+                               const Solution& solution, std::optional<Vec2> startPoint = {},
+                               std::optional<Vec2> endPoint = {});
+
+// The same for a path a solver planned itself (Solution::directPath, sweep frame): joined to
+// the free start/end points, seal excursions pruned, converted to the world frame.
+CoveragePath buildCoveragePath(const Decomposition& decomposition, const DirectPath& direct,
+                               std::optional<Vec2> startPoint = {},
+                               std::optional<Vec2> endPoint = {});
+
 } // namespace fc

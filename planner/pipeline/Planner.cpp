@@ -3,6 +3,7 @@
 #include "model/Validation.h"
 #include "path/PathBuilder.h"
 #include "pipeline/SolverRegistry.h"
+#include "solvers/Baselines.h"
 
 #include <algorithm>
 #include <chrono>
@@ -122,7 +123,7 @@ Query makeQuery(const PreparedPlan& prepared, const std::vector<std::string>& ro
 }
 
 std::vector<std::string> solverNames() {
-    std::vector<std::string> names{"exact", "heuristic", "greedy"};
+    std::vector<std::string> names{"exact", "heuristic", "greedy", "reeb-cpp", "adjacency-ga"};
     for (const std::string& name : registeredSolverNames())
         if (std::find(names.begin(), names.end(), name) == names.end())
             names.push_back(name);
@@ -139,6 +140,11 @@ Solution runSolver(const std::string& name, const PreparedPlan& prepared, const 
         return solveHeuristic(prepared.graph, query, control);
     if (name == "greedy")
         return solveGreedy(prepared.graph, query);
+    if (name == "reeb-cpp" || name == "adjacency-ga") {
+        const BaselineQuery baseline =
+            makeBaselineQuery(prepared.plan, prepared.decomposition, prepared.graph, query);
+        return name == "reeb-cpp" ? solveReebPostman(baseline) : solveAdjacencyGa(baseline);
+    }
     std::ostringstream msg;
     msg << "unknown solver \"" << name << "\" (available:";
     for (const std::string& n : solverNames())
@@ -182,7 +188,7 @@ PlanResult planAtAngle(const PlanRequest& request, double angle, const SolveCont
     result.solution =
         runSolver(request.solver, result.prepared, result.query, request.modelPath, control);
     result.path = buildCoveragePath(result.prepared.decomposition, result.prepared.graph,
-                                    result.solution.walk, request.start, request.end);
+                                    result.solution, request.start, request.end);
     const double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 

@@ -3,9 +3,11 @@
 #pragma once
 
 #include "graph/CornerGraph.h"
+#include "path/CoveragePath.h"
 
 #include <cstdint>
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -24,11 +26,21 @@ struct Walk {
     std::vector<int> edges;
 };
 
+// A robot-centre path planned without the corner graph (the paper's baselines), in the
+// sweep frame, with the seal excursions the path builder may drop (indices into points).
+struct DirectPath {
+    CoveragePath path;
+    std::vector<Excursion> excursions;
+};
+
 struct Solution {
     std::string solver;
     Walk walk;
     std::vector<int> cellOrder; // cells in the order their coverage edge is traversed
     double graphCost = 0.0;     // recomputed by evaluateWalk, never trusted from a solver
+    // Set by solvers that plan the path themselves instead of a walk (walk stays empty,
+    // graphCost 0: they do not walk the corner graph).
+    std::optional<DirectPath> directPath;
 };
 
 struct WalkEvaluation {

@@ -11,7 +11,8 @@ std::string prefix(const char* solverName) {
     return std::string(solverName) + " solver: ";
 }
 
-// Nodes reachable from `start` over every edge (costs aside, any edge can be walked).
+} // namespace
+
 std::vector<char> reachableFrom(const CornerGraph& graph, int start) {
     std::vector<char> seen(graph.nodes.size(), 0);
     std::vector<int> stack{start};
@@ -29,8 +30,6 @@ std::vector<char> reachableFrom(const CornerGraph& graph, int start) {
     }
     return seen;
 }
-
-} // namespace
 
 bool isRequiredCell(const CornerGraph& graph, const Query& query, int cell) {
     return cell >= 0 && cell < static_cast<int>(query.required.size()) &&

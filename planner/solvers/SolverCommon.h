@@ -20,6 +20,9 @@ struct CoverOption {
     int edge = -1;
 };
 
+// Nodes reachable from `start` over every edge (costs aside, any edge can be walked).
+std::vector<char> reachableFrom(const CornerGraph& graph, int start);
+
 // A cell the walk must cover. Unreachable cells (no stripe fits) are never required.
 bool isRequiredCell(const CornerGraph& graph, const Query& query, int cell);
 

@@ -94,6 +94,21 @@ assert {e['kind'] for e in g['edges']} == {'coverage','contour','inter'}"
 # Compare.
 check "compare" cli compare "$plans/simple.geojson"
 check "compare lists solvers" grep -q heuristic "$work/last"
+check "compare lists the baselines" grep -q '^adjacency-ga ' "$work/last"
+check "compare prints the paper's ratios" grep -q 'vs reeb-cpp .*extra .*turns' "$work/last"
+check "compare --json" cli compare "$plans/simple.geojson" --json
+check "compare --json lines parse" python3 -c "
+import json; lines = [json.loads(l) for l in open('$work/last')]
+assert {l['solver'] for l in lines[:-1]} >= {'heuristic', 'reeb-cpp', 'adjacency-ga'}
+assert {r['baseline'] for r in lines[-1]['ratios']} == {'reeb-cpp', 'adjacency-ga'}"
+
+# The paper's baselines plan like any solver.
+for plan in simple room-obstacle office; do
+  for solver in reeb-cpp adjacency-ga; do
+    check "plan $plan $solver" cli plan "$plans/$plan.geojson" --solver "$solver" --out "$work/$plan-$solver.csv"
+    check "metrics $plan $solver" metrics_ok
+  done
+done
 
 # Bad input: exit code 2 and one line naming the file.
 # Every fixture listed as refused in tests/data/README.md.

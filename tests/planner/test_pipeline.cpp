@@ -55,6 +55,14 @@ void PrintTo(const Case& c, std::ostream* os) {
 
 class SamplePlans : public ::testing::TestWithParam<Case> {};
 
+std::string caseName(const ::testing::TestParamInfo<Case>& info) {
+    std::string n = info.param.plan + "_" + info.param.solver;
+    for (char& ch : n)
+        if (ch == '-')
+            ch = '_';
+    return n;
+}
+
 } // namespace
 
 TEST_P(SamplePlans, PathIsCollisionFreeAndCovers) {
@@ -79,13 +87,23 @@ INSTANTIATE_TEST_SUITE_P(
                       Case{"room-notches", "heuristic"}, Case{"room-notches", "greedy"},
                       Case{"office", "heuristic"}, Case{"office", "greedy"},
                       Case{"ward", "heuristic"}, Case{"ward", "greedy"}),
-    [](const ::testing::TestParamInfo<Case>& info) {
-        std::string n = info.param.plan + "_" + info.param.solver;
-        for (char& ch : n)
-            if (ch == '-')
-                ch = '_';
-        return n;
-    });
+    caseName);
+
+namespace {
+
+// The paper's baselines pass the same checks on every sample plan.
+std::vector<Case> baselineCases() {
+    std::vector<Case> cases;
+    for (const char* plan :
+         {"simple", "simple-diamond", "room-obstacle", "room-notches", "office", "ward"})
+        for (const char* solver : {"reeb-cpp", "adjacency-ga"})
+            cases.push_back({plan, solver});
+    return cases;
+}
+
+} // namespace
+
+INSTANTIATE_TEST_SUITE_P(Baselines, SamplePlans, ::testing::ValuesIn(baselineCases()), caseName);
 
 TEST(Pipeline, HeuristicWithinOnePercentOfExact) {
     for (const char* name : {"simple", "simple-diamond", "room-obstacle", "room-notches"}) {
