@@ -73,6 +73,7 @@ int main(int argc, char** argv) {
         const Curve paper = readCurve(dir + "/curves-" + name + "-paper.csv");
         const Curve improved = readCurve(dir + "/curves-" + name + "-improved.csv");
         QCustomPlot plot;
+        plot.setAutoAddPlottableToLegend(false); // each panel has its own legend
         plot.plotLayout()->clear();
         plot.plotLayout()->addElement(
             0, 0,
@@ -83,7 +84,7 @@ int main(int argc, char** argv) {
         const struct {
             const char* x;
             bool seconds;
-        } axes[] = {{"episodes", false}, {"training seconds", true}};
+        } axes[] = {{"episodes", false}, {"training CPU seconds (one thread)", true}};
         for (int column = 0; column < 2; ++column) {
             const bool bySeconds = axes[column].seconds;
             // Reward: each setting has its own reward function, so each its own axis.
@@ -119,7 +120,7 @@ int main(int argc, char** argv) {
             gap->axis(QCPAxis::atBottom)->setRange(reward->axis(QCPAxis::atBottom)->range());
             auto* legend = new QCPLegend;
             gap->insetLayout()->addElement(legend, Qt::AlignTop | Qt::AlignRight);
-            legend->setLayer("legend");
+            legend->setLayer(QStringLiteral("legend"));
             for (int i = plot.graphCount() - 2; i < plot.graphCount(); ++i)
                 legend->addItem(new QCPPlottableLegendItem(legend, plot.graph(i)));
         }
