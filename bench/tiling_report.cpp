@@ -1,0 +1,170 @@
+// floorcover-tiling-report: the tiling robot's report (docs/tiling.md). Tiles two sample
+// plans, orders the tiles with every method (the paper's Table 3: distance, energy and
+// running time per method) and measures gaps to the Held-Karp optimum on random small
+// instances.   floorcover-tiling-report [--plans a,b] [--instances N] > docs/tiling.md
+#include "formats/PlanIO.h"
+#include "tiling/RandomInstances.h"
+#include "tiling/TilingPlanner.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <map>
+#include <sstream>
+#include <string>
+#include <vector>
+
+using namespace fc;
+using namespace fc::tiling;
+
+namespace {
+
+const char* kHeader = R"(# Tiling robot: polyabolo tiling and energy-aware waypoint ordering
+
+The second method of the project (`../shared/seeds/001_*.txt`, hTetran): a robot of four
+isosceles right-triangle blocks (legs 0.21 m) that changes between five shapes to tile the
+floor, and an order of the tiles that minimises the energy of Equations 1-4. Regenerate this
+file with `build/bench/floorcover-tiling-report > docs/tiling.md` (one thread; times are
+wall-clock seconds on the machine that ran it). CLI: `floorcover-cli tile PLAN --solver
+zigzag|spiral|greedy|aco|ga|exact [--out FILE.csv|FILE.json]`.
+
+## Model (where the paper is silent or garbled, our reading)
+
+* **Lattice** (`planner/tiling/TriangleGrid`): squares of the block leg over the plan's
+  bounding box, split along a diagonal that alternates like a checkerboard, so the lattice is
+  the polyabolo (tetrakis) lattice turned by 45 degrees. A cell is free when the whole
+  triangle is in the free space (touching a wall is fine).
+* **Shapes** (`Polyabolo.cpp`): the figures are missing, so the five shapes are our reading
+  of the text: rectangle a x 2a, triangle with legs 2a, parallelogram 2a x a with 45-degree
+  sides, curve (a square with an ear on two adjacent sides), square of side a*sqrt(2). All
+  rotations and mirror images that sit on the lattice are used; a mirror image keeps its
+  shape's name and heading.
+* **Energy**: Eq. 1 sums mass x distance of each block centre between the two tiles; Eq. 2
+  uses the block rotations of Table 1 (magnitudes) with lever l1 = a*sqrt(5)/3 (hinge at an
+  acute corner) for a single rotation and l1 then l2 = a*sqrt(2)/3 for a double one (Table 2
+  read off Table 1; where the printed Table 2 disagrees, Table 1 and Section 5.1 win); Eq. 3
+  is mass x heading change (short way round) x (l1 + l2). Block masses are not in the paper;
+  the defaults are 0.9, 1.4, 0.9, 0.9 kg (B2 carries the controller and battery). Energy is in
+  kg m ("cost weight"), as the paper's Table 3.
+* **Tour**: closed, as Eq. 5, starting at the tile whose lowest cell comes first in row order.
+  The waypoint is the centre of block 2; "distance" is waypoint to waypoint.
+* **Tiling** (`Tiling.cpp`): exact backtracking per connected piece (the lowest uncovered
+  cell must be covered by a placement anchored there), 2,000,000 placements per piece; a
+  piece without an exact tiling within the budget (or whose cell count is not a multiple of
+  4) gets a greedy fill with one-step look-ahead, which may leave cells untiled.
+)";
+
+struct Options {
+    std::vector<std::string> plans{"simple", "simple-diamond"};
+    int instances = 10;
+};
+
+double secondsSince(std::chrono::steady_clock::time_point start) {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+void reportTiling(const std::string& name, const TilingPlan& plan) {
+    std::map<std::string, int> shapes;
+    for (const Tile& tile : plan.tiling.tiles)
+        ++shapes[shapeName(tile.shape)];
+    std::ostringstream mix;
+    for (const auto& [shape, count] : shapes)
+        mix << shape << " " << count << ", ";
+    std::string text = mix.str();
+    if (!text.empty())
+        text.resize(text.size() - 2);
+    std::printf("| %s | %d | %zu | %s | %zu | %zu | %d/%d | %.2f |\n", name.c_str(),
+                plan.tiling.freeCells, plan.tiling.tiles.size(), text.c_str(),
+                plan.tiling.unreachable.size(), plan.tiling.untiled.size(),
+                plan.tiling.piecesTiledExactly, plan.tiling.pieces, plan.tilingSeconds);
+}
+
+void reportMethods(const std::string& name, TilingPlan plan) {
+    std::printf("\n### %s (%zu waypoints)\n\n", name.c_str(), plan.problem.poses.size());
+    std::printf("| method | 2D distance (m) | total cost (kg m) | translation | transformation | "
+                "orientation | shape changes | running time (s) |\n");
+    std::printf("|---|---:|---:|---:|---:|---:|---:|---:|\n");
+    for (const std::string& solver : orderingSolverNames()) {
+        if (solver == "exact")
+            continue; // far above its limit on a whole floor
+        orderTiles(plan, solver, 1);
+        std::printf("| %s | %.2f | %.2f | %.2f | %.2f | %.2f | %d | %.3f |\n", solver.c_str(),
+                    plan.length, plan.energy.total(), plan.energy.translation,
+                    plan.energy.transformation, plan.energy.orientation, plan.shapeChanges,
+                    plan.orderingSeconds);
+        std::fflush(stdout);
+    }
+}
+
+void reportGaps(int instances) {
+    std::printf("\n## Gaps to the optimum (Held-Karp) on random small instances\n\n");
+    std::printf("Tiles of random shapes and orientations at random places in a 6 x 6 m square "
+                "(`RandomInstances.cpp`), %d instances per size, seed 1 for the searches. Gap = "
+                "cost / optimum - 1.\n\n",
+                instances);
+    std::printf("| waypoints | method | mean gap | max gap | mean time (s) |\n");
+    std::printf("|---:|---|---:|---:|---:|\n");
+    for (int n : {8, 12, 16}) {
+        std::map<std::string, double> sumGap, maxGap, sumTime;
+        for (int k = 0; k < instances; ++k) {
+            const OrderingProblem problem = randomOrderingProblem(n, 1000 + 100 * n + k);
+            auto start = std::chrono::steady_clock::now();
+            const double optimum = tourCost(problem, orderExact(problem));
+            sumTime["exact"] += secondsSince(start);
+            for (const std::string& solver : orderingSolverNames()) {
+                if (solver == "exact")
+                    continue;
+                start = std::chrono::steady_clock::now();
+                const double cost = tourCost(problem, solveOrdering(solver, problem, 1));
+                sumTime[solver] += secondsSince(start);
+                const double gap = cost / optimum - 1.0;
+                sumGap[solver] += gap;
+                maxGap[solver] = std::max(maxGap[solver], gap);
+            }
+        }
+        for (const std::string& solver : orderingSolverNames())
+            std::printf("| %d | %s | %.2f%% | %.2f%% | %.4f |\n", n, solver.c_str(),
+                        100.0 * sumGap[solver] / instances, 100.0 * maxGap[solver],
+                        sumTime[solver] / instances);
+        std::fflush(stdout);
+    }
+}
+
+std::vector<std::string> split(const std::string& text) {
+    std::vector<std::string> out;
+    std::stringstream in(text);
+    for (std::string item; std::getline(in, item, ',');)
+        if (!item.empty())
+            out.push_back(item);
+    return out;
+}
+
+} // namespace
+
+int main(int argc, char** argv) {
+    Options options;
+    for (int k = 1; k + 1 < argc; k += 2) {
+        if (std::strcmp(argv[k], "--plans") == 0)
+            options.plans = split(argv[k + 1]);
+        else if (std::strcmp(argv[k], "--instances") == 0)
+            options.instances = std::max(1, std::atoi(argv[k + 1]));
+    }
+    std::printf("%s", kHeader);
+    std::vector<std::pair<std::string, TilingPlan>> tiled;
+    std::printf(
+        "\n## Tilings\n\n| plan | free cells | tiles | shapes | unreachable | untiled | "
+        "pieces tiled exactly | tiling time (s) |\n|---|---:|---:|---|---:|---:|---:|---:|\n");
+    for (const std::string& name : options.plans) {
+        TilingRequest request;
+        request.plan = loadProjectFile(std::string(FC_PLANS_DIR) + "/" + name + ".geojson").plan;
+        tiled.emplace_back(name, tilePlan(request));
+        reportTiling(name, tiled.back().second);
+    }
+    std::printf("\n## Waypoint ordering per method (the paper's Table 3)\n");
+    for (const auto& [name, plan] : tiled)
+        reportMethods(name, plan);
+    reportGaps(options.instances);
+    return 0;
+}
