@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 namespace fc::tiling {
 namespace {
@@ -19,6 +20,7 @@ struct Colony {
     std::vector<std::vector<double>> attractiveness; // (1/cost)^beta per candidate move
     std::vector<std::vector<double>> pheromone;
     double initialPheromone = 0.0;
+    std::vector<double> scratch; // move values, reused between steps
 
     Colony(const OrderingProblem& p, const AntColonyOptions& o, const WaypointIndex& index,
            double referenceCost)
@@ -45,7 +47,8 @@ struct Colony {
     // Next waypoint among the unvisited candidates, or -1 when all are visited.
     int chooseMove(int from, const std::vector<char>& visited, RandomSource& random) {
         const auto& list = candidates[from];
-        std::vector<double> values(list.size(), 0.0);
+        std::vector<double>& values = scratch;
+        values.assign(list.size(), 0.0);
         double sum = 0.0;
         int best = -1;
         for (std::size_t c = 0; c < list.size(); ++c) {

@@ -140,10 +140,10 @@ Tour orderExact(const OrderingProblem& problem) {
     for (std::size_t mask = 1; mask < masks; ++mask)
         for (int j = 0; j < m; ++j) {
             const double here = best[mask * m + j];
-            if (!(mask >> j & 1) || here == inf)
+            if (!((mask >> j) & 1) || here == inf)
                 continue;
             for (int k = 0; k < m; ++k) {
-                if (mask >> k & 1)
+                if ((mask >> k) & 1)
                     continue;
                 const std::size_t next = (mask | std::size_t{1} << k) * m + k;
                 const double c = here + problem.cost(j + 1, k + 1);
