@@ -1,7 +1,7 @@
 // floorcover-tiling-report: the tiling robot's report (docs/tiling.md). Tiles two sample
 // plans, orders the tiles with every method (the paper's Table 3: distance, energy and
 // running time per method) and measures gaps to the Held-Karp optimum on random small
-// instances.   floorcover-tiling-report [--plans a,b] [--instances N] > docs/tiling.md
+// instances.   floorcover-tiling-report [--instances N] [PLAN_NAME...] > docs/tiling.md
 #include "formats/PlanIO.h"
 #include "tiling/RandomInstances.h"
 #include "tiling/TilingPlanner.h"
@@ -132,25 +132,19 @@ void reportGaps(int instances) {
     }
 }
 
-std::vector<std::string> split(const std::string& text) {
-    std::vector<std::string> out;
-    std::stringstream in(text);
-    for (std::string item; std::getline(in, item, ',');)
-        if (!item.empty())
-            out.push_back(item);
-    return out;
-}
-
 } // namespace
 
 int main(int argc, char** argv) {
     Options options;
-    for (int k = 1; k + 1 < argc; k += 2) {
-        if (std::strcmp(argv[k], "--plans") == 0)
-            options.plans = split(argv[k + 1]);
-        else if (std::strcmp(argv[k], "--instances") == 0)
-            options.instances = std::max(1, std::atoi(argv[k + 1]));
+    std::vector<std::string> plans;
+    for (int k = 1; k < argc; ++k) {
+        if (std::strcmp(argv[k], "--instances") == 0 && k + 1 < argc)
+            options.instances = std::max(1, std::atoi(argv[++k]));
+        else
+            plans.push_back(argv[k]);
     }
+    if (!plans.empty())
+        options.plans = plans;
     std::printf("%s", kHeader);
     std::vector<std::pair<std::string, TilingPlan>> tiled;
     std::printf(

@@ -36,8 +36,11 @@ struct Search {
     CellLists anchored; // placements whose lowest cell id is this cell
     CellLists covering; // placements that cover this cell
     std::vector<char> covered;
+    std::vector<std::array<int, 3>> neighbours; // free cells across each edge, -1 if none
 
     explicit Search(const TriangleGrid& g) : grid(g), covered(g.cellCount(), 0) {
+        for (int cell = 0; cell < grid.cellCount(); ++cell)
+            neighbours.push_back(edgeNeighbours(cell));
         std::vector<std::pair<int, int>> anchors, covers;
         for (int o = 0; o < static_cast<int>(orientations.size()); ++o) {
             const ShapeOrientation& shape = orientations[o];
@@ -47,6 +50,17 @@ struct Search {
         }
         anchored.build(grid.cellCount(), anchors);
         covering.build(grid.cellCount(), covers);
+        // Try first the placements that reach least far in scan order: filling the current
+        // row before poking into the next keeps the frontier flat, so the search rarely has
+        // to undo a choice made rows earlier.
+        auto reach = [this](int id) {
+            const auto& cells = placements[id].cells;
+            return std::make_pair(*std::max_element(cells.begin(), cells.end()), id);
+        };
+        for (int cell = 0; cell < grid.cellCount(); ++cell)
+            std::sort(anchored.items.begin() + anchored.start[cell],
+                      anchored.items.begin() + anchored.start[cell + 1],
+                      [&reach](int a, int b) { return reach(a) < reach(b); });
     }
 
     void addPlacement(int o, int tx, int ty, std::vector<std::pair<int, int>>& anchors,
@@ -63,6 +77,37 @@ struct Search {
         anchors.emplace_back(*std::min_element(p.cells.begin(), p.cells.end()), id);
         for (int cell : p.cells)
             covers.emplace_back(cell, id);
+    }
+
+    std::array<int, 3> edgeNeighbours(int cell) const {
+        const LatticeTriangle t = grid.triangle(cell);
+        const int i = t.squareI(), j = t.squareJ();
+        auto freeCell = [this](int si, int sj, int half) {
+            if (si < 0 || sj < 0 || si >= grid.nx() || sj >= grid.ny())
+                return -1;
+            const int id = grid.cellId(si, sj, half);
+            return grid.isFree(id) ? id : -1;
+        };
+        // Across the horizontal leg: the half of the square below that holds its top edge
+        // (half 1), or of the square above that holds its bottom edge (half 0).
+        const int vertical = t.sy > 0 ? freeCell(i, j - 1, 1) : freeCell(i, j + 1, 0);
+        // Across the vertical leg: in a "\" square the right edge is in half 1 and the left
+        // edge in half 0; in a "/" square the other way round.
+        const int left = i - 1, right = i + 1;
+        const bool leftEven = ((left + j) & 1) == 0, rightEven = ((right + j) & 1) == 0;
+        const int horizontal =
+            t.sx > 0 ? freeCell(left, j, leftEven ? 1 : 0) : freeCell(right, j, rightEven ? 0 : 1);
+        return {freeCell(i, j, 1 - t.half()), vertical, horizontal};
+    }
+
+    // A placement that leaves a neighbouring free cell without any fitting placement can
+    // never be part of a complete tiling: prune it at once instead of rows later.
+    bool strandsANeighbour(int id) const {
+        for (int cell : placements[id].cells)
+            for (int neighbour : neighbours[cell])
+                if (neighbour >= 0 && !covered[neighbour] && !coverable(neighbour))
+                    return true;
+        return false;
     }
 
     bool fits(int id) const {
@@ -109,14 +154,16 @@ struct Search {
         return result;
     }
 
-    // Exact cover of the piece by backtracking: the lowest uncovered cell must be covered
-    // by a placement anchored there. Returns the placements, or nothing within the budget.
-    bool backtrack(const std::vector<int>& cells, long long budget, long long& nodes,
-                   std::vector<int>& chosen) {
+    // Cover of the piece by backtracking: the lowest uncovered cell must be covered by a
+    // placement anchored there, or, while `skips` allows, left untiled (a piece whose size
+    // is not a multiple of four must leave size % 4 cells). False when the budget runs out.
+    bool backtrack(const std::vector<int>& cells, int skips, long long budget, long long& nodes,
+                   std::vector<int>& chosen, std::vector<int>& skipped) {
         struct Frame {
             std::size_t position;
             const int* next; // next anchored placement to try
             int placed;
+            bool skipping;
         };
         std::vector<Frame> stack;
         std::size_t position = 0;
@@ -127,7 +174,7 @@ struct Search {
                     ++position;
                 if (position == cells.size())
                     break;
-                stack.push_back({position, anchored.begin(cells[position]), -1});
+                stack.push_back({position, anchored.begin(cells[position]), -1, false});
             }
             Frame& top = stack.back();
             const int cell = cells[top.position];
@@ -140,21 +187,41 @@ struct Search {
                 ++nodes;
                 top.placed = *top.next++;
                 mark(top.placed, 1);
+                descend = !strandsANeighbour(top.placed); // else the frame's next placement
+                position = top.position;
+                continue;
+            }
+            if (!top.skipping && skips > 0 && nodes < budget) {
+                ++nodes;
+                top.skipping = true;
+                covered[cell] = 2; // left untiled
+                --skips;
                 position = top.position;
                 descend = true;
                 continue;
             }
+            if (top.skipping) {
+                covered[cell] = 0;
+                ++skips;
+            }
             stack.pop_back();
             if (stack.empty() || nodes >= budget) {
-                for (const Frame& f : stack)
+                for (const Frame& f : stack) {
                     if (f.placed >= 0)
                         mark(f.placed, 0);
+                    if (f.skipping)
+                        covered[cells[f.position]] = 0;
+                }
                 return false;
             }
             descend = false;
         }
-        for (const Frame& f : stack)
-            chosen.push_back(f.placed);
+        for (const Frame& f : stack) {
+            if (f.skipping)
+                skipped.push_back(cells[f.position]);
+            else
+                chosen.push_back(f.placed);
+        }
         return true;
     }
 
@@ -219,10 +286,12 @@ TilingResult tileFreeSpace(const TriangleGrid& grid, const TilingOptions& option
     result.pieces = static_cast<int>(pieces.size());
     for (const std::vector<int>& cells : pieces) {
         long long nodes = 0;
-        // Four cells a tile: a piece of another size has no exact tiling to look for.
-        if (cells.size() % kBlockCount == 0 &&
-            search.backtrack(cells, options.nodeBudget, nodes, chosen)) {
+        // Four cells a tile: a piece of another size leaves size % 4 cells at the least.
+        const int skips = static_cast<int>(cells.size() % kBlockCount);
+        std::vector<int> skipped;
+        if (search.backtrack(cells, skips, options.nodeBudget, nodes, chosen, skipped)) {
             ++result.piecesTiledExactly;
+            result.untiled.insert(result.untiled.end(), skipped.begin(), skipped.end());
         } else {
             search.greedy(cells, chosen, result.untiled);
         }

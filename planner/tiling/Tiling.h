@@ -26,10 +26,12 @@ struct TilingOptions {
 struct TilingResult {
     std::vector<Tile> tiles;
     std::vector<int> unreachable; // free cells that no placement of any shape covers
-    std::vector<int> untiled;     // reachable cells the greedy fill had to leave uncovered
+    // Reachable cells left uncovered: size % 4 per piece at the least (four cells a tile),
+    // more where the greedy fill had to take over.
+    std::vector<int> untiled;
     int freeCells = 0;
     int pieces = 0;             // connected pieces of reachable cells
-    int piecesTiledExactly = 0; // pieces tiled completely by the backtracking
+    int piecesTiledExactly = 0; // pieces the backtracking solved (leaving only size % 4)
     long long nodes = 0;        // placements tried by the backtracking
 };
 

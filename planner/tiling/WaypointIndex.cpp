@@ -66,6 +66,8 @@ template <class Visit> void WaypointIndex::visitRing(int bx, int by, int r, Visi
 
 std::vector<int> WaypointIndex::cheapestMoves(int from, int count) const {
     std::vector<std::pair<double, int>> best; // max-heap of the cheapest `count`
+    if (count <= 0)
+        return {};
     const int bucket = bucketOf(from);
     const int bx = bucket % nx_, by = bucket / nx_;
     const int maxRing = std::max(nx_, ny_);

@@ -7,8 +7,8 @@
 #include "tiling/TilingRobot.h"
 #include "tiling/TriangleGrid.h"
 
-#include <gtest/gtest.h>
 #include <cmath>
+#include <gtest/gtest.h>
 #include <set>
 
 using namespace fc;
@@ -112,8 +112,9 @@ TEST(TilingRobot, TableIsSymmetricWithNothingToDoForTheSameShape) {
                 const BlockRotation ba = blockRotation(Shape(b), Shape(a), k);
                 EXPECT_EQ(ab.first, ba.first);
                 EXPECT_EQ(ab.second, ba.second);
-                if (a == b)
+                if (a == b) {
                     EXPECT_EQ(ab.first + ab.second, 0.0);
+                }
             }
     EXPECT_TRUE(shapeFromName("curve") == Shape::Curve);
     EXPECT_FALSE(shapeFromName("hexagon"));
@@ -137,10 +138,11 @@ TEST(Polyabolo, EveryOrientationIsFourDistinctLatticeTriangles) {
         }
         EXPECT_EQ(cells.size(), 4u) << shapeName(o.shape);
     }
-    // Symmetric shapes have fewer distinct orientations; none has more than eight.
+    // Symmetric shapes have fewer distinct orientations (the square sits only around the
+    // lattice points where four right angles meet); none has more than eight.
     for (int s = 0; s < kShapeCount; ++s) {
         const auto orientations = shapeOrientations(Shape(s));
-        EXPECT_GE(orientations.size(), 2u);
+        EXPECT_GE(orientations.size(), Shape(s) == Shape::Square ? 1u : 2u) << s;
         EXPECT_LE(orientations.size(), 8u);
     }
 }
@@ -165,10 +167,12 @@ TEST(TriangleGrid, CellsCutByAnObstacleAreNotFree) {
     Plan slanted = rectanglePlan(2.0, 2.0);
     slanted.obstacles.push_back({{1.0, 0.4}, {1.6, 1.0}, {1.0, 1.6}, {0.4, 1.0}});
     const TriangleGrid cut = buildTriangleGrid(slanted, 0.25);
-    for (int cell = 0; cell < cut.cellCount(); ++cell)
-        if (cut.isFree(cell))
-            for (Vec2 v : cut.vertices(cell)) // no free cell reaches into the diamond
-                EXPECT_GE(std::abs(v.x - 1.0) + std::abs(v.y - 1.0), 0.6 - 1e-9);
+    for (int cell = 0; cell < cut.cellCount(); ++cell) {
+        if (!cut.isFree(cell))
+            continue;
+        for (Vec2 v : cut.vertices(cell)) // no free cell reaches into the diamond
+            EXPECT_GE(std::abs(v.x - 1.0) + std::abs(v.y - 1.0), 0.6 - 1e-9);
+    }
 }
 
 TEST(Tiling, RectangleIsTiledExactly) {
@@ -211,9 +215,11 @@ TEST_P(SamplePlanTiling, CompleteAndNonOverlapping) {
     expectCompleteAndDisjoint(grid, result);
     // The fallback may leave a few cells; it must stay a small share of the floor.
     EXPECT_LE(result.untiled.size() + result.unreachable.size(), 0.01 * result.freeCells)
-        << result.untiled.size() << " untiled, " << result.unreachable.size() << " unreachable";
+        << result.untiled.size() << " untiled, " << result.unreachable.size() << " unreachable, "
+        << result.piecesTiledExactly << "/" << result.pieces << " pieces exact, " << result.nodes
+        << " nodes, " << result.freeCells << " free cells";
 }
 
 INSTANTIATE_TEST_SUITE_P(Plans, SamplePlanTiling,
                          ::testing::Values("simple", "simple-diamond", "room-obstacle",
-                                           "room-notches", "office"));
+                                           "room-notches", "office", "ward"));
