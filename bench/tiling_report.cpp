@@ -53,7 +53,17 @@ zigzag|spiral|greedy|aco|ga|exact [--out FILE.csv|FILE.json]`.
 * **Tiling** (`Tiling.cpp`): exact backtracking per connected piece (the lowest uncovered
   cell must be covered by a placement anchored there), 2,000,000 placements per piece; a
   piece without an exact tiling within the budget (or whose cell count is not a multiple of
-  4) gets a greedy fill with one-step look-ahead, which may leave cells untiled.
+  4) gets a greedy fill with one-step look-ahead, which may leave cells untiled. Placements
+  are tried in order of how far they reach in scan order, so where rectangles fill a row
+  the tiling is all rectangles; other shapes appear along slanted walls.
+* **Headings**: the lattice's diagonals alternate, so a rectangle at an odd position is the
+  half-turned rectangle (heading pi). Orders that run along a row (zigzag, spiral) therefore
+  pay a half turn between neighbours; energy-driven orders avoid it.
+* **Searches**: ACO is Ant Colony System (10 ants, 12 candidate moves per waypoint, q0 0.9,
+  beta 3, rho 0.1, about 3e5 / n iterations, at least 10); the greedy tour only sets the
+  initial pheromone. GA: 40 tours (the greedy, zigzag and spiral tours among them), order
+  crossover, inversion or swap mutation, tournament of 3, 2 elites. Both are seeded (seed 1
+  here) and deterministic. No local search (2-opt) polishes any method.
 )";
 
 struct Options {
@@ -90,7 +100,7 @@ void reportMethods(const std::string& name, TilingPlan plan) {
         if (solver == "exact")
             continue; // far above its limit on a whole floor
         orderTiles(plan, solver, 1);
-        std::printf("| %s | %.2f | %.2f | %.2f | %.2f | %.2f | %d | %.3f |\n", solver.c_str(),
+        std::printf("| %s | %.2f | %.2f | %.2f | %.2f | %.2f | %d | %.4f |\n", solver.c_str(),
                     plan.length, plan.energy.total(), plan.energy.translation,
                     plan.energy.transformation, plan.energy.orientation, plan.shapeChanges,
                     plan.orderingSeconds);
