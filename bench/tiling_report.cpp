@@ -3,6 +3,7 @@
 // running time per method) and measures gaps to the Held-Karp optimum on random small
 // instances.   floorcover-tiling-report [--instances N] [PLAN_NAME...] > docs/tiling.md
 #include "formats/PlanIO.h"
+#include "learning/ppo/PpoOrdering.h"
 #include "tiling/RandomInstances.h"
 #include "tiling/TilingPlanner.h"
 
@@ -155,6 +156,7 @@ int main(int argc, char** argv) {
     }
     if (!plans.empty())
         options.plans = plans;
+    registerPpoOrdering();
     std::printf("%s", kHeader);
     std::vector<std::pair<std::string, TilingPlan>> tiled;
     std::printf(
@@ -170,5 +172,18 @@ int main(int argc, char** argv) {
     for (const auto& [name, plan] : tiled)
         reportMethods(name, plan);
     reportGaps(options.instances);
+    const std::vector<double> curve = ppoTrainingCurve(1);
+    if (curve.size() >= 20) {
+        auto mean = [&curve](std::size_t from, std::size_t to) {
+            double sum = 0.0;
+            for (std::size_t k = from; k < to; ++k)
+                sum += curve[k];
+            return sum / static_cast<double>(to - from);
+        };
+        std::printf(
+            "\n`ppo` training (seed 1, %zu updates of 64 random 20-waypoint instances): mean "
+            "sampled tour cost %.2f over the first 10 updates, %.2f over the last 10.\n",
+            curve.size(), mean(0, 10), mean(curve.size() - 10, curve.size()));
+    }
     return 0;
 }

@@ -32,7 +32,7 @@ commands:
                 after the current episode and saves what was learnt
   tile PLAN     tiling robot: tile the floor with its five shapes and order the tiles by
                 energy; prints one JSON line (energy, length, shape_changes, waypoints,
-                seconds); [--solver zigzag|spiral|greedy|aco|ga|exact] [--seed N]
+                seconds); [--solver zigzag|spiral|greedy|aco|ga|exact|ppo] [--seed N]
                 [--block-leg M] [--block-masses M1,M2,M3,M4] [--out FILE.csv|FILE.json]
 
 PLAN is a GeoJSON floor plan (.geojson) or a FloorCover project (.fcproj).

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <map>
 #include <numeric>
 
 namespace fc::tiling {
@@ -176,8 +177,23 @@ Tour orderExact(const OrderingProblem& problem) {
     return tour;
 }
 
-const std::vector<std::string>& orderingSolverNames() {
-    static const std::vector<std::string> names{"zigzag", "spiral", "greedy", "aco", "ga", "exact"};
+namespace {
+
+std::map<std::string, OrderingMethod>& registeredMethods() {
+    static std::map<std::string, OrderingMethod> methods;
+    return methods;
+}
+
+} // namespace
+
+void registerOrderingMethod(const std::string& name, OrderingMethod method) {
+    registeredMethods()[name] = std::move(method);
+}
+
+std::vector<std::string> orderingSolverNames() {
+    std::vector<std::string> names{"zigzag", "spiral", "greedy", "aco", "ga", "exact"};
+    for (const auto& entry : registeredMethods())
+        names.push_back(entry.first);
     return names;
 }
 
@@ -200,8 +216,13 @@ Tour solveOrdering(const std::string& solver, const OrderingProblem& problem, st
     }
     if (solver == "exact")
         return orderExact(problem);
-    throw InputError("unknown tiling solver \"" + solver +
-                     "\" (zigzag, spiral, greedy, aco, ga, exact)");
+    const auto registered = registeredMethods().find(solver);
+    if (registered != registeredMethods().end())
+        return registered->second(problem, seed);
+    std::string known;
+    for (const std::string& name : orderingSolverNames())
+        known += (known.empty() ? "" : ", ") + name;
+    throw InputError("unknown tiling solver \"" + solver + "\" (" + known + ")");
 }
 
 } // namespace fc::tiling

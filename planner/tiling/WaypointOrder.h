@@ -7,6 +7,7 @@
 #include "tiling/TilingRobot.h"
 
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -65,7 +66,12 @@ Tour orderGenetic(const OrderingProblem& problem, const GeneticOptions& options 
 constexpr int kExactLimit = 16;
 Tour orderExact(const OrderingProblem& problem);
 
-const std::vector<std::string>& orderingSolverNames();
+// Methods from outside the core (e.g. "ppo", which needs LibTorch) register themselves here.
+using OrderingMethod = std::function<Tour(const OrderingProblem&, std::uint64_t seed)>;
+void registerOrderingMethod(const std::string& name, OrderingMethod method);
+
+// The built-in methods, then the registered ones.
+std::vector<std::string> orderingSolverNames();
 // Throws InputError for an unknown solver name.
 Tour solveOrdering(const std::string& solver, const OrderingProblem& problem, std::uint64_t seed);
 
