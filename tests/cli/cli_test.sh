@@ -159,7 +159,7 @@ assert list(m.keys())[:len(keys)] == keys, m.keys()
 assert m["waypoints"] > 100 and m["energy"] > 0 and m["length"] > 0, m
 PY
 }
-for solver in zigzag spiral greedy aco ga; do
+for solver in zigzag spiral greedy aco ga ppo; do
   check "tile simple $solver" cli tile "$plans/simple.geojson" --solver "$solver"
   check "tile metrics $solver" tile_metrics_ok
 done

@@ -3,9 +3,8 @@
 #include "learning/torch/PointerPpo.h"
 #include "tiling/RandomInstances.h"
 
-#include <gtest/gtest.h>
-
 #include <cmath>
+#include <gtest/gtest.h>
 
 using namespace fc;
 
