@@ -103,6 +103,17 @@ std::string waypointsToFormat(const std::string& path, const TilingPlan& plan) {
                             {"heading", headingDegrees(pose)}});
         }
         j["waypoints"] = list;
+        // Where the robot cannot clean: centres of the cells no shape reaches or left untiled.
+        auto centres = [&plan](const std::vector<int>& cells) {
+            nlohmann::json points = nlohmann::json::array();
+            for (int cell : cells) {
+                const Vec2 c = plan.grid.centroid(cell);
+                points.push_back({c.x, c.y});
+            }
+            return points;
+        };
+        j["unreachable_cells"] = centres(plan.tiling.unreachable);
+        j["untiled_cells"] = centres(plan.tiling.untiled);
         return j.dump(1) + "\n";
     }
     throw InputError("unsupported waypoint file \"" + path + "\" (use .csv or .json)");

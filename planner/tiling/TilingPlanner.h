@@ -42,7 +42,8 @@ void orderTiles(TilingPlan& plan, const std::string& solver, std::uint64_t seed)
 // One JSON line: energy, length, shape_changes, waypoints, seconds, then details.
 std::string tilingMetricsJson(const TilingPlan& plan);
 // The ordered waypoints (x, y, shape, heading in degrees), by the file's extension:
-// .csv or .json; throws InputError for another extension.
+// .csv or .json (which also lists the centres of unreachable and untiled cells); throws
+// InputError for another extension.
 std::string waypointsToFormat(const std::string& path, const TilingPlan& plan);
 
 } // namespace fc::tiling

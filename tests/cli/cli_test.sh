@@ -165,11 +165,11 @@ for solver in zigzag spiral greedy aco ga ppo; do
 done
 check "tile waypoints csv" "$cli" tile "$plans/simple-diamond.geojson" --solver greedy --out "$work/tiles.csv"
 check "tile csv header" grep -q '^x,y,shape,heading$' "$work/tiles.csv"
-check "tile waypoints json" "$cli" tile "$plans/simple.geojson" --out "$work/tiles.json"
-check "tile json lists shapes" python3 -c "
+check "tile waypoints json" "$cli" tile "$plans/simple-diamond.geojson" --out "$work/tiles.json"
+check "tile json lists shapes and left cells" python3 -c "
 import json; d=json.load(open('$work/tiles.json'))
 assert {w['shape'] for w in d['waypoints']} <= {'rectangle','triangle','parallelogram','curve','square'}
-assert len(d['waypoints']) > 100"
+assert len(d['waypoints']) > 100 and len(d['untiled_cells']) >= 2 and 'unreachable_cells' in d"
 a=$("$cli" tile "$plans/simple.geojson" --solver aco --seed 4 | python3 -c "import json,sys; print(json.load(sys.stdin)['energy'])")
 b=$("$cli" tile "$plans/simple.geojson" --solver aco --seed 4 | python3 -c "import json,sys; print(json.load(sys.stdin)['energy'])")
 check "tile aco deterministic per seed" test "$a" = "$b"
