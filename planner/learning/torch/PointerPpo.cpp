@@ -180,13 +180,17 @@ void PointerPpo::train(int updates,
                 tour.push_back(static_cast<int>(chosen[k][s]));
             const double cost = tiling::tourCost(problems[k], tour);
             meanCost += cost / o.batch;
-            rewards[k] = static_cast<float>(-cost / costScale(problems[k]));
+            // Per waypoint, so rewards are of order one whatever the instance size.
+            rewards[k] = static_cast<float>(-cost / costScale(problems[k]) / problems[k].size());
         }
         double criticLoss = 0.0;
         for (int epoch = 0; epoch < o.epochsPerBatch; ++epoch) {
             const torch::Tensor logp = m.actor->run(x, tours, false).second;
             const torch::Tensor value = m.critic->forward(x);
-            const torch::Tensor advantage = rewards - value.detach();
+            // Normalised per batch: the critic's early errors must not swamp the actor's step
+            // (both share one gradient clip).
+            torch::Tensor advantage = rewards - value.detach();
+            advantage = (advantage - advantage.mean()) / (advantage.std() + 1e-8);
             const torch::Tensor ratio = torch::exp(logp - oldLogp);
             const torch::Tensor clipped = torch::clamp(ratio, 1.0 - o.clip, 1.0 + o.clip);
             const torch::Tensor actorLoss =
