@@ -5,6 +5,7 @@
 
 #include <cmath>
 #include <gtest/gtest.h>
+#include <string>
 
 using namespace fc;
 
@@ -42,4 +43,17 @@ TEST(PointerPpo, SameSeedSameTours) {
     second.train(2);
     const tiling::OrderingProblem problem = tiling::randomOrderingProblem(25, 3);
     EXPECT_EQ(first.decode(problem), second.decode(problem));
+}
+
+TEST(PointerPpo, SavedActorDecodesTheSame) {
+    PointerPpo trained(tinyOptions());
+    trained.train(2);
+    const std::string path = ::testing::TempDir() + "/pointer-ppo.pt";
+    trained.save(path);
+    PointerPpoOptions other = tinyOptions();
+    other.seed = 99; // different initial weights, replaced by the loaded ones
+    PointerPpo loaded(other);
+    loaded.load(path);
+    const tiling::OrderingProblem problem = tiling::randomOrderingProblem(25, 4);
+    EXPECT_EQ(trained.decode(problem), loaded.decode(problem));
 }
