@@ -51,12 +51,14 @@ zigzag|spiral|greedy|aco|ga|exact|ppo [--out FILE.csv|FILE.json]`.
   kg m ("cost weight"), as the paper's Table 3.
 * **Tour**: closed, as Eq. 5, starting at the tile whose lowest cell comes first in row order.
   The waypoint is the centre of block 2; "distance" is waypoint to waypoint.
-* **Tiling** (`Tiling.cpp`): exact backtracking per connected piece (the lowest uncovered
-  cell must be covered by a placement anchored there), 2,000,000 placements per piece; a
-  piece without an exact tiling within the budget (or whose cell count is not a multiple of
-  4) gets a greedy fill with one-step look-ahead, which may leave cells untiled. Placements
-  are tried in order of how far they reach in scan order, so where rectangles fill a row
-  the tiling is all rectangles; other shapes appear along slanted walls.
+* **Tiling** (`Tiling.cpp`): backtracking per connected piece (the lowest uncovered cell
+  must be covered by a placement anchored there; a placement that leaves a neighbouring cell
+  with no fitting placement is rejected at once), 2,000,000 placements per piece. A piece of
+  n cells may leave n % 4 of them out (four cells a tile). A piece the search does not solve
+  within the budget gets a greedy fill with one-step look-ahead, which may leave more cells
+  untiled. Placements are tried in order of how far they reach in scan order, so where
+  rectangles fill a row the tiling is all rectangles; other shapes appear along slanted
+  walls.
 * **Headings**: the lattice's diagonals alternate, so a rectangle at an odd position is the
   half-turned rectangle (heading pi). Orders that run along a row (zigzag, spiral) therefore
   pay a half turn between neighbours; energy-driven orders avoid it.
@@ -68,7 +70,8 @@ zigzag|spiral|greedy|aco|ga|exact|ppo [--out FILE.csv|FILE.json]`.
 * **PPO** (`learning/torch/PointerPpo.cpp`, the paper's Section 4.2): pointer network with an
   LSTM encoder and an LSTM decoder with additive attention (hidden 64), a critic with the
   same encoder, a glimpse and two layers; PPO clipped objective (epsilon 0.2, 4 passes per
-  batch), Adam 1e-3, reward = -tour cost / (total mass x instance size). Trained on first use
+  batch), Adam 1e-3, reward = -tour cost / (total mass x instance size x waypoints),
+  advantages normalised per batch. Trained on first use
   per seed on 150 batches of 64 random 20-waypoint instances (one thread, the first call's
   time includes it), then decoded greedily. Features: position scaled to the instance,
   heading (cos, sin), shape one-hot. The paper trained far longer; this budget keeps one CLI
