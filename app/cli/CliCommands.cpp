@@ -35,6 +35,10 @@ commands:
                 [--seed N] [--setting improved|paper] [--resume] [--evaluate-every N]
                 and the robot and --angle options above; prints progress; Ctrl-C stops
                 after the current episode and saves what was learnt
+  tile PLAN     tiling robot: tile the floor with its five shapes and order the tiles by
+                energy; prints one JSON line (energy, length, shape_changes, waypoints,
+                seconds); [--solver zigzag|spiral|greedy|aco|ga|exact|ppo] [--seed N]
+                [--block-leg M] [--block-masses M1,M2,M3,M4] [--out FILE.csv|FILE.json]
 
 PLAN is a GeoJSON floor plan (.geojson) or a FloorCover project (.fcproj).
 Exit codes: 0 success, 2 bad input (one line on stderr), 1 internal error.
@@ -271,7 +275,9 @@ int run(int argc, char** argv) {
             return commandCompare(args);
         if (command == "train")
             return commandTrain(args);
-        throw InputError("unknown command \"" + command + "\" (plan, graph, compare, train)");
+        if (command == "tile")
+            return commandTile(args);
+        throw InputError("unknown command \"" + command + "\" (plan, graph, compare, train, tile)");
     } catch (const InputError& e) {
         std::cerr << "floorcover-cli: error: " << e.what() << std::endl;
         return 2;

@@ -18,5 +18,6 @@ PlanRequest requestFrom(const Project& project, const Arguments& args);
 const std::string& planPath(const Arguments& args);
 
 int commandTrain(const Arguments& args);
+int commandTile(const Arguments& args); // TileCommand.cpp: the tiling robot
 
 } // namespace fc::cli

@@ -164,5 +164,38 @@ check "train without --out is bad input" test $? -eq 2
 check "train on a missing plan is bad input" test $? -eq 2
 check "no model written for a missing plan" test ! -e "$work/x.fcdqn"
 
+# The tiling robot: one JSON line of metrics per solver, waypoint export, refusals.
+tile_metrics_ok() { # the last tile JSON line: the issue's keys first, every tile visited
+  python3 - "$work/last" <<'PY'
+import json, sys
+m = json.loads(open(sys.argv[1]).read().strip().splitlines()[-1])
+keys = ["energy", "length", "shape_changes", "waypoints", "seconds"]
+assert list(m.keys())[:len(keys)] == keys, m.keys()
+assert m["waypoints"] > 100 and m["energy"] > 0 and m["length"] > 0, m
+PY
+}
+for solver in zigzag spiral greedy aco ga ppo; do
+  check "tile simple $solver" cli tile "$plans/simple.geojson" --solver "$solver"
+  check "tile metrics $solver" tile_metrics_ok
+done
+check "tile waypoints csv" "$cli" tile "$plans/simple-diamond.geojson" --solver greedy --out "$work/tiles.csv"
+check "tile csv header" grep -q '^x,y,shape,heading$' "$work/tiles.csv"
+check "tile waypoints json" "$cli" tile "$plans/simple-diamond.geojson" --out "$work/tiles.json"
+check "tile json lists shapes and left cells" python3 -c "
+import json; d=json.load(open('$work/tiles.json'))
+assert {w['shape'] for w in d['waypoints']} <= {'rectangle','triangle','parallelogram','curve','square'}
+assert len(d['waypoints']) > 100 and len(d['untiled_cells']) >= 2 and 'unreachable_cells' in d"
+a=$("$cli" tile "$plans/simple.geojson" --solver aco --seed 4 | python3 -c "import json,sys; print(json.load(sys.stdin)['energy'])")
+b=$("$cli" tile "$plans/simple.geojson" --solver aco --seed 4 | python3 -c "import json,sys; print(json.load(sys.stdin)['energy'])")
+check "tile aco deterministic per seed" test "$a" = "$b"
+for bad in "--solver nonsense" "--solver exact" "--block-leg -1" "--block-masses 1,2,3" "--out $work/tiles.txt"; do
+  # shellcheck disable=SC2086
+  "$cli" tile "$plans/simple.geojson" $bad >"$work/out" 2>"$work/err"
+  rc=$?
+  check "tile refuses $bad" test "$rc" -eq 2 -a "$(wc -l <"$work/err")" -eq 1
+done
+"$cli" tile "$work/missing.geojson" >"$work/out" 2>"$work/err"
+check "tile on a missing plan is bad input" test $? -eq 2
+
 echo "$passed passed, $failed failed"
 [ "$failed" -eq 0 ]

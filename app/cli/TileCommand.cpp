@@ -1,0 +1,49 @@
+// floorcover-cli tile: the reconfigurable tiling robot (seeds/001). Tiles the floor with the
+// robot's shapes, orders the tiles by energy and prints one JSON line of metrics.
+#include "CliCommon.h"
+#include "tiling/TilingPlanner.h"
+
+#include <iostream>
+
+namespace fc::cli {
+
+int commandTile(const Arguments& args) {
+    args.allowOnly({"--solver", "--out", "--seed", "--block-leg", "--block-masses"});
+    const std::string& path = planPath(args);
+    const Project project = loadProjectFile(path);
+    tiling::TilingRequest request;
+    request.plan = project.plan;
+    request.solver = args.text("--solver").value_or("greedy");
+    if (auto seed = args.integer("--seed"))
+        request.seed = static_cast<std::uint64_t>(*seed);
+    if (auto leg = args.number("--block-leg"))
+        request.robot.blockLeg = *leg;
+    if (args.has("--block-masses")) {
+        const std::vector<std::string> masses = args.list("--block-masses");
+        if (masses.size() != tiling::kBlockCount)
+            throw InputError("--block-masses needs four masses M1,M2,M3,M4 (kg)");
+        for (int b = 0; b < tiling::kBlockCount; ++b) {
+            try {
+                request.robot.blockMass[b] = std::stod(masses[b]);
+            } catch (const std::exception&) {
+                throw InputError("--block-masses: \"" + masses[b] + "\" is not a number");
+            }
+        }
+    }
+    tiling::TilingPlan plan;
+    try {
+        plan = tiling::planTiling(request);
+        if (auto out = args.text("--out"))
+            writeFileAtomically(*out, tiling::waypointsToFormat(*out, plan));
+    } catch (const InputError& e) {
+        throw InputError(path + ": " + e.what());
+    }
+    if (!plan.tiling.unreachable.empty() || !plan.tiling.untiled.empty())
+        std::cerr << "floorcover-cli: warning: " << path << ": " << plan.tiling.unreachable.size()
+                  << " free cells no shape can reach, " << plan.tiling.untiled.size()
+                  << " left untiled\n";
+    std::cout << tiling::tilingMetricsJson(plan) << std::endl;
+    return 0;
+}
+
+} // namespace fc::cli
