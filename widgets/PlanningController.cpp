@@ -28,20 +28,6 @@ template <typename T, typename Job> Outcome<T> capture(const Job& job) {
     return outcome;
 }
 
-PlanRequest requestFor(const Project& project) {
-    PlanRequest request;
-    request.plan = project.plan;
-    request.robot = project.robot;
-    request.sweep = project.sweep;
-    request.solver = project.solver;
-    request.rooms = project.selectedRooms;
-    if (project.hasStart)
-        request.start = project.start;
-    if (project.hasEnd)
-        request.end = project.end;
-    return request;
-}
-
 } // namespace
 
 PlanningController::PlanningController(QObject* parent)
@@ -145,7 +131,7 @@ void PlanningController::startPrepare() {
 void PlanningController::plan() {
     if (!document_)
         return;
-    PlanRequest request = requestFor(document_->project());
+    PlanRequest request = planRequestFor(document_->project());
     request.modelPath = modelPath_;
     const quint64 generation = ++planGeneration_;
     *latestPlan_ = generation;

@@ -63,16 +63,7 @@ const std::vector<std::string> kPlanOptions{"--width",
 
 // A request from the project file's settings, overridden by command-line options.
 PlanRequest requestFrom(const Project& project, const Arguments& args) {
-    PlanRequest r;
-    r.plan = project.plan;
-    r.robot = project.robot;
-    r.sweep = project.sweep;
-    r.solver = project.solver;
-    r.rooms = project.selectedRooms;
-    if (project.hasStart)
-        r.start = project.start;
-    if (project.hasEnd)
-        r.end = project.end;
+    PlanRequest r = planRequestFor(project);
     if (auto w = args.number("--width")) {
         r.robot.coverageWidth = *w;
         // Keep L <= W <= D when only W is given; explicit values are validated as given.

@@ -122,6 +122,20 @@ Query makeQuery(const PreparedPlan& prepared, const std::vector<std::string>& ro
     return q;
 }
 
+PlanRequest planRequestFor(const Project& project) {
+    PlanRequest request;
+    request.plan = project.plan;
+    request.robot = project.robot;
+    request.sweep = project.sweep;
+    request.solver = project.solver;
+    request.rooms = project.selectedRooms;
+    if (project.hasStart)
+        request.start = project.start;
+    if (project.hasEnd)
+        request.end = project.end;
+    return request;
+}
+
 std::vector<std::string> solverNames() {
     std::vector<std::string> names{"exact", "heuristic", "greedy", "reeb-cpp", "adjacency-ga"};
     for (const std::string& name : registeredSolverNames())

@@ -3,6 +3,7 @@
 #pragma once
 
 #include "decomposition/Decomposition.h"
+#include "formats/PlanIO.h"
 #include "graph/CornerGraph.h"
 #include "metrics/Metrics.h"
 #include "model/Plan.h"
@@ -27,6 +28,9 @@ struct PlanRequest {
     std::string modelPath; // for learnt solvers
     bool transitionCells = true;
 };
+
+// The request a project file describes (its plan, robot, sweep, solver, rooms, start, end).
+PlanRequest planRequestFor(const Project& project);
 
 // Plan -> validated plan -> decomposition -> corner graph.
 struct PreparedPlan {
