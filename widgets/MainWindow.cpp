@@ -2,6 +2,7 @@
 
 #include "Autosaver.h"
 #include "CanvasView.h"
+#include "CompareDialog.h"
 #include "Document.h"
 #include "DocumentFiles.h"
 #include "LegendDock.h"
@@ -112,6 +113,14 @@ void MainWindow::createMenus() {
 
     QMenu* planMenu = menuBar()->addMenu(tr("&Plan"));
     QAction* plan = planMenu->addAction(tr("&Plan Path"), planner_, &PlanningController::plan);
+    planMenu->addAction(tr("&Compare Solvers…"), this, [this] {
+        PlanRequest request = planRequestFor(document_->project());
+        request.modelPath = planner_->modelPath();
+        auto* dialog = new CompareDialog(std::move(request), this);
+        dialog->setAttribute(Qt::WA_DeleteOnClose);
+        dialog->show();
+        dialog->start();
+    });
     plan->setShortcut(Qt::Key_F5);
 
     QMenu* help = menuBar()->addMenu(tr("&Help"));

@@ -42,10 +42,11 @@ public:
     // Plans synchronously in the event loop's sense: starts plan() and waits for it.
     // Returns false (message in errorMessage()) on failure or after timeoutMs.
     bool planAndWait(int timeoutMs = 60000);
+    // The trained model solver "dqn" plans with (empty: none).
+    const std::string& modelPath() const { return modelPath_; }
 
 public slots:
     void plan();
-    // The trained model solver "dqn" plans with (empty: none).
     void setModelPath(const QString& path) { modelPath_ = path.toStdString(); }
     void schedulePrepare(); // debounced: several edits in a row run the planner once
 

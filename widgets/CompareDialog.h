@@ -1,0 +1,60 @@
+// Plan > Compare Solvers (issue 6): every solver, the paper's baselines included, on the same
+// plan, robot, start, end and rooms, planned off the GUI thread; a table of the SPEC's
+// metrics and planning time, the paper's ratios against each baseline, and the paths side
+// by side with their overlaps in blue.
+#pragma once
+
+#include "pipeline/Planner.h"
+
+#include <QDialog>
+#include <QFutureWatcher>
+#include <QImage>
+#include <QString>
+#include <vector>
+
+class QGridLayout;
+class QLabel;
+class QTableWidget;
+
+namespace fc::ui {
+
+struct SolverRun {
+    std::string solver;
+    std::optional<PlanResult> result;
+    std::string error; // set when the solver refused
+};
+
+class CompareDialog : public QDialog {
+    Q_OBJECT
+public:
+    // dqn is compared only when the request names a model.
+    explicit CompareDialog(PlanRequest request, QWidget* parent = nullptr);
+    ~CompareDialog() override;
+
+    void start();
+    bool runAndWait(int timeoutMs = 120000); // for tests
+    const std::vector<SolverRun>& runs() const { return runs_; }
+    QTableWidget* table() const { return table_; }
+    QString ratiosText() const;
+    QImage pathImage(std::size_t index) const { return images_.at(index); }
+
+    // The plan's walls with the path in dark red and its overlaps in blue.
+    static QImage renderPath(const Plan& plan, const PlanResult& result, QSize size);
+
+signals:
+    void finished();
+
+private:
+    void showRuns();
+
+    PlanRequest request_;
+    std::vector<SolverRun> runs_;
+    std::vector<QImage> images_;
+    QFutureWatcher<std::vector<SolverRun>> watcher_;
+    QTableWidget* table_;
+    QLabel* ratios_;
+    QLabel* status_;
+    QGridLayout* paths_;
+};
+
+} // namespace fc::ui
