@@ -13,6 +13,57 @@
     </message>
 </context>
 <context>
+    <name>fc::ui::CompareDialog</name>
+    <message>
+        <source>Planning with every solver…</source>
+        <translation>Planung mit jedem Löser…</translation>
+    </message>
+    <message>
+        <source>Compare Solvers</source>
+        <translation>Löser vergleichen</translation>
+    </message>
+    <message>
+        <source>Solver</source>
+        <translation>Löser</translation>
+    </message>
+    <message>
+        <source>Length (m)</source>
+        <translation>Länge (m)</translation>
+    </message>
+    <message>
+        <source>Extra (m)</source>
+        <translation>Zusätzlich (m)</translation>
+    </message>
+    <message>
+        <source>Turns</source>
+        <translation>Wendungen</translation>
+    </message>
+    <message>
+        <source>Coverage</source>
+        <translation>Abdeckung</translation>
+    </message>
+    <message>
+        <source>Time (s)</source>
+        <translation>Zeit (s)</translation>
+    </message>
+    <message>
+        <source>Planning (s)</source>
+        <translation>Planung (s)</translation>
+    </message>
+    <message>
+        <source>refused: %1</source>
+        <translation>abgelehnt: %1</translation>
+    </message>
+    <message>
+        <source>%1 against %2: extra distance %3 %, turns %4 % (paper: %5)</source>
+        <translation>%1 gegenüber %2: Zusatzstrecke %3 %, Wendungen %4 % (Artikel: %5)</translation>
+    </message>
+    <message>
+        <source>%1 of %2 solvers answered; overlaps are drawn in blue.</source>
+        <translation>%1 von %2 Lösern haben geantwortet; Überlappungen sind blau gezeichnet.</translation>
+    </message>
+</context>
+<context>
     <name>fc::ui::Document</name>
     <message>
         <source>Untitled</source>
@@ -458,6 +509,10 @@ Abdeckungspfadplanung für Reinigungs- und Desinfektionsroboter.</translation>
     <message>
         <source>History</source>
         <translation>Verlauf</translation>
+    </message>
+    <message>
+        <source>&amp;Compare Solvers…</source>
+        <translation>Löser &amp;vergleichen…</translation>
     </message>
 </context>
 <context>

@@ -13,6 +13,57 @@
     </message>
 </context>
 <context>
+    <name>fc::ui::CompareDialog</name>
+    <message>
+        <source>Planning with every solver…</source>
+        <translation>Planification avec chaque solveur…</translation>
+    </message>
+    <message>
+        <source>Compare Solvers</source>
+        <translation>Comparer les solveurs</translation>
+    </message>
+    <message>
+        <source>Solver</source>
+        <translation>Solveur</translation>
+    </message>
+    <message>
+        <source>Length (m)</source>
+        <translation>Longueur (m)</translation>
+    </message>
+    <message>
+        <source>Extra (m)</source>
+        <translation>Supplément (m)</translation>
+    </message>
+    <message>
+        <source>Turns</source>
+        <translation>Virages</translation>
+    </message>
+    <message>
+        <source>Coverage</source>
+        <translation>Couverture</translation>
+    </message>
+    <message>
+        <source>Time (s)</source>
+        <translation>Durée (s)</translation>
+    </message>
+    <message>
+        <source>Planning (s)</source>
+        <translation>Planification (s)</translation>
+    </message>
+    <message>
+        <source>refused: %1</source>
+        <translation>refusé : %1</translation>
+    </message>
+    <message>
+        <source>%1 against %2: extra distance %3 %, turns %4 % (paper: %5)</source>
+        <translation>%1 face à %2 : distance supplémentaire %3 %, virages %4 % (article : %5)</translation>
+    </message>
+    <message>
+        <source>%1 of %2 solvers answered; overlaps are drawn in blue.</source>
+        <translation>%1 solveurs sur %2 ont répondu ; les recouvrements sont tracés en bleu.</translation>
+    </message>
+</context>
+<context>
     <name>fc::ui::Document</name>
     <message>
         <source>Untitled</source>
@@ -458,6 +509,10 @@ Planification de trajets de couverture pour robots de nettoyage et de désinfect
     <message>
         <source>History</source>
         <translation>Historique</translation>
+    </message>
+    <message>
+        <source>&amp;Compare Solvers…</source>
+        <translation>&amp;Comparer les solveurs…</translation>
     </message>
 </context>
 <context>
