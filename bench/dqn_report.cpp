@@ -109,7 +109,6 @@ double threadCpuSeconds() {
     return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
 }
 
-
 struct FinalFigures {
     int queries = 0, failures = 0, exactReferences = 0;
     double meanGap = 0, maxGap = 0, meanRefinedGap = 0, maxRefinedGap = 0, greedyGap = 0;

@@ -21,7 +21,8 @@ int main(int argc, char** argv) {
         qputenv("QT_QPA_PLATFORM", "offscreen");
     QApplication app(argc, argv);
     fc::registerDqnSolver();
-    const QString plan = argc > 1 ? QString(argv[1]) : QStringLiteral(FC_PLANS_DIR "/office.geojson");
+    const QString plan =
+        argc > 1 ? QString(argv[1]) : QStringLiteral(FC_PLANS_DIR "/office.geojson");
     const double seconds = argc > 2 ? std::atof(argv[2]) : 20.0;
 
     fc::ui::MainWindow window;
@@ -42,9 +43,8 @@ int main(int argc, char** argv) {
 
     std::vector<double> gaps;
     std::vector<double> replots;
-    QObject::connect(dock->plot(), &QCustomPlot::afterReplot, [&] {
-        replots.push_back(dock->plot()->replotTime(false));
-    });
+    QObject::connect(dock->plot(), &QCustomPlot::afterReplot,
+                     [&] { replots.push_back(dock->plot()->replotTime(false)); });
     dock->start();
     QElapsedTimer clock;
     clock.start();
@@ -56,7 +56,8 @@ int main(int argc, char** argv) {
         const double gap = 1e-6 * static_cast<double>(now - last);
         gaps.push_back(gap);
         if (gap > 50.0)
-            std::printf("frame over 50 ms: %.1f ms at %.2f s\n", gap, 1e-9 * static_cast<double>(now));
+            std::printf("frame over 50 ms: %.1f ms at %.2f s\n", gap,
+                        1e-9 * static_cast<double>(now));
         last = now;
         if (clock.elapsed() >= seconds * 1000.0) {
             dock->stop();
