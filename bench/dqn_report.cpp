@@ -5,7 +5,8 @@
 //                         [--settings paper,improved,improved+gamma=1,...] --out DIR
 // A setting is "paper" or "improved", optionally followed by "+key=value" changes (an
 // ablation): mask=0|1, reward=paper|cost, nstep=N, gamma=G, lr=R, eps=STEPS, net=paper|small,
-// refine=none|corners|local-search, sync=STEPS, batch=N, features=0|1.
+// refine=none|corners|local-search, sync=STEPS, batch=N, features=0|1, conv=C (all three
+// layers), hidden=N.
 // Writes DIR/curves-<case>-<setting>.csv and prints a Markdown table (docs/dqn.md). Time is
 // the training thread's CPU time, so a busy machine does not change the figures.
 #include "formats/PlanIO.h"
@@ -90,7 +91,12 @@ TrainingOptions settingOptions(const std::string& setting, std::uint64_t seed) {
             o.agent.conv2Channels = from.conv2Channels;
             o.agent.conv3Channels = from.conv3Channels;
             o.agent.hiddenUnits = from.hiddenUnits;
-        } else if (key == "features")
+        } else if (key == "conv")
+            o.agent.conv1Channels = o.agent.conv2Channels = o.agent.conv3Channels =
+                std::stoi(value);
+        else if (key == "hidden")
+            o.agent.hiddenUnits = std::stoi(value);
+        else if (key == "features")
             o.environment.costChannels = value == "1";
         else if (key == "refine")
             o.refinement = refinementFromName(value);
