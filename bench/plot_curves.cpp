@@ -7,6 +7,7 @@
 #include <QTextStream>
 #include <cstdio>
 #include <qcustomplot.h>
+#include <stdexcept>
 
 namespace {
 
@@ -14,28 +15,41 @@ struct Curve {
     QVector<double> episode, seconds, reward, average, gapEpisode, gapSeconds, gap;
 };
 
+// Throws std::runtime_error for a missing file or a malformed number, so that a broken run
+// never becomes a plausible-looking figure.
 Curve readCurve(const QString& path) {
     Curve c;
     QFile file(path);
     if (!file.open(QIODevice::ReadOnly | QIODevice::Text))
-        return c;
+        throw std::runtime_error("cannot read " + path.toStdString());
     QTextStream in(&file);
     in.readLine(); // header
+    int line = 1;
+    auto value = [&](const QString& field) {
+        bool ok = false;
+        const double v = field.toDouble(&ok);
+        if (!ok)
+            throw std::runtime_error(path.toStdString() + ":" + std::to_string(line) +
+                                     ": not a number: " + field.toStdString());
+        return v;
+    };
     while (!in.atEnd()) {
+        ++line;
         const QStringList f = in.readLine().split(',');
-        if (f.size() < 8)
-            continue;
-        const double episode = f[0].toDouble(), seconds = f[1].toDouble();
-        if (!f[3].isEmpty()) {
+        if (f.size() != 8)
+            throw std::runtime_error(path.toStdString() + ":" + std::to_string(line) +
+                                     ": expected 8 fields");
+        const double episode = value(f[0]), seconds = value(f[1]);
+        if (!f[3].isEmpty()) { // a training episode (the last row only has the final gap)
             c.episode << episode;
             c.seconds << seconds;
-            c.reward << f[2].toDouble();
-            c.average << f[3].toDouble();
+            c.reward << value(f[2]);
+            c.average << value(f[3]);
         }
-        if (!f[6].isEmpty()) {
+        if (!f[6].isEmpty()) { // an evaluation of the policy
             c.gapEpisode << episode;
             c.gapSeconds << seconds;
-            c.gap << 100.0 * f[6].toDouble();
+            c.gap << 100.0 * value(f[6]);
         }
     }
     return c;
@@ -70,8 +84,14 @@ int main(int argc, char** argv) {
     const QString dir = argv[1];
     const QColor paperColor(0xd9, 0x5f, 0x02), improvedColor(0x1b, 0x9e, 0x77);
     for (const QString& name : QString(argv[2]).split(',')) {
-        const Curve paper = readCurve(dir + "/curves-" + name + "-paper.csv");
-        const Curve improved = readCurve(dir + "/curves-" + name + "-improved.csv");
+        Curve paper, improved;
+        try {
+            paper = readCurve(dir + "/curves-" + name + "-paper.csv");
+            improved = readCurve(dir + "/curves-" + name + "-improved.csv");
+        } catch (const std::exception& e) {
+            std::fprintf(stderr, "floorcover-plot-curves: %s\n", e.what());
+            return 2;
+        }
         QCustomPlot plot;
         plot.setAutoAddPlottableToLegend(false); // each panel has its own legend
         plot.plotLayout()->clear();
@@ -99,12 +119,11 @@ int main(int argc, char** argv) {
             addLine(reward, reward->axis(QCPAxis::atRight),
                     bySeconds ? improved.seconds : improved.episode, improved.average,
                     improvedColor, "improved", plot);
-            reward->axis(QCPAxis::atBottom)
-                ->setRange(0, std::max(bySeconds ? paper.seconds.value(paper.seconds.size() - 1)
-                                                 : paper.episode.value(paper.episode.size() - 1),
-                                       bySeconds
-                                           ? improved.seconds.value(improved.seconds.size() - 1)
-                                           : improved.episode.value(improved.episode.size() - 1)));
+            auto lastX = [bySeconds](const Curve& c) {
+                const QVector<double>& x = bySeconds ? c.seconds : c.episode;
+                return x.isEmpty() ? 0.0 : x.back();
+            };
+            reward->axis(QCPAxis::atBottom)->setRange(0, std::max(lastX(paper), lastX(improved)));
             // Gap of the greedy policy (no refinement) to the reference solver.
             auto* gap = new QCPAxisRect(&plot);
             grid->addElement(1, column, gap);

@@ -221,7 +221,7 @@ StepResult CoverageEnvironment::step(int action) {
     StepResult result;
     const bool inRange = action >= 0 && action < static_cast<int>(g.nodes.size());
     const int cell = inRange ? g.nodes[action].cell : -1;
-    const bool valid = cell >= 0 && !covered_[cell] && transitCost_[action] < kInfinity;
+    const bool valid = inRange && isValidAction(action);
     if (!valid) {
         result.reward = options_.doubleCoverageReward;
     } else {
@@ -282,10 +282,9 @@ std::vector<float> CoverageEnvironment::observation() const {
         auto feature = [unit](double cost) {
             return static_cast<float>(cost < kInfinity ? std::min(cost / unit, 1.0) : 1.0);
         };
-        const std::vector<char> mask = actionMask();
         for (const GraphNode& n : graph_->nodes) {
             const auto id = static_cast<std::size_t>(n.id);
-            if (mask[id])
+            if (isValidAction(n.id)) // without building the whole mask on every step
                 image[3 * plane + id] = feature(transitCost_[id]);
             image[4 * plane + id] = feature(costToEnd_[id]);
         }
@@ -298,8 +297,13 @@ std::vector<char> CoverageEnvironment::actionMask() const {
     if (done_)
         return mask;
     for (const GraphNode& n : graph_->nodes)
-        mask[n.id] = n.cell >= 0 && !covered_[n.cell] && transitCost_[n.id] < kInfinity;
+        mask[n.id] = isValidAction(n.id);
     return mask;
+}
+
+bool CoverageEnvironment::isValidAction(int node) const {
+    const int cell = graph_->nodes[static_cast<std::size_t>(node)].cell;
+    return cell >= 0 && !covered_[cell] && transitCost_[node] < kInfinity;
 }
 
 } // namespace fc

@@ -107,6 +107,7 @@ private:
     void appendTransitTo(int node);
     std::vector<char> componentOf(int node) const;
     double costReward(double graphCost) const;
+    bool isValidAction(int node) const; // a corner of an uncovered required cell, reachable
 
     const CornerGraph* graph_;
     EnvironmentOptions options_;

@@ -1,6 +1,7 @@
 // The Double-DQN agent (SPEC sect. 5): the target arithmetic by hand, the network's output
 // shape on a real corner graph, masked acting, and a short reproducible training run.
 #include "../planner/TestGraphs.h"
+#include "SmallNetwork.h"
 #include "decomposition/Decomposition.h"
 #include "graph/CornerGraph.h"
 #include "learning/CoverageEnvironment.h"
@@ -22,14 +23,8 @@ namespace {
 // Small network and schedule so that the tests run in seconds.
 DqnHyperParameters smallParameters(std::uint64_t seed) {
     DqnHyperParameters p;
-    p.conv1Channels = 8;
-    p.conv2Channels = 8;
-    p.conv3Channels = 8;
-    p.hiddenUnits = 32;
-    p.batchSize = 16;
+    shrinkForTests(p);
     p.replayCapacity = 1000;
-    p.learningStarts = 50;
-    p.targetSyncInterval = 100;
     p.epsilonDecaySteps = 200;
     p.seed = seed;
     return p;

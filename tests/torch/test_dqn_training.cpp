@@ -1,5 +1,6 @@
 // The Double-DQN planner end to end below the CLI: training loop, model file, refusal of a
 // mismatched or broken model, masked inference, the "dqn" solver in the pipeline.
+#include "SmallNetwork.h"
 #include "formats/PlanIO.h"
 #include "learning/dqn/DqnModelFile.h"
 #include "learning/dqn/DqnPolicy.h"
@@ -25,14 +26,9 @@ PreparedPlan prepared(const std::string& name) {
 
 // A small network and schedule, so that a test trains in a second or two.
 TrainingOptions smallOptions(TrainingOptions options) {
-    DqnHyperParameters& p = options.agent;
-    p.conv1Channels = p.conv2Channels = p.conv3Channels = 8;
-    p.hiddenUnits = 32;
-    p.batchSize = 16;
-    p.replayCapacity = 2000;
-    p.learningStarts = 50;
-    p.targetSyncInterval = 100;
-    p.epsilonDecaySteps = 300;
+    fc::test::shrinkForTests(options.agent);
+    options.agent.replayCapacity = 2000;
+    options.agent.epsilonDecaySteps = 300;
     return options;
 }
 
