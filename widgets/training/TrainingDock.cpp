@@ -94,7 +94,6 @@ void TrainingDock::buildUi() {
     plot_->legend->setVisible(true);
     plot_->legend->setFont(QFont(font().family(), 8));
     plot_->axisRect()->insetLayout()->setInsetAlignment(0, Qt::AlignBottom | Qt::AlignRight);
-    const QPalette palette = plot_->palette();
     QCPGraph* reward = plot_->addGraph();
     reward->setName(tr("Episode reward"));
     reward->setLineStyle(QCPGraph::lsNone);
@@ -129,7 +128,6 @@ void TrainingDock::buildUi() {
     connect(stopButton_, &QPushButton::clicked, this, &TrainingDock::stop);
     connect(saveButton_, &QPushButton::clicked, this, &TrainingDock::saveWithDialog);
     connect(loadButton_, &QPushButton::clicked, this, &TrainingDock::loadWithDialog);
-    Q_UNUSED(palette);
 }
 
 void TrainingDock::setPreparedPlan(std::shared_ptr<const PreparedPlan> prepared) {
