@@ -21,6 +21,8 @@ enum class PartKind { Solid, DoorLeaf, Space };
 struct Part {
     std::string node;  // the node's name as assimp gives it
     std::string label; // display name (IfcSpace: LongName, else Name)
+    std::string owner; // the element the mesh belongs to: the nearest ancestor (or the node
+                       // itself) that is not an assimp helper node ("$Rel...", IfcMappedItem)
     PartKind kind = PartKind::Solid;
     int storey = 0; // index into BuildingModel::storeys
     std::vector<Triangle> triangles;
@@ -35,7 +37,7 @@ struct BuildingModel {
     std::string format;             // "ifc", "obj", "gltf", "glb", "stl"
     std::vector<Storey> storeys;    // lowest first
     std::vector<Part> parts;        // in node order
-    std::vector<std::string> nodes; // names of nodes holding meshes, in file order
+    std::vector<std::string> nodes; // owners of meshes (see Part::owner), in file order
     bool unitless = true;           // false for IFC (assimp converts to metres)
 };
 

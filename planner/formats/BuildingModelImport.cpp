@@ -42,9 +42,14 @@ std::string withoutSpaces(std::string s) {
     return s;
 }
 
+// Layer entries name a node, its owning element or its label; "Prefix*" matches by prefix.
 bool listed(const std::vector<std::string>& names, const Part& part) {
     return std::any_of(names.begin(), names.end(), [&](const std::string& name) {
-        return name == part.node || name == part.label;
+        if (!name.empty() && name.back() == '*') {
+            const std::string prefix = name.substr(0, name.size() - 1);
+            return part.node.rfind(prefix, 0) == 0 || part.owner.rfind(prefix, 0) == 0;
+        }
+        return name == part.node || name == part.owner || name == part.label;
     });
 }
 

@@ -69,9 +69,10 @@ struct Walker {
     }
 
     void addMesh(const aiNode& node, const aiMesh& mesh, const aiMatrix4x4& world, PartKind kind,
-                 int storey) {
+                 int storey, const std::string& owner) {
         Part part;
         part.node = node.mName.C_Str();
+        part.owner = owner;
         part.kind = kind;
         part.storey = storey;
         part.label = ifc ? ifcLabel(part.node, kind == PartKind::Space) : part.node;
@@ -100,11 +101,13 @@ struct Walker {
     }
 
     void walk(const aiNode& node, const aiMatrix4x4& parent, int storey, PartKind kind,
-              int depth) {
+              std::string owner, int depth) {
         if (depth > kMaxNodeDepth)
             throw InputError("the node tree is deeper than " + std::to_string(kMaxNodeDepth));
         const aiMatrix4x4 world = parent * node.mTransformation;
         const std::string name = node.mName.C_Str();
+        if (owner.empty() || !(startsWith(name, "$") || startsWith(name, "IfcMappedItem")))
+            owner = name;
         if (ifc) {
             if (startsWith(name, "IfcOpeningElement_"))
                 return; // voids, already cut from their walls
@@ -118,15 +121,15 @@ struct Walker {
                 kind = PartKind::DoorLeaf;
             }
         }
-        if (node.mNumMeshes > 0 && seenNodes.insert(name).second)
-            model.nodes.push_back(name);
+        if (node.mNumMeshes > 0 && seenNodes.insert(owner).second)
+            model.nodes.push_back(owner);
         for (unsigned i = 0; i < node.mNumMeshes; ++i) {
             if (node.mMeshes[i] >= scene.mNumMeshes)
                 throw InputError("node \"" + name + "\" refers to a missing mesh");
-            addMesh(node, *scene.mMeshes[node.mMeshes[i]], world, kind, storey);
+            addMesh(node, *scene.mMeshes[node.mMeshes[i]], world, kind, storey, owner);
         }
         for (unsigned c = 0; c < node.mNumChildren; ++c)
-            walk(*node.mChildren[c], world, storey, kind, depth + 1);
+            walk(*node.mChildren[c], world, storey, kind, owner, depth + 1);
     }
 };
 
@@ -171,7 +174,7 @@ BuildingModel loadBuildingModel(const Source& source, UpAxis up, double metresPe
         else
             walker.ifcNames = readIfcNames(readFile(source.path));
     }
-    walker.walk(*scene->mRootNode, aiMatrix4x4(), -1, PartKind::Solid, 0);
+    walker.walk(*scene->mRootNode, aiMatrix4x4(), -1, PartKind::Solid, "", 0);
     BuildingModel& model = walker.model;
     if (model.parts.empty())
         throw InputError("the model holds no triangles");
