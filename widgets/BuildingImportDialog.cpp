@@ -25,12 +25,13 @@ struct UnitChoice {
     const char* label;
     double metresPerUnit; // 0: the file's own unit
 };
-const UnitChoice kUnits[] = {{QT_TRANSLATE_NOOP("fc::ui::BuildingImportDialog", "File's unit"), 0},
-                             {QT_TRANSLATE_NOOP("fc::ui::BuildingImportDialog", "Metres"), 1},
-                             {QT_TRANSLATE_NOOP("fc::ui::BuildingImportDialog", "Centimetres"), 0.01},
-                             {QT_TRANSLATE_NOOP("fc::ui::BuildingImportDialog", "Millimetres"), 0.001},
-                             {QT_TRANSLATE_NOOP("fc::ui::BuildingImportDialog", "Feet"), 0.3048},
-                             {QT_TRANSLATE_NOOP("fc::ui::BuildingImportDialog", "Inches"), 0.0254}};
+const UnitChoice kUnits[] = {
+    {QT_TRANSLATE_NOOP("fc::ui::BuildingImportDialog", "File's unit"), 0},
+    {QT_TRANSLATE_NOOP("fc::ui::BuildingImportDialog", "Metres"), 1},
+    {QT_TRANSLATE_NOOP("fc::ui::BuildingImportDialog", "Centimetres"), 0.01},
+    {QT_TRANSLATE_NOOP("fc::ui::BuildingImportDialog", "Millimetres"), 0.001},
+    {QT_TRANSLATE_NOOP("fc::ui::BuildingImportDialog", "Feet"), 0.3048},
+    {QT_TRANSLATE_NOOP("fc::ui::BuildingImportDialog", "Inches"), 0.0254}};
 
 } // namespace
 
@@ -119,8 +120,8 @@ void BuildingImportDialog::refresh() {
         const Plan& plan = result_->project.plan;
         for (const std::string& warning : result_->warnings)
             warnings_->addItem(QString::fromStdString(warning));
-        status_->setText(tr("%1 obstacles, %2 rooms").arg(plan.obstacles.size()).arg(
-            plan.rooms.size()));
+        status_->setText(
+            tr("%1 obstacles, %2 rooms").arg(plan.obstacles.size()).arg(plan.rooms.size()));
         drawPlan(plan);
     } catch (const InputError& e) {
         result_.reset();

@@ -182,8 +182,8 @@ void checkFile(const std::string& path) {
     if (size == 0)
         throw InputError("the file is empty");
     if (size > kMaxBuildingModelBytes)
-        throw InputError("the file is larger than " +
-                         std::to_string(kMaxBuildingModelBytes >> 20) + " MiB");
+        throw InputError("the file is larger than " + std::to_string(kMaxBuildingModelBytes >> 20) +
+                         " MiB");
 }
 
 } // namespace
@@ -196,9 +196,8 @@ ImportResult importBuildingModel(const std::string& path, const ImportOptions& o
                                  const BuildingModelSettings& settings) {
     try {
         checkFile(path);
-        const BuildingModel model =
-            loadBuildingModel({nullptr, 0, path, extensionOf(path)}, settings.up,
-                              unitScale(options));
+        const BuildingModel model = loadBuildingModel({nullptr, 0, path, extensionOf(path)},
+                                                      settings.up, unitScale(options));
         return sliceModel(model, options, fs::path(path).stem().string());
     } catch (...) {
         throw InputError(rethrowMessage(path + ": "));
@@ -222,8 +221,7 @@ ImportResult importBuildingModelFromMemory(const void* data, std::size_t size,
     }
 }
 
-ImportPreview previewBuildingModel(const std::string& path,
-                                   const BuildingModelSettings& settings) {
+ImportPreview previewBuildingModel(const std::string& path, const BuildingModelSettings& settings) {
     try {
         checkFile(path);
         const BuildingModel model =

@@ -1,15 +1,16 @@
 // Loading a 3D building model with assimp into plan coordinates (see BuildingModel.h).
 #include "formats/BuildingModel.h"
 #include "formats/IfcNames.h"
-#include "formats/PlanIO.h"
+#include "model/Plan.h"
 
+#include <algorithm>
 #include <assimp/Importer.hpp>
 #include <assimp/config.h>
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
-
-#include <algorithm>
 #include <cmath>
+#include <fstream>
+#include <iterator>
 #include <limits>
 #include <map>
 #include <set>
@@ -133,6 +134,11 @@ struct Walker {
     }
 };
 
+std::string fileText(const std::string& path) { // size already checked by the caller
+    std::ifstream in(path, std::ios::binary);
+    return std::string(std::istreambuf_iterator<char>(in), {});
+}
+
 bool isYUp(const std::string& extension, UpAxis up) {
     if (up != UpAxis::Automatic)
         return up == UpAxis::Y;
@@ -152,13 +158,12 @@ BuildingModel loadBuildingModel(const Source& source, UpAxis up, double metresPe
     const unsigned flags = aiProcess_Triangulate | aiProcess_JoinIdenticalVertices |
                            aiProcess_SortByPType | aiProcess_ValidateDataStructure;
     const aiScene* scene =
-        source.data ? importer.ReadFileFromMemory(source.data, source.size, flags,
-                                                  source.extension.c_str())
-                    : importer.ReadFile(source.path, flags);
+        source.data
+            ? importer.ReadFileFromMemory(source.data, source.size, flags, source.extension.c_str())
+            : importer.ReadFile(source.path, flags);
     if (!scene)
         throw InputError("cannot read the model: " + firstLine(importer.GetErrorString()));
-    if (!scene->mRootNode || scene->mNumMeshes == 0 ||
-        (scene->mFlags & AI_SCENE_FLAGS_INCOMPLETE))
+    if (!scene->mRootNode || scene->mNumMeshes == 0 || (scene->mFlags & AI_SCENE_FLAGS_INCOMPLETE))
         throw InputError("the model holds no meshes");
 
     Walker walker(*scene);
@@ -169,10 +174,10 @@ BuildingModel loadBuildingModel(const Source& source, UpAxis up, double metresPe
     walker.model.unitless = !walker.ifc;
     if (walker.ifc) {
         if (source.data)
-            walker.ifcNames = readIfcNames(
-                std::string(static_cast<const char*>(source.data), source.size));
+            walker.ifcNames =
+                readIfcNames(std::string(static_cast<const char*>(source.data), source.size));
         else
-            walker.ifcNames = readIfcNames(readFile(source.path));
+            walker.ifcNames = readIfcNames(fileText(source.path));
     }
     walker.walk(*scene->mRootNode, aiMatrix4x4(), -1, PartKind::Solid, "", 0);
     BuildingModel& model = walker.model;

@@ -11,7 +11,6 @@
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 #include <CGAL/Snap_rounding_2.h>
 #include <CGAL/Snap_rounding_traits_2.h>
-
 #include <algorithm>
 #include <cmath>
 #include <deque>
@@ -107,8 +106,8 @@ void buildSection(Section& section, const std::vector<SectionSegment>& segments)
     size_t index = 0;
     for (const auto& polyline : snapped) {
         const int solid = solidOf[std::min(index++, solidOf.size() - 1)];
-        for (auto p = polyline.begin(), q = std::next(p); p != polyline.end() && q != polyline.end();
-             ++p, ++q)
+        for (auto p = polyline.begin(), q = std::next(p);
+             p != polyline.end() && q != polyline.end(); ++p, ++q)
             if (*p != *q)
                 curves.emplace_back(SegmentTraits::Curve_2(*p, *q), SolidIds{solid});
     }

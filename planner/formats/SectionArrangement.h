@@ -21,9 +21,9 @@ struct SectionSegment {
 };
 
 struct Region {
-    Ring outer;               // counter-clockwise
-    std::vector<Ring> holes;  // clockwise
-    double area = 0;          // outer minus holes, m^2
+    Ring outer;              // counter-clockwise
+    std::vector<Ring> holes; // clockwise
+    double area = 0;         // outer minus holes, m^2
 };
 
 struct FreeSpace {

@@ -1,7 +1,9 @@
 // Small 3D building models written by the tests (and the fuzzer's seeds): cuboids saved as
-// Wavefront OBJ (Y-up, one group per cuboid) or ASCII STL (Z-up).
+// Wavefront OBJ (Y-up, one group per cuboid), ASCII STL (Z-up) or binary glTF (Y-up).
 #pragma once
 
+#include <algorithm>
+#include <cstdint>
 #include <fstream>
 #include <sstream>
 #include <string>
@@ -17,12 +19,9 @@ struct Cuboid {
 // A 10 m x 6 m room (inside) with 0.2 m walls 2.5 m high, a 0.5 m square pillar in the middle,
 // and a room volume "kitchen" (its last cuboid): free area 60 - 0.25 = 59.75 m^2.
 inline std::vector<Cuboid> pillarRoom() {
-    return {{"wall-south", -0.2, -0.2, 0, 10.2, 0, 2.5},
-            {"wall-north", -0.2, 6, 0, 10.2, 6.2, 2.5},
-            {"wall-west", -0.2, 0, 0, 0, 6, 2.5},
-            {"wall-east", 10, 0, 0, 10.2, 6, 2.5},
-            {"pillar", 4.75, 2.75, 0, 5.25, 3.25, 2.5},
-            {"kitchen", 0, 0, 0, 10, 6, 2.5}};
+    return {{"wall-south", -0.2, -0.2, 0, 10.2, 0, 2.5}, {"wall-north", -0.2, 6, 0, 10.2, 6.2, 2.5},
+            {"wall-west", -0.2, 0, 0, 0, 6, 2.5},        {"wall-east", 10, 0, 0, 10.2, 6, 2.5},
+            {"pillar", 4.75, 2.75, 0, 5.25, 3.25, 2.5},  {"kitchen", 0, 0, 0, 10, 6, 2.5}};
 }
 
 // The 8 corners (plan x, plan y, height) and 12 outward-facing triangles of a cuboid.
@@ -65,6 +64,68 @@ inline std::string stlText(const std::vector<Cuboid>& cuboids) {
     }
     out << "endsolid building\n";
     return out.str();
+}
+
+// Binary glTF 2 (Y-up): one node and mesh per cuboid, float positions, uint32 indices.
+inline std::string glbBytes(const std::vector<Cuboid>& cuboids) {
+    std::string bin;
+    auto put = [&bin](const void* data, size_t size) {
+        bin.append(static_cast<const char*>(data), size);
+    };
+    std::ostringstream nodes, meshes, accessors, views;
+    for (size_t i = 0; i < cuboids.size(); ++i) {
+        const auto corners = cuboidCorners(cuboids[i]);
+        const size_t positions = bin.size();
+        float lo[3] = {1e30f, 1e30f, 1e30f}, hi[3] = {-1e30f, -1e30f, -1e30f};
+        for (const auto& p : corners) {
+            const float v[3] = {float(p[0]), float(p[2]), float(-p[1])};
+            for (int k = 0; k < 3; ++k) {
+                lo[k] = std::min(lo[k], v[k]);
+                hi[k] = std::max(hi[k], v[k]);
+            }
+            put(v, sizeof v);
+        }
+        const size_t indices = bin.size();
+        for (const auto& t : kCuboidTriangles)
+            for (int k : t) {
+                const uint32_t index = uint32_t(k);
+                put(&index, sizeof index);
+            }
+        const char* sep = i ? "," : "";
+        nodes << sep << "{\"name\":\"" << cuboids[i].name << "\",\"mesh\":" << i << "}";
+        meshes << sep << "{\"primitives\":[{\"attributes\":{\"POSITION\":" << 2 * i
+               << "},\"indices\":" << 2 * i + 1 << "}]}";
+        accessors << sep << "{\"bufferView\":" << 2 * i
+                  << ",\"componentType\":5126,\"count\":8,\"type\":\"VEC3\",\"min\":[" << lo[0]
+                  << "," << lo[1] << "," << lo[2] << "],\"max\":[" << hi[0] << "," << hi[1] << ","
+                  << hi[2] << "]},{\"bufferView\":" << 2 * i + 1
+                  << ",\"componentType\":5125,\"count\":36,\"type\":\"SCALAR\"}";
+        views << sep << "{\"buffer\":0,\"byteOffset\":" << positions
+              << ",\"byteLength\":96},{\"buffer\":0,\"byteOffset\":" << indices
+              << ",\"byteLength\":144}";
+    }
+    std::ostringstream json;
+    json << "{\"asset\":{\"version\":\"2.0\"},\"scene\":0,\"scenes\":[{\"nodes\":[";
+    for (size_t i = 0; i < cuboids.size(); ++i)
+        json << (i ? "," : "") << i;
+    json << "]}],\"nodes\":[" << nodes.str() << "],\"meshes\":[" << meshes.str()
+         << "],\"accessors\":[" << accessors.str() << "],\"bufferViews\":[" << views.str()
+         << "],\"buffers\":[{\"byteLength\":" << bin.size() << "}]}";
+    std::string text = json.str();
+    text.append((4 - text.size() % 4) % 4, ' ');
+    bin.append((4 - bin.size() % 4) % 4, '\0');
+    std::string glb;
+    auto word = [&glb](uint32_t value) { glb.append(reinterpret_cast<const char*>(&value), 4); };
+    word(0x46546C67); // "glTF"
+    word(2);
+    word(uint32_t(12 + 8 + text.size() + 8 + bin.size()));
+    word(uint32_t(text.size()));
+    word(0x4E4F534A); // "JSON"
+    glb += text;
+    word(uint32_t(bin.size()));
+    word(0x004E4942); // "BIN"
+    glb += bin;
+    return glb;
 }
 
 inline void writeText(const std::string& path, const std::string& text) {

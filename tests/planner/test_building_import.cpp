@@ -3,11 +3,11 @@
 #include "formats/BuildingModelImport.h"
 #include "model/Validation.h"
 
-#include <gtest/gtest.h>
-
 #include <algorithm>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <gtest/gtest.h>
 
 namespace fc {
 namespace {
@@ -92,6 +92,26 @@ TEST(BuildingImport, StlIsZUpAndScaledByMetresPerUnit) {
               std::string::npos);
 }
 
+// No building-like glTF ships with assimp-testmodels (boxes, a truck, an engine), so the room
+// is written as GLB here; assimp's BoxTextured.glb, a closed cube, encloses no floor.
+TEST(BuildingImport, GlbRoomAndTheTestModelsCube) {
+    const std::string path = tempPath("pillar-room.glb");
+    test::writeText(path, test::glbBytes(test::pillarRoom()));
+    ImportOptions options;
+    options.layers.rooms = {"kitchen"};
+    const Plan plan = importBuildingModel(path, options).project.plan;
+    EXPECT_NEAR(freeArea(plan), 59.75, 1e-9); // float coordinates, snapped to 0.1 mm
+    ASSERT_EQ(plan.rooms.size(), 1u);
+    EXPECT_EQ(plan.rooms[0].name, "kitchen");
+    const std::string cube = kModels + "/glTF2/BoxTextured-glTF-Binary/BoxTextured.glb";
+    if (!fs::exists(cube))
+        GTEST_SKIP() << "assimp-testmodels is not installed";
+    ImportOptions low;
+    low.sliceHeight = 0.5;
+    EXPECT_NE(errorOf([&] { importBuildingModel(cube, low); }).find("encloses no free space"),
+              std::string::npos);
+}
+
 TEST(BuildingImport, OneStoreyForNonIfcModelsWithTheFloorAtTheLowestPoint) {
     auto cuboids = withoutRoomVolume();
     cuboids.push_back({"slab", -0.2, -0.2, -0.3, 10.2, 6.2, 0});
@@ -141,8 +161,9 @@ TEST(BuildingImport, BadFilesGiveAClearError) {
     const std::string garbage = tempPath("garbage.glb");
     test::writeText(garbage, "glTF this is not a binary glTF container at all");
     EXPECT_NE(errorOf([&] { importBuildingModel(garbage, {}); }), "");
-    EXPECT_NE(errorOf([&] { importBuildingModel(tempPath("missing.obj"), {}); })
-                  .find("cannot read the file"),
+    EXPECT_NE(errorOf([&] {
+                  importBuildingModel(tempPath("missing.obj"), {});
+              }).find("cannot read the file"),
               std::string::npos);
     const std::string unknown = tempPath("plan.xyz");
     test::writeText(unknown, "1 2 3\n");
@@ -214,6 +235,12 @@ TEST(BuildingImport, FzkHausGroundFloor) {
     const ImportResult closed = importBuildingModel(kFzkHaus, doors);
     EXPECT_LT(freeArea(closed.project.plan), freeArea(plan) - 10.0);
     EXPECT_FALSE(closed.warnings.empty());
+    std::printf("FZK-Haus ground floor at 0.3 m: boundary %.2f m2, free %.2f m2, %zu obstacles, "
+                "%zu rooms (IfcSpaces %.2f m2); furniture ignored: free %.2f m2 (%+.2f %%); door "
+                "leaves closed: boundary %.2f m2, free %.2f m2\n",
+                ringArea(plan.boundary), freeArea(plan), plan.obstacles.size(), plan.rooms.size(),
+                spaces, freeArea(empty), 100 * (freeArea(empty) / spaces - 1),
+                ringArea(closed.project.plan.boundary), freeArea(closed.project.plan));
 }
 
 TEST(BuildingImport, FzkHausStoreysAndHeights) {
@@ -230,8 +257,9 @@ TEST(BuildingImport, FzkHausStoreysAndHeights) {
               std::string::npos);
     options.storey = "0.Erdgeschoss"; // spaces do not matter
     options.sliceHeight = 12.0;       // far above the roof
-    EXPECT_NE(errorOf([&] { importBuildingModel(kFzkHaus, options); })
-                  .find("AC14-FZK-Haus.ifc: no section at height 12 m"),
+    EXPECT_NE(errorOf([&] {
+                  importBuildingModel(kFzkHaus, options);
+              }).find("AC14-FZK-Haus.ifc: no section at height 12 m"),
               std::string::npos);
 }
 
