@@ -169,6 +169,10 @@ TEST(BuildingImport, BadFilesGiveAClearError) {
     test::writeText(unknown, "1 2 3\n");
     EXPECT_NE(errorOf([&] { importBuildingModel(unknown, {}); }).find("unsupported"),
               std::string::npos);
+    const std::string hostile = tempPath("hostile.obj");
+    test::writeText(hostile, "o huge\nv 0 0 0\nv 1e300 0 0\nv 0 1 1\nf 1 2 3\n");
+    EXPECT_NE(errorOf([&] { importBuildingModel(hostile, {}); }).find("huge coordinate"),
+              std::string::npos);
     ImportOptions badHeight;
     badHeight.sliceHeight = -1;
     const std::string obj = tempPath("height.obj");
