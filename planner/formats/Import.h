@@ -55,5 +55,8 @@ ImportResult importPlanFile(const std::string& path, const ImportOptions& option
 ImportPreview previewImport(const std::string& path);
 // The extensions importPlanFile accepts (lower case, without the dot).
 std::vector<std::string> importableExtensions();
+// The role a layer's name suggests when LayerMapping is empty: "boundary", "obstacles",
+// "rooms", "ignored", or "" (no guess: the geometric rule decides). See docs/formats.md.
+std::string guessLayerRole(const std::string& layer);
 
 } // namespace fc
