@@ -1,5 +1,5 @@
 // ROS map_server occupancy maps: the free pixels traced into polygons with GDAL's
-// polygonizer, opened by a quarter pixel (so that obstacles touching the wall at a corner
+// polygonizer, opened by a twentieth of a pixel (so that obstacles touching the wall at a corner
 // become part of it), simplified (Douglas-Peucker, topology kept) and placed in map
 // coordinates (origin + resolution, y up, rotated by the origin's yaw).
 #include "formats/ImportSupport.h"
@@ -22,6 +22,7 @@ using DatasetPtr = std::unique_ptr<GDALDataset, DatasetCloser>;
 using GeometryPtr = std::unique_ptr<OGRGeometry>;
 
 constexpr long long kMaxTracedPolygons = 200000;
+constexpr double kOpening = 0.05; // pixels
 
 // map_server's rule: p = (255 - grey) / 255 (or grey / 255 with negate); free below
 // free_thresh (trinary, scale; scale also needs an opaque pixel); raw: free where grey is 0.
@@ -167,17 +168,20 @@ ImportResult importRosMap(const std::string& yamlPath, const ImportOptions& opti
     const GreyImage image = extension == ".pgm" ? readPgm(readFile(imagePath.string()))
                                                 : readImageWithGdal(imagePath.string());
     GeometryPtr free = traceFree(image, freeMask(image, info));
-    // Opening by a quarter pixel: a hole touching the outline at a pixel corner joins it.
-    GeometryPtr opened(free->Buffer(-0.25, 2));
-    if (opened)
-        opened.reset(opened->Buffer(0.25, 2));
-    if (!opened || opened->IsEmpty())
-        throw InputError("the free space is thinner than a pixel everywhere");
+    // Douglas-Peucker on the pixel staircase (its corners exact), keeping the topology.
     const double tolerance = std::max(options.simplifyTolerance, 0.0) / info.resolution;
-    GeometryPtr simple(tolerance > 0 ? opened->SimplifyPreserveTopology(tolerance)
-                                     : opened->clone());
-    if (!simple)
+    if (tolerance > 0)
+        free.reset(free->SimplifyPreserveTopology(tolerance));
+    if (!free)
         throw InputError("simplifying the free space failed");
+    // Opening by a twentieth of a pixel: a hole touching the outline at a pixel corner joins
+    // it (the plan validation refuses rings that touch); convex corners are cut by 0.05
+    // pixel, a negligible area.
+    GeometryPtr simple(free->Buffer(-kOpening, 1));
+    if (simple)
+        simple.reset(simple->Buffer(kOpening, 1));
+    if (!simple || simple->IsEmpty())
+        throw InputError("the free space is thinner than a pixel everywhere");
     std::vector<Polygon2> polygons;
     collect(simple.get(), polygons);
     toMapFrame(polygons, image, info);
