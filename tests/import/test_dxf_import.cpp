@@ -77,6 +77,7 @@ TEST(DxfImport, LineAndArcPiecesChainIntoTheBoundary) {
     const double expected = expectedArea("rounded.dxf");
     EXPECT_NEAR(freeArea(r.project.plan), expected, 0.01 * expected);
     EXPECT_EQ(r.project.plan.obstacles.size(), 1u); // the closed POLYLINE inside
+    EXPECT_TRUE(hasWarning(r, "no $INSUNITS in the header: drawing units taken as metres"));
 }
 
 TEST(DxfImport, LayerNamesAreGuessed) {

@@ -12,8 +12,9 @@ office.dxf (millimetres, $INSUNITS=4)
   NOTES      two stray LINEs that close nothing
 free area = 200 + 12.5 pi - 2 (0.09 pi) - 0.72 - 0.18 - 1 - 2 m^2
 
-rounded.dxf (metres, $INSUNITS=6, everything on layer 0): a 10 x 6 m outline with 1 m
-rounded corners chained from LINE and ARC pieces, and a closed 2 x 1 m polyline inside.
+rounded.dxf (DXF R12, which has no $INSUNITS: read as metres with a warning; everything on
+layer 0): a 10 x 6 m outline with 1 m rounded corners chained from LINE and ARC pieces, and
+an old-style closed POLYLINE (VERTEX entities) 2 x 1 m inside.
 free area = 60 - (4 - pi) - 2 m^2
 
 The expected areas are written next to the files (expected.txt) from these formulas.
@@ -65,7 +66,6 @@ def office(path):
 
 def rounded(path):
     doc = ezdxf.new("R12")
-    doc.header["$INSUNITS"] = 6  # metres
     msp = doc.modelspace()
     w, h, r = 10.0, 6.0, 1.0
     msp.add_line((r, 0), (w - r, 0))
