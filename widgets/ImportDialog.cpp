@@ -39,13 +39,6 @@ QString roleLabel(const QString& role) {
     return ImportDialog::tr("Auto (by shape)");
 }
 
-double freeArea(const Plan& plan) {
-    double area = ringArea(plan.boundary);
-    for (const Ring& obstacle : plan.obstacles)
-        area -= ringArea(obstacle);
-    return area;
-}
-
 } // namespace
 
 ImportDialog::ImportDialog(const QString& path, QWidget* parent)
@@ -217,7 +210,7 @@ void ImportDialog::refresh() {
             warnings_->addItem(fromStd(w));
         const Plan& plan = result_->project.plan;
         summary_->setText(tr("Free area %1 m², %2 obstacles, %3 rooms")
-                              .arg(freeArea(plan), 0, 'f', 2)
+                              .arg(freeAreaOf(plan), 0, 'f', 2)
                               .arg(plan.obstacles.size())
                               .arg(plan.rooms.size()));
     } else {

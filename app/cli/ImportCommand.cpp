@@ -12,13 +12,6 @@ namespace fc::cli {
 
 namespace {
 
-double freeAreaOf(const Plan& plan) {
-    double area = ringArea(plan.boundary);
-    for (const Ring& obstacle : plan.obstacles)
-        area -= ringArea(obstacle);
-    return area;
-}
-
 std::string summaryLine(const std::string& format, const ImportResult& r) {
     const Plan& plan = r.project.plan;
     char areas[128];

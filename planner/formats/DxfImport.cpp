@@ -111,6 +111,7 @@ public:
             break;
         }
         case wkbMultiLineString:
+        case wkbMultiCurve:
         case wkbMultiPolygon:
         case wkbGeometryCollection:
         case wkbPolyhedralSurface:

@@ -18,13 +18,6 @@ namespace {
 
 const QString kOffice = QStringLiteral(FC_IMPORT_FIXTURES_DIR "/office.dxf");
 
-double freeArea(const fc::Plan& plan) {
-    double area = fc::ringArea(plan.boundary);
-    for (const fc::Ring& obstacle : plan.obstacles)
-        area -= fc::ringArea(obstacle);
-    return area;
-}
-
 double expectedOfficeArea() {
     std::ifstream in(FC_IMPORT_FIXTURES_DIR "/expected.txt");
     std::string name;
@@ -67,7 +60,7 @@ void ImportTest::dialogPreviewsLayersAndGuessesRoles() {
     QCOMPARE(dialog.result()->project.plan.obstacles.size(), size_t(6));
     QCOMPARE(dialog.result()->project.plan.rooms.size(), size_t(2));
     const double expected = expectedOfficeArea();
-    QVERIFY(std::abs(freeArea(dialog.result()->project.plan) - expected) < 0.01 * expected);
+    QVERIFY(std::abs(fc::freeAreaOf(dialog.result()->project.plan) - expected) < 0.01 * expected);
     QVERIFY(dialog.options().metresPerUnit && *dialog.options().metresPerUnit == 0.001);
     bool strayReported = false;
     for (const QString& w : dialog.warnings())

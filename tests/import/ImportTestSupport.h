@@ -11,10 +11,7 @@
 namespace fc::test {
 
 inline double freeArea(const Plan& plan) {
-    double area = ringArea(plan.boundary);
-    for (const Ring& obstacle : plan.obstacles)
-        area -= ringArea(obstacle);
-    return area;
+    return freeAreaOf(plan);
 }
 
 // A fresh folder under the system's temporary directory for one test.

@@ -161,6 +161,24 @@ TEST(DxfImport, CorruptAndTruncatedFilesGiveAnInputError) {
     EXPECT_THROW(importPlanFile((dir / "missing.dxf").string()), InputError);
 }
 
+TEST(DxfImport, HugeDrawingsStopAtALimitWithAClearError) {
+    const auto dir = test::scratchDir("dxf-huge");
+    std::string dxf = "0\nSECTION\n2\nHEADER\n9\n$INSUNITS\n70\n6\n0\nENDSEC\n"
+                      "0\nSECTION\n2\nENTITIES\n";
+    for (int i = 0; i <= 50000; ++i) { // disjoint lines: nothing chains
+        const std::string x = std::to_string(i * 10);
+        dxf += "0\nLINE\n8\nNOTES\n10\n" + x + "\n20\n0\n11\n" + x + "\n21\n1\n";
+    }
+    dxf += "0\nENDSEC\n0\nEOF\n";
+    const std::string path = test::writeText(dir / "huge.dxf", dxf);
+    try {
+        importPlanFile(path);
+        FAIL() << "imported";
+    } catch (const InputError& e) {
+        EXPECT_EQ(std::string(e.what()), path + ": more than 50000 open lines");
+    }
+}
+
 TEST(Import, BuildingModelsAreRefusedClearly) {
     const auto dir = test::scratchDir("model");
     const std::string path = test::writeText(dir / "house.ifc", "ISO-10303-21;");
