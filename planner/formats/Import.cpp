@@ -104,8 +104,18 @@ ImportResult importPlanFile(const std::string& path, const ImportOptions& option
         plan = normalizedPlan(plan);
         validatePlan(plan, result.project.robot);
         if (result.robotStartPose) {
-            result.project.hasStart = true;
-            result.project.start = *result.robotStartPose;
+            const Vec2 start = *result.robotStartPose;
+            const bool free = pointInRing(plan.boundary, start) &&
+                              std::none_of(plan.obstacles.begin(), plan.obstacles.end(),
+                                           [&](const Ring& o) { return pointInRing(o, start); });
+            if (free) {
+                result.project.hasStart = true;
+                result.project.start = start;
+            } else {
+                result.warnings.push_back("the start pose (" + std::to_string(start.x) + ", " +
+                                          std::to_string(start.y) +
+                                          ") is not in the free space; not used");
+            }
         }
         return result;
     } catch (const InputError& e) {

@@ -92,6 +92,18 @@ TEST(RosMap, AsciiPgmAndAmclPoseAndNegate) {
     EXPECT_DOUBLE_EQ(r.robotStartPose->x, 3.0);
 }
 
+TEST(RosMap, AStartPoseOutsideTheFreeSpaceIsReportedNotUsed) {
+    const auto dir = test::scratchDir("ros-start");
+    const Map map;
+    test::writeText(dir / "room.pgm", map.pgm(true));
+    // (1.0, 5.5) is in the pillar: x -2 + (50..70) * 0.05, y 1.5 + (126 - 50..126 - 40) * 0.05
+    const std::string path =
+        test::writeText(dir / "room.yaml", yaml("room.pgm", "start_pose: [1.0, 5.5, 0]\n"));
+    const ImportResult r = importPlanFile(path);
+    EXPECT_FALSE(r.project.hasStart);
+    EXPECT_NE(r.warnings.back().find("is not in the free space; not used"), std::string::npos);
+}
+
 TEST(RosMap, PngThroughGdal) {
     const auto dir = test::scratchDir("ros-png");
     Map map;
