@@ -1,7 +1,7 @@
 // 2D DXF through GDAL's OGR DXF driver (LWPOLYLINE, POLYLINE, LINE, ARC, CIRCLE, ELLIPSE,
 // SPLINE, INSERT with its transform, HATCH, TEXT/MTEXT). OGR ignores $INSUNITS: the HEADER
 // section is read here.
-#include "formats/ImportSupport.h"
+#include "formats/OgrSupport.h"
 
 #include <algorithm>
 #include <cmath>
@@ -52,11 +52,6 @@ int readInsunits(const std::string& path) {
     }
     return -1;
 }
-
-struct GdalCloser {
-    void operator()(GDALDataset* d) const { GDALClose(d); }
-};
-using DatasetPtr = std::unique_ptr<GDALDataset, GdalCloser>;
 
 DatasetPtr openDxf(const std::string& path) {
     ensureGdal();

@@ -1,19 +1,16 @@
 // From outlines to a plan with GEOS (through GDAL's OGR geometry): boundary minus the union
 // of the obstacles, so overlapping, duplicated (outline + hatch) or wall-touching obstacles
 // give one clean free-space polygon. Also the WKT importer.
-#include "formats/ImportSupport.h"
+#include "formats/OgrSupport.h"
 
 #include <algorithm>
 #include <memory>
-#include <ogr_geometry.h>
 #include <set>
 #include <sstream>
 
 namespace fc::importing {
 
 namespace {
-
-using GeometryPtr = std::unique_ptr<OGRGeometry>;
 
 OGRLinearRing* toOgrRing(const Ring& ring) {
     auto* out = new OGRLinearRing;
@@ -38,24 +35,6 @@ GeometryPtr polygonOf(const Ring& ring) {
         return polygon;
     GeometryPtr valid(polygon->MakeValid());
     return valid ? std::move(valid) : GeometryPtr(polygon->Buffer(0));
-}
-
-void collectPolygons(const OGRGeometry* g, std::vector<Polygon2>& out) {
-    if (!g || g->IsEmpty())
-        return;
-    const OGRwkbGeometryType type = wkbFlatten(g->getGeometryType());
-    if (type == wkbPolygon) {
-        const OGRPolygon* polygon = g->toPolygon();
-        Polygon2 p;
-        p.shell = fromOgrRing(*polygon->getExteriorRing());
-        for (int i = 0; i < polygon->getNumInteriorRings(); ++i)
-            p.holes.push_back(fromOgrRing(*polygon->getInteriorRing(i)));
-        out.push_back(std::move(p));
-    } else if (type == wkbMultiPolygon || type == wkbGeometryCollection) {
-        const OGRGeometryCollection* c = g->toGeometryCollection();
-        for (int i = 0; i < c->getNumGeometries(); ++i)
-            collectPolygons(c->getGeometryRef(i), out);
-    }
 }
 
 double areaOf(const Polygon2& p) {
@@ -83,6 +62,24 @@ std::string roomName(const Ring& outline, const std::vector<Label>& labels,
 }
 
 } // namespace
+
+void collectPolygons(const OGRGeometry* g, std::vector<Polygon2>& out) {
+    if (!g || g->IsEmpty())
+        return;
+    const OGRwkbGeometryType type = wkbFlatten(g->getGeometryType());
+    if (type == wkbPolygon) {
+        const OGRPolygon* polygon = g->toPolygon();
+        Polygon2 p;
+        p.shell = fromOgrRing(*polygon->getExteriorRing());
+        for (int i = 0; i < polygon->getNumInteriorRings(); ++i)
+            p.holes.push_back(fromOgrRing(*polygon->getInteriorRing(i)));
+        out.push_back(std::move(p));
+    } else if (type == wkbMultiPolygon || type == wkbGeometryCollection) {
+        const OGRGeometryCollection* c = g->toGeometryCollection();
+        for (int i = 0; i < c->getNumGeometries(); ++i)
+            collectPolygons(c->getGeometryRef(i), out);
+    }
+}
 
 Plan planFromPolygons(std::vector<Polygon2> polygons, const std::string& what,
                       std::vector<std::string>& warnings) {

@@ -2,7 +2,7 @@
 // polygonizer, opened by a twentieth of a pixel (so that obstacles touching the wall at a corner
 // become part of it), simplified (Douglas-Peucker, topology kept) and placed in map
 // coordinates (origin + resolution, y up, rotated by the origin's yaw).
-#include "formats/ImportSupport.h"
+#include "formats/OgrSupport.h"
 
 #include <cmath>
 #include <filesystem>
@@ -14,12 +14,6 @@
 namespace fc::importing {
 
 namespace {
-
-struct DatasetCloser {
-    void operator()(GDALDataset* d) const { GDALClose(d); }
-};
-using DatasetPtr = std::unique_ptr<GDALDataset, DatasetCloser>;
-using GeometryPtr = std::unique_ptr<OGRGeometry>;
 
 constexpr long long kMaxTracedPolygons = 200000;
 constexpr double kOpening = 0.05; // pixels
@@ -88,29 +82,6 @@ void toMapFrame(std::vector<Polygon2>& polygons, const GreyImage& image, const R
         for (Ring& hole : polygon.holes)
             for (Vec2& p : hole)
                 place(p);
-    }
-}
-
-void collect(const OGRGeometry* g, std::vector<Polygon2>& out) {
-    if (!g || g->IsEmpty())
-        return;
-    const OGRwkbGeometryType type = wkbFlatten(g->getGeometryType());
-    if (type == wkbPolygon) {
-        auto ring = [](const OGRLinearRing* r) {
-            Ring out;
-            for (int i = 0; i + 1 < r->getNumPoints(); ++i)
-                out.push_back({r->getX(i), r->getY(i)});
-            return out;
-        };
-        const OGRPolygon* polygon = g->toPolygon();
-        Polygon2 p{ring(polygon->getExteriorRing()), {}};
-        for (int i = 0; i < polygon->getNumInteriorRings(); ++i)
-            p.holes.push_back(ring(polygon->getInteriorRing(i)));
-        out.push_back(std::move(p));
-    } else if (type == wkbMultiPolygon || type == wkbGeometryCollection) {
-        const OGRGeometryCollection* c = g->toGeometryCollection();
-        for (int i = 0; i < c->getNumGeometries(); ++i)
-            collect(c->getGeometryRef(i), out);
     }
 }
 
@@ -183,7 +154,7 @@ ImportResult importRosMap(const std::string& yamlPath, const ImportOptions& opti
     if (!simple || simple->IsEmpty())
         throw InputError("the free space is thinner than a pixel everywhere");
     std::vector<Polygon2> polygons;
-    collect(simple.get(), polygons);
+    collectPolygons(simple.get(), polygons);
     toMapFrame(polygons, image, info);
     ImportResult result;
     result.project.plan = planFromPolygons(std::move(polygons), "free space", result.warnings);
