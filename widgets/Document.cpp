@@ -140,6 +140,13 @@ bool Document::pushChange(const Project& changed, unsigned changes, const QStrin
     return true;
 }
 
+bool Document::replaceProject(const Project& project, const QString& commandText) {
+    return pushChange(project,
+                      GeometryChange | RoomsChange | RobotChange | SweepChange | EndpointsChange |
+                          SolverChange,
+                      commandText);
+}
+
 void Document::applyProject(const Project& project, unsigned changes) {
     project_ = project;
     if (changes & GeometryChange)

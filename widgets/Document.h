@@ -83,6 +83,8 @@ public:
     bool setStart(std::optional<Vec2> start);
     bool setEnd(std::optional<Vec2> end);
     bool toggleRoomSelection(const QString& name);
+    // Replaces the whole project (File > Import into this document) as one undoable edit.
+    bool replaceProject(const Project& project, const QString& commandText);
 
     // Used by ProjectChangeCommand only: replaces the project and emits the signals.
     void applyProject(const Project& project, unsigned changes);

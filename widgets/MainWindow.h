@@ -4,6 +4,7 @@
 #pragma once
 
 #include "OverlayLayer.h"
+#include "formats/Import.h"
 
 #include <QMainWindow>
 #include <array>
@@ -51,6 +52,9 @@ public:
     // Replaces the document by the file's; on failure shows the message and keeps the
     // current document.
     bool openFile(const QString& path);
+    // File > Import without the dialog: the imported plan replaces the current document's
+    // (one undoable edit, robot settings kept) or opens as a new, unsaved document.
+    bool applyImport(const QString& path, const ImportResult& imported, bool asNewDocument);
     void openSample();
     void newDocument();
     bool saveFile(const QString& path);
@@ -93,6 +97,7 @@ private:
     bool save();
     bool saveAs();
     void openWithDialog();
+    void importWithDialog(); // MainWindowImport.cpp
     void exportPathWithDialog();
     void exportViewWithDialog(const QString& suffix);
     void addRecentFile(const QString& path);

@@ -49,6 +49,8 @@ void MainWindow::createFileMenu() {
         if (maybeSave())
             openSample();
     });
+    file->addAction(tr("&Import…"), QKeySequence(Qt::CTRL | Qt::Key_I), this,
+                    &MainWindow::importWithDialog);
     recentFilesMenu_ = file->addMenu(tr("Open &Recent"));
     updateRecentFilesMenu();
     file->addSeparator();

@@ -39,6 +39,11 @@ commands:
                 energy; prints one JSON line (energy, length, shape_changes, waypoints,
                 seconds); [--solver zigzag|spiral|greedy|aco|ga|exact|ppo] [--seed N]
                 [--block-leg M] [--block-masses M1,M2,M3,M4] [--out FILE.csv|FILE.json]
+  import FILE   import a DXF drawing, a ROS occupancy map (.yaml), WKT or GeoJSON as a plan:
+                --out PLAN.geojson|PLAN.fcproj [--boundary-layers A,B] [--obstacle-layers C]
+                [--room-layers D] [--ignore-layers E] [--units M_PER_UNIT] [--gap M]
+                [--simplify M] [--epsg N] [--storey S] [--height H]; warnings on stderr,
+                one JSON line (areas, obstacles, rooms, warnings, start) on stdout
 
 PLAN is a GeoJSON floor plan (.geojson) or a FloorCover project (.fcproj).
 Exit codes: 0 success, 2 bad input (one line on stderr), 1 internal error.
@@ -268,7 +273,10 @@ int run(int argc, char** argv) {
             return commandTrain(args);
         if (command == "tile")
             return commandTile(args);
-        throw InputError("unknown command \"" + command + "\" (plan, graph, compare, train, tile)");
+        if (command == "import")
+            return commandImport(args);
+        throw InputError("unknown command \"" + command +
+                         "\" (plan, graph, compare, train, tile, import)");
     } catch (const InputError& e) {
         std::cerr << "floorcover-cli: error: " << e.what() << std::endl;
         return 2;

@@ -18,6 +18,7 @@ PlanRequest requestFrom(const Project& project, const Arguments& args);
 const std::string& planPath(const Arguments& args);
 
 int commandTrain(const Arguments& args);
-int commandTile(const Arguments& args); // TileCommand.cpp: the tiling robot
+int commandTile(const Arguments& args);   // TileCommand.cpp: the tiling robot
+int commandImport(const Arguments& args); // ImportCommand.cpp: DXF, ROS maps, WKT to a plan
 
 } // namespace fc::cli

@@ -53,7 +53,13 @@ struct ImportResult {
 // Throws InputError("FILE: problem") for unreadable, corrupt, hostile or empty sources.
 ImportResult importPlanFile(const std::string& path, const ImportOptions& options = {});
 ImportPreview previewImport(const std::string& path);
+// Boundary area minus the obstacles' (which do not overlap in a valid plan), m^2.
+double freeAreaOf(const Plan& plan);
+
 // The extensions importPlanFile accepts (lower case, without the dot).
 std::vector<std::string> importableExtensions();
+// The role a layer's name suggests when LayerMapping is empty: "boundary", "obstacles",
+// "rooms", "ignored", or "" (no guess: the geometric rule decides). See docs/formats.md.
+std::string guessLayerRole(const std::string& layer);
 
 } // namespace fc

@@ -244,6 +244,65 @@
     </message>
 </context>
 <context>
+    <name>fc::ui::ImportDialog</name>
+    <message>
+        <source>Boundary</source>
+        <translation>Begrenzung</translation>
+    </message>
+    <message>
+        <source>Obstacles</source>
+        <translation>Hindernisse</translation>
+    </message>
+    <message>
+        <source>Rooms</source>
+        <translation>Räume</translation>
+    </message>
+    <message>
+        <source>Ignored</source>
+        <translation>Ignoriert</translation>
+    </message>
+    <message>
+        <source>Auto (by shape)</source>
+        <translation>Automatisch (nach Form)</translation>
+    </message>
+    <message>
+        <source>Open as a new document</source>
+        <translation>Als neues Dokument öffnen</translation>
+    </message>
+    <message>
+        <source>Import %1</source>
+        <translation>%1 importieren</translation>
+    </message>
+    <message>
+        <source>Layer</source>
+        <translation>Layer</translation>
+    </message>
+    <message>
+        <source>Role</source>
+        <translation>Rolle</translation>
+    </message>
+    <message>
+        <source> m per unit</source>
+        <translation> m pro Einheit</translation>
+    </message>
+    <message>
+        <source> m</source>
+        <translation> m</translation>
+    </message>
+    <message>
+        <source>Units:</source>
+        <translation>Einheit:</translation>
+    </message>
+    <message>
+        <source>Close gaps up to:</source>
+        <translation>Lücken schließen bis:</translation>
+    </message>
+    <message>
+        <source>Free area %1 m², %2 obstacles, %3 rooms</source>
+        <translation>Freie Fläche %1 m², %2 Hindernisse, %3 Räume</translation>
+    </message>
+</context>
+<context>
     <name>fc::ui::LegendDock</name>
     <message>
         <source>Legend</source>
@@ -513,6 +572,29 @@ Abdeckungspfadplanung für Reinigungs- und Desinfektionsroboter.</translation>
     <message>
         <source>&amp;Compare Solvers…</source>
         <translation>Löser &amp;vergleichen…</translation>
+    </message>
+    <message>
+        <source>&amp;Import…</source>
+        <translation>&amp;Importieren…</translation>
+    </message>
+    <message>
+        <source>Import Plan</source>
+        <translation>Plan importieren</translation>
+    </message>
+    <message>
+        <source>Importable plans (%1);;DXF drawings (*.dxf);;ROS occupancy maps (*.yaml *.yml);;WKT polygons (*.wkt);;GeoJSON plans (*.geojson *.json)</source>
+        <translation>Importierbare Pläne (%1);;DXF-Zeichnungen (*.dxf);;ROS-Belegungskarten (*.yaml *.yml);;WKT-Polygone (*.wkt);;GeoJSON-Pläne (*.geojson *.json)</translation>
+    </message>
+    <message>
+        <source>Import %1</source>
+        <translation>%1 importieren</translation>
+    </message>
+    <message numerus="yes">
+        <source>Imported %1 (%n warning(s))</source>
+        <translation>
+            <numerusform>%1 importiert (%n Warnung)</numerusform>
+            <numerusform>%1 importiert (%n Warnungen)</numerusform>
+        </translation>
     </message>
 </context>
 <context>

@@ -244,6 +244,65 @@
     </message>
 </context>
 <context>
+    <name>fc::ui::ImportDialog</name>
+    <message>
+        <source>Boundary</source>
+        <translation>Contour</translation>
+    </message>
+    <message>
+        <source>Obstacles</source>
+        <translation>Obstacles</translation>
+    </message>
+    <message>
+        <source>Rooms</source>
+        <translation>Pièces</translation>
+    </message>
+    <message>
+        <source>Ignored</source>
+        <translation>Ignoré</translation>
+    </message>
+    <message>
+        <source>Auto (by shape)</source>
+        <translation>Automatique (selon la forme)</translation>
+    </message>
+    <message>
+        <source>Open as a new document</source>
+        <translation>Ouvrir comme nouveau document</translation>
+    </message>
+    <message>
+        <source>Import %1</source>
+        <translation>Importer %1</translation>
+    </message>
+    <message>
+        <source>Layer</source>
+        <translation>Calque</translation>
+    </message>
+    <message>
+        <source>Role</source>
+        <translation>Rôle</translation>
+    </message>
+    <message>
+        <source> m per unit</source>
+        <translation> m par unité</translation>
+    </message>
+    <message>
+        <source> m</source>
+        <translation> m</translation>
+    </message>
+    <message>
+        <source>Units:</source>
+        <translation>Unité :</translation>
+    </message>
+    <message>
+        <source>Close gaps up to:</source>
+        <translation>Fermer les écarts jusqu’à :</translation>
+    </message>
+    <message>
+        <source>Free area %1 m², %2 obstacles, %3 rooms</source>
+        <translation>Surface libre %1 m², %2 obstacles, %3 pièces</translation>
+    </message>
+</context>
+<context>
     <name>fc::ui::LegendDock</name>
     <message>
         <source>Legend</source>
@@ -513,6 +572,29 @@ Planification de trajets de couverture pour robots de nettoyage et de désinfect
     <message>
         <source>&amp;Compare Solvers…</source>
         <translation>&amp;Comparer les solveurs…</translation>
+    </message>
+    <message>
+        <source>&amp;Import…</source>
+        <translation>&amp;Importer…</translation>
+    </message>
+    <message>
+        <source>Import Plan</source>
+        <translation>Importer un plan</translation>
+    </message>
+    <message>
+        <source>Importable plans (%1);;DXF drawings (*.dxf);;ROS occupancy maps (*.yaml *.yml);;WKT polygons (*.wkt);;GeoJSON plans (*.geojson *.json)</source>
+        <translation>Plans importables (%1);;Dessins DXF (*.dxf);;Cartes d’occupation ROS (*.yaml *.yml);;Polygones WKT (*.wkt);;Plans GeoJSON (*.geojson *.json)</translation>
+    </message>
+    <message>
+        <source>Import %1</source>
+        <translation>Importer %1</translation>
+    </message>
+    <message numerus="yes">
+        <source>Imported %1 (%n warning(s))</source>
+        <translation>
+            <numerusform>%1 importé (%n avertissement)</numerusform>
+            <numerusform>%1 importé (%n avertissements)</numerusform>
+        </translation>
     </message>
 </context>
 <context>

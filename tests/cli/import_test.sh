@@ -1,0 +1,74 @@
+#!/usr/bin/env bash
+# floorcover-cli import end to end: the ezdxf office drawing (FC_IMPORT_FIXTURES_DIR, made by
+# the import_make_dxf_fixtures test), a generated occupancy map, WKT, and bad input.
+set -u
+cli="${FC_CLI:?}"
+fixtures="${FC_IMPORT_FIXTURES_DIR:?}"
+work="$(mktemp -d)"
+trap 'rm -rf "$work"' EXIT
+failed=0
+fail() { echo "FAIL: $*"; failed=$((failed + 1)); }
+
+# The DXF: summary line, warning on stderr, a plan the planner accepts.
+"$cli" import "$fixtures/office.dxf" --out "$work/office.geojson" >"$work/out" 2>"$work/err" ||
+  fail "office.dxf exit $?"
+grep -q '"format":"dxf"' "$work/out" && grep -q '"obstacles":6,"rooms":2' "$work/out" ||
+  fail "office.dxf summary: $(cat "$work/out")"
+expected=$(awk '$1 == "office.dxf" {print $2}' "$fixtures/expected.txt")
+python3 - "$work/out" "$expected" <<'PY' || fail "office.dxf free area"
+import json, sys
+free = json.load(open(sys.argv[1]))["free_area"]
+sys.exit(0 if abs(free - float(sys.argv[2])) <= 0.01 * float(sys.argv[2]) else 1)
+PY
+grep -q 'warning: .*office.dxf: layer "NOTES": 2 open segments' "$work/err" || fail "stray warning"
+"$cli" plan "$work/office.geojson" >/dev/null 2>&1 || fail "imported plan does not plan"
+
+# Explicit layers and units.
+"$cli" import "$fixtures/office.dxf" --boundary-layers WALLS --obstacle-layers COLUMNS \
+  --units 0.001 --out "$work/walls.fcproj" >"$work/out" 2>/dev/null || fail "layers exit $?"
+grep -q '"obstacles":2,"rooms":0' "$work/out" || fail "layers summary: $(cat "$work/out")"
+
+# An occupancy map with a start pose ends up as the project's start.
+printf 'P2\n8 6\n255\n' >"$work/map.pgm"
+for row in 1 2 3 4 5 6; do
+  if [ "$row" = 1 ] || [ "$row" = 6 ]; then echo "0 0 0 0 0 0 0 0"; else echo "0 254 254 254 254 254 254 0"; fi
+done >>"$work/map.pgm"
+printf 'image: map.pgm\nresolution: 0.5\norigin: [10, 20, 0]\nstart_pose: [11, 21, 0]\n' >"$work/map.yaml"
+"$cli" import "$work/map.yaml" --out "$work/map.fcproj" >"$work/out" 2>"$work/err" ||
+  fail "map exit $? $(cat "$work/err")"
+python3 -c 'import json, sys; s = json.load(open(sys.argv[1]))
+sys.exit(0 if s["format"] == "ros-map" and abs(s["free_area"] - 6) < 0.06 and s["start"] == [11, 21] else 1)' \
+  "$work/out" || fail "map summary: $(cat "$work/out")"
+grep -q '"hasStart": *true' "$work/map.fcproj" || grep -q '"start"' "$work/map.fcproj" ||
+  fail "map project has no start"
+
+# WKT.
+echo 'POLYGON ((0 0, 10 0, 10 5, 0 5, 0 0), (2 2, 3 2, 3 3, 2 3, 2 2))' >"$work/hall.wkt"
+"$cli" import "$work/hall.wkt" --out "$work/hall.geojson" >"$work/out" 2>/dev/null &&
+  grep -q '"free_area":49.000,"obstacles":1' "$work/out" || fail "wkt: $(cat "$work/out")"
+
+# Bad input: exit 2 and one stderr line naming the file.
+bad() { # name, file, args...
+  local name="$1" file="$2"; shift 2
+  "$cli" import "$file" "$@" >"$work/out" 2>"$work/err"
+  local rc=$? lines; lines=$(wc -l <"$work/err")
+  if [ "$rc" -ne 2 ] || [ "$lines" -ne 1 ] || ! grep -q "$(basename "$file")" "$work/err"; then
+    fail "$name (exit $rc, $lines lines: $(cat "$work/err"))"
+  fi
+}
+head -c 3000 "$fixtures/office.dxf" >"$work/truncated.dxf"
+bad "truncated dxf" "$work/truncated.dxf" --out "$work/x.geojson"
+bad "missing file" "$work/none.dxf" --out "$work/x.geojson"
+echo "LINESTRING (0 0, 1 1)" >"$work/line.wkt"
+bad "wkt line" "$work/line.wkt" --out "$work/x.geojson"
+echo "image: nowhere.pgm" >"$work/nomap.yaml"
+bad "map without resolution" "$work/nomap.yaml" --out "$work/x.fcproj"
+touch "$work/house.ifc"
+bad "3D model" "$work/house.ifc" --out "$work/x.fcproj"
+"$cli" import "$fixtures/office.dxf" --out "$work/x.csv" >/dev/null 2>&1
+[ $? -eq 2 ] || fail "--out .csv accepted"
+"$cli" import "$fixtures/office.dxf" --units -1 --out "$work/x.geojson" >/dev/null 2>&1
+[ $? -eq 2 ] || fail "--units -1 accepted"
+
+[ "$failed" -eq 0 ] && echo "import CLI: all checks passed"
+exit "$failed"
