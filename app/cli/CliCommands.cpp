@@ -37,8 +37,10 @@ commands:
                 after the current episode and saves what was learnt
   tile PLAN     tiling robot: tile the floor with its five shapes and order the tiles by
                 energy; prints one JSON line (energy, length, shape_changes, waypoints,
-                seconds); [--solver zigzag|spiral|greedy|aco|ga|exact|ppo] [--seed N]
-                [--block-leg M] [--block-masses M1,M2,M3,M4] [--out FILE.csv|FILE.json]
+                seconds); [--solver zigzag|spiral|greedy|aco|aco+2opt|ga|exact|
+                ppo-policy|ppo] [--seed N] [--block-leg M] [--block-masses M1,M2,M3,M4]
+                [--out FILE.csv|FILE.json]; ppo trains first (about 40 s) unless
+                --model FILE; [--train-seconds S] [--save-model FILE]
 
 PLAN is a GeoJSON floor plan (.geojson) or a FloorCover project (.fcproj).
 Exit codes: 0 success, 2 bad input (one line on stderr), 1 internal error.
