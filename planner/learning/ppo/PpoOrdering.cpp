@@ -28,6 +28,8 @@ PointerPpo& networkFor(std::uint64_t seed) {
         return *entry.network;
     PointerPpoOptions options;
     options.seed = seed;
+    if (const char* lr = std::getenv("FC_PPO_LR"))
+        options.learningRate = std::atof(lr);
     auto network = std::make_unique<PointerPpo>(options);
     if (!settings.modelPath.empty()) {
         network->load(settings.modelPath);
