@@ -60,8 +60,8 @@ TEST(PpoFeatures, MoveFeaturesByHand) {
     EXPECT_NEAR(f[6], std::log1p((problem.cost(0, 1) - problem.cost(0, 2)) / unit), 1e-6);
     EXPECT_NEAR(f[7], 3.0 / 8.0, 1e-7);
     EXPECT_NEAR(f[8], 0.25, 1e-7);
-    // Waypoint 2 is 0.42 m to the robot's right... of a robot heading +y, x = -0.42 m is
-    // to its left: (0, 0.5) in units of 4a, squashed.
+    // Waypoint 2 is 0.42 m towards -x, which is to the left of a robot heading +y:
+    // (0, 0.5) in units of 4a, squashed.
     moveFeatures(problem, 0, 2, problem.cost(0, 2), 0, 0, 4, f);
     EXPECT_NEAR(f[0], 0.0, 1e-6);
     EXPECT_NEAR(f[1], 0.5 / std::sqrt(1.0 + 0.25 / 16.0), 1e-6);

@@ -3,8 +3,6 @@
 #include "learning/torch/PointerPpo.h"
 #include "tiling/WaypointOrder.h"
 
-#include <cstdio>
-#include <cstdlib>
 #include <map>
 #include <memory>
 #include <mutex>
@@ -28,8 +26,6 @@ PointerPpo& networkFor(std::uint64_t seed) {
         return *entry.network;
     PointerPpoOptions options;
     options.seed = seed;
-    if (const char* lr = std::getenv("FC_PPO_LR"))
-        options.learningRate = std::atof(lr);
     auto network = std::make_unique<PointerPpo>(options);
     if (!settings.modelPath.empty()) {
         network->load(settings.modelPath);
@@ -37,12 +33,7 @@ PointerPpo& networkFor(std::uint64_t seed) {
         const bool timed = settings.trainSeconds > 0.0;
         network->train(
             timed ? 1000000 : kPpoTrainingUpdates,
-            [&entry](const PointerPpoProgress& p) {
-                entry.curve.push_back(p.meanCost);
-                if (std::getenv("FC_PPO_PROGRESS"))
-                    std::fprintf(stderr, "update %d cost/waypoint %.4f critic %.4f\n", p.update,
-                                 p.meanCost, p.criticLoss);
-            },
+            [&entry](const PointerPpoProgress& p) { entry.curve.push_back(p.meanCost); },
             settings.trainSeconds);
         if (!settings.savePath.empty())
             network->save(settings.savePath);

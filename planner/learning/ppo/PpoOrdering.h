@@ -1,5 +1,5 @@
 // Registers the tiling robot's ordering methods "ppo-policy" (the PPO pointer policy alone:
-// the best of its greedy tour and 16 sampled tours) and "ppo" (that tour polished by the
+// the best of its greedy tour and 64 sampled tours) and "ppo" (that tour polished by the
 // energy-aware 2-opt / Or-opt of tiling::polishTour), learning/torch/PointerPpo.
 #pragma once
 
@@ -13,7 +13,7 @@ namespace fc {
 // about 40 s; the first call's time includes it) and kept for the process, unless a model
 // file is given.
 constexpr int kPpoTrainingUpdates = 150;
-constexpr int kPpoSamples = 16;
+constexpr int kPpoSamples = 64;
 
 struct PpoOrderingSettings {
     std::string modelPath;    // load this network instead of training (InputError if bad)

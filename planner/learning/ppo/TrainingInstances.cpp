@@ -50,13 +50,13 @@ Plan randomRoom(RandomSource& random) {
 
 } // namespace
 
-TrainingInstances::TrainingInstances(std::uint64_t seed, int rooms) : random_(seed) {
+TrainingInstances::TrainingInstances(std::uint64_t seed, int rooms, int minTiles) : random_(seed) {
     TilingRequest request;
     request.tiling.nodeBudget = 200'000;
     while (static_cast<int>(rooms_.size()) < rooms) {
         request.plan = randomRoom(random_);
         OrderingProblem problem = tilePlan(request).problem;
-        if (problem.size() >= 16)
+        if (problem.size() >= std::max(minTiles, 16))
             rooms_.push_back(std::move(problem));
     }
 }

@@ -14,9 +14,10 @@ namespace fc::tiling {
 
 class TrainingInstances {
 public:
-    explicit TrainingInstances(std::uint64_t seed, int rooms = 12);
-    // `waypoints` tiles of one random room around a random tile (fewer when the room is
-    // smaller), waypoint 0 the lowest, as on a real floor.
+    // `rooms` random rooms of at least `minTiles` tiles each.
+    TrainingInstances(std::uint64_t seed, int rooms, int minTiles);
+    // min(waypoints, the room's tiles) tiles of one random room around a random tile,
+    // waypoint 0 the lowest, as on a real floor.
     OrderingProblem roomWindow(int waypoints);
     // Tiles of random shapes anywhere in a 6 x 6 m square (randomOrderingProblem).
     OrderingProblem scattered(int waypoints);

@@ -52,7 +52,11 @@ Rollout roll(LocalPointer& net, std::vector<TourBuilder>& builders, int window, 
     const int64_t row = static_cast<int64_t>(window) * kCandidateFeatures;
     auto state =
         std::make_tuple(torch::zeros({batch, net->hidden}), torch::zeros({batch, net->hidden}));
-    while (!builders.front().done()) {
+    const auto running = [&builders] {
+        return std::any_of(builders.begin(), builders.end(),
+                           [](const TourBuilder& b) { return !b.done(); });
+    };
+    while (running()) {
         torch::Tensor x = torch::empty({batch, window, kCandidateFeatures});
         torch::Tensor last = torch::empty({batch, kCandidateFeatures});
         torch::Tensor mask = torch::zeros({batch, window}, torch::kBool);
@@ -77,9 +81,10 @@ Rollout roll(LocalPointer& net, std::vector<TourBuilder>& builders, int window, 
         r.actions.push_back(action);
         std::vector<double> energy;
         auto chosen = action.accessor<int64_t, 1>();
-        for (int64_t b = 0; b < batch; ++b)
-            energy.push_back(
-                builders[static_cast<std::size_t>(b)].step(static_cast<int>(chosen[b])));
+        for (int64_t b = 0; b < batch; ++b) { // a builder done early (a smaller problem) waits
+            TourBuilder& builder = builders[static_cast<std::size_t>(b)];
+            energy.push_back(builder.done() ? 0.0 : builder.step(static_cast<int>(chosen[b])));
+        }
         r.energies.push_back(energy);
     }
     return r;
@@ -184,7 +189,8 @@ int PointerPpo::train(int updates, const std::function<void(const PointerPpoProg
     const PointerPpoOptions& o = m.options;
     const auto start = std::chrono::steady_clock::now();
     if (!m.instances)
-        m.instances = std::make_unique<tiling::TrainingInstances>(o.seed, o.trainingRooms);
+        m.instances =
+            std::make_unique<tiling::TrainingInstances>(o.seed, o.trainingRooms, o.roomWaypoints);
     int done = 0;
     for (; done < updates; ++done) {
         const double elapsed =

@@ -25,7 +25,7 @@ struct PointerPpoOptions {
     int trainingRooms = 12; // random rooms tiled for the training windows
     int epochsPerBatch = 4; // PPO passes over each batch
     double clip = 0.2;      // epsilon of the clipped ratio
-    double learningRate = 1e-3;
+    double learningRate = 3e-3;
     double gamma = 0.98;  // discount of the per-move rewards
     double lambda = 0.95; // GAE
     double entropyWeight = 0.01;
