@@ -98,7 +98,7 @@ zigzag|spiral|greedy|aco|aco+2opt|ga|exact|ppo-policy|ppo [--out FILE.csv|FILE.j
 * **The first PPO** (a global pointer network over all waypoints, trained on 20-waypoint
   instances, decoded greedily): its log-probabilities (sampled actions re-scored by teacher
   forcing), masking (-1e9 after the clipped logits) and per-batch advantage normalisation
-  were checked and are right; its 27-59% gaps came from far too little training for a
+  were reviewed and found right (not rerun longer to prove it); its 27-59% gaps came from far too little training for a
   global model (9,600 tours of 20 waypoints, while such models need millions) and from
   absolute positions scaled to the instance, which mean nothing on a 1,000-waypoint floor.
   The local window fixes the second; sampling and the shaped per-move reward help the first.

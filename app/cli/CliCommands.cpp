@@ -39,7 +39,7 @@ commands:
                 energy; prints one JSON line (energy, length, shape_changes, waypoints,
                 seconds); [--solver zigzag|spiral|greedy|aco|aco+2opt|ga|exact|
                 ppo-policy|ppo] [--seed N] [--block-leg M] [--block-masses M1,M2,M3,M4]
-                [--out FILE.csv|FILE.json]; ppo trains first (about 40 s) unless
+                [--out FILE.csv|FILE.json]; ppo trains first (about 50 s) unless
                 --model FILE; [--train-seconds S] [--save-model FILE]
 
 PLAN is a GeoJSON floor plan (.geojson) or a FloorCover project (.fcproj).

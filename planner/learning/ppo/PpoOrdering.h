@@ -10,7 +10,7 @@
 namespace fc {
 
 // The policy is trained on first use per seed (kPpoTrainingUpdates updates, one thread,
-// about 40 s; the first call's time includes it) and kept for the process, unless a model
+// about 50 s of CPU; the first call's time includes it) and kept for the process, unless a model
 // file is given.
 constexpr int kPpoTrainingUpdates = 150;
 constexpr int kPpoSamples = 64;
