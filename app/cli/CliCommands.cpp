@@ -37,9 +37,12 @@ commands:
                 after the current episode and saves what was learnt
   tile PLAN     tiling robot: tile the floor with its five shapes and order the tiles by
                 energy; prints one JSON line (energy, length, shape_changes, waypoints,
-                seconds); [--solver zigzag|spiral|greedy|aco|ga|exact|ppo] [--seed N]
-                [--block-leg M] [--block-masses M1,M2,M3,M4] [--out FILE.csv|FILE.json]
-  import FILE   import a DXF drawing, a ROS occupancy map (.yaml), WKT or GeoJSON as a plan:
+                seconds); [--solver zigzag|spiral|greedy|aco|aco+2opt|ga|exact|
+                ppo-policy|ppo] [--seed N] [--block-leg M] [--block-masses M1,M2,M3,M4]
+                [--out FILE.csv|FILE.json]; ppo trains first (about 50 s) unless
+                --model FILE; [--train-seconds S] [--save-model FILE]
+  import FILE   import a DXF drawing, a ROS occupancy map (.yaml), WKT, GeoJSON or a 3D
+                building model (.ifc .obj .gltf .glb .stl, cut at --height above --storey):
                 --out PLAN.geojson|PLAN.fcproj [--boundary-layers A,B] [--obstacle-layers C]
                 [--room-layers D] [--ignore-layers E] [--units M_PER_UNIT] [--gap M]
                 [--simplify M] [--epsg N] [--storey S] [--height H]; warnings on stderr,

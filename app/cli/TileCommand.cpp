@@ -1,6 +1,7 @@
 // floorcover-cli tile: the reconfigurable tiling robot (seeds/001). Tiles the floor with the
 // robot's shapes, orders the tiles by energy and prints one JSON line of metrics.
 #include "CliCommon.h"
+#include "learning/ppo/PpoOrdering.h"
 #include "tiling/TilingPlanner.h"
 
 #include <iostream>
@@ -8,7 +9,8 @@
 namespace fc::cli {
 
 int commandTile(const Arguments& args) {
-    args.allowOnly({"--solver", "--out", "--seed", "--block-leg", "--block-masses"});
+    args.allowOnly({"--solver", "--out", "--seed", "--block-leg", "--block-masses", "--model",
+                    "--train-seconds", "--save-model"});
     const std::string& path = planPath(args);
     const Project project = loadProjectFile(path);
     tiling::TilingRequest request;
@@ -30,6 +32,15 @@ int commandTile(const Arguments& args) {
             }
         }
     }
+    PpoOrderingSettings ppo;
+    ppo.modelPath = args.text("--model").value_or("");
+    ppo.savePath = args.text("--save-model").value_or("");
+    if (auto seconds = args.number("--train-seconds")) {
+        if (!(*seconds > 0.0))
+            throw InputError("--train-seconds must be positive");
+        ppo.trainSeconds = *seconds;
+    }
+    configurePpoOrdering(ppo);
     tiling::TilingPlan plan;
     try {
         plan = tiling::planTiling(request);

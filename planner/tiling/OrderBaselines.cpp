@@ -191,7 +191,7 @@ void registerOrderingMethod(const std::string& name, OrderingMethod method) {
 }
 
 std::vector<std::string> orderingSolverNames() {
-    std::vector<std::string> names{"zigzag", "spiral", "greedy", "aco", "ga", "exact"};
+    std::vector<std::string> names{"zigzag", "spiral", "greedy", "aco", "aco+2opt", "ga", "exact"};
     for (const auto& entry : registeredMethods())
         names.push_back(entry.first);
     return names;
@@ -208,6 +208,11 @@ Tour solveOrdering(const std::string& solver, const OrderingProblem& problem, st
         AntColonyOptions options;
         options.seed = seed;
         return orderAntColony(problem, options);
+    }
+    if (solver == "aco+2opt") {
+        AntColonyOptions options;
+        options.seed = seed;
+        return polishTour(problem, orderAntColony(problem, options));
     }
     if (solver == "ga") {
         GeneticOptions options;

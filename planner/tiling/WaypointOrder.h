@@ -66,6 +66,10 @@ Tour orderGenetic(const OrderingProblem& problem, const GeneticOptions& options 
 constexpr int kExactLimit = 16;
 Tour orderExact(const OrderingProblem& problem);
 
+// Energy-aware 2-opt and Or-opt on each waypoint's 8 cheapest moves until no move helps
+// (LocalSearch.cpp); returns the tour rotated to start at 0. Used by "aco+2opt" and "ppo".
+Tour polishTour(const OrderingProblem& problem, Tour tour);
+
 // Methods from outside the core (e.g. "ppo", which needs LibTorch) register themselves here.
 using OrderingMethod = std::function<Tour(const OrderingProblem&, std::uint64_t seed)>;
 void registerOrderingMethod(const std::string& name, OrderingMethod method);

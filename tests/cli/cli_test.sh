@@ -174,10 +174,16 @@ assert list(m.keys())[:len(keys)] == keys, m.keys()
 assert m["waypoints"] > 100 and m["energy"] > 0 and m["length"] > 0, m
 PY
 }
-for solver in zigzag spiral greedy aco ga ppo; do
+for solver in zigzag spiral greedy aco aco+2opt ga; do
   check "tile simple $solver" cli tile "$plans/simple.geojson" --solver "$solver"
   check "tile metrics $solver" tile_metrics_ok
 done
+check "tile ppo trains and saves" cli tile "$plans/simple.geojson" --solver ppo --train-seconds 3 \
+  --save-model "$work/ppo.pt"
+check "tile metrics ppo" tile_metrics_ok
+check "tile ppo-policy loads the model" cli tile "$plans/simple.geojson" --solver ppo-policy \
+  --model "$work/ppo.pt"
+check "tile metrics ppo-policy" tile_metrics_ok
 check "tile waypoints csv" "$cli" tile "$plans/simple-diamond.geojson" --solver greedy --out "$work/tiles.csv"
 check "tile csv header" grep -q '^x,y,shape,heading$' "$work/tiles.csv"
 check "tile waypoints json" "$cli" tile "$plans/simple-diamond.geojson" --out "$work/tiles.json"
@@ -188,7 +194,8 @@ assert len(d['waypoints']) > 100 and len(d['untiled_cells']) >= 2 and 'unreachab
 a=$("$cli" tile "$plans/simple.geojson" --solver aco --seed 4 | python3 -c "import json,sys; print(json.load(sys.stdin)['energy'])")
 b=$("$cli" tile "$plans/simple.geojson" --solver aco --seed 4 | python3 -c "import json,sys; print(json.load(sys.stdin)['energy'])")
 check "tile aco deterministic per seed" test "$a" = "$b"
-for bad in "--solver nonsense" "--solver exact" "--block-leg -1" "--block-masses 1,2,3" "--out $work/tiles.txt"; do
+for bad in "--solver nonsense" "--solver exact" "--block-leg -1" "--block-masses 1,2,3" "--out $work/tiles.txt" \
+  "--solver ppo --model $work/tiles.csv" "--solver ppo --train-seconds 0"; do
   # shellcheck disable=SC2086
   "$cli" tile "$plans/simple.geojson" $bad >"$work/out" 2>"$work/err"
   rc=$?

@@ -95,6 +95,23 @@ TEST(TilingOrder, GapsToTheOptimumOnSmallInstances) {
     EXPECT_LE(meanGap["aco"], meanGap["greedy"] + 1e-12);
 }
 
+// The energy-aware 2-opt / Or-opt polish keeps a valid tour from waypoint 0, never makes it
+// dearer, and removes most of the zigzag's half turns.
+TEST(TilingOrder, PolishNeverWorsensATour) {
+    const OrderingProblem problem = randomProblem(120, 21);
+    for (const Tour& start : {orderGreedy(problem), orderZigzag(problem), orderSpiral(problem)}) {
+        const Tour polished = polishTour(problem, start);
+        ASSERT_TRUE(isTour(polished, problem.size()));
+        EXPECT_LE(tourCost(problem, polished), tourCost(problem, start) + 1e-9);
+    }
+    const Tour zigzag = orderZigzag(problem);
+    EXPECT_LT(tourCost(problem, polishTour(problem, zigzag)), 0.8 * tourCost(problem, zigzag));
+    EXPECT_EQ(polishTour(problem, {0, 1}), (Tour{0, 1})); // not a tour of the problem: kept
+    const OrderingProblem small = randomProblem(9, 4);
+    const double optimum = tourCost(small, orderExact(small));
+    EXPECT_GE(tourCost(small, polishTour(small, orderGreedy(small))), optimum - 1e-9);
+}
+
 TEST(TilingPlanner, PlansARectangleEndToEnd) {
     TilingRequest request;
     request.plan.boundary = test::rectangle(0, 0, 2.1, 1.26);

@@ -1,235 +1,304 @@
 #include "learning/torch/PointerPpo.h"
 
-#include "tiling/RandomInstances.h"
+#include "learning/ppo/TourBuilder.h"
+#include "learning/ppo/TrainingInstances.h"
+#include "learning/torch/LocalPointer.h"
+#include "model/Plan.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
-#include <torch/torch.h>
+#include <dlfcn.h>
+#include <mutex>
 
 namespace fc {
 namespace {
 
-constexpr int kFeatures = 4 + tiling::kShapeCount; // x, y, cos, sin, shape one-hot
+using tiling::kCandidateFeatures;
+using tiling::TourBuilder;
 
-// Waypoint features scaled to the instance: positions in [0, 1], heading as cos/sin.
-torch::Tensor features(const tiling::OrderingProblem& problem) {
-    BoundingBox box;
-    for (const tiling::Pose& pose : problem.poses)
-        box.add(pose.waypoint());
-    const double scale = std::max({box.width(), box.height(), 1e-9});
-    torch::Tensor f = torch::zeros({problem.size(), kFeatures});
-    auto a = f.accessor<float, 2>();
-    for (int w = 0; w < problem.size(); ++w) {
-        const tiling::Pose& pose = problem.poses[w];
-        a[w][0] = static_cast<float>((pose.waypoint().x - box.minX) / scale);
-        a[w][1] = static_cast<float>((pose.waypoint().y - box.minY) / scale);
-        a[w][2] = static_cast<float>(std::cos(pose.heading));
-        a[w][3] = static_cast<float>(std::sin(pose.heading));
-        a[w][4 + static_cast<int>(pose.shape)] = 1.0f;
-    }
-    return f;
+// One intra-op thread (reproducible, and the generic BLAS gains nothing from more); the
+// OpenMP setting is per calling thread. OpenBLAS's own pool is set once, when present.
+void singleThreaded() {
+    if (at::get_num_threads() != 1)
+        at::set_num_threads(1);
+    static std::once_flag once;
+    std::call_once(once, [] {
+        using SetThreads = void (*)(int);
+        if (auto set =
+                reinterpret_cast<SetThreads>(dlsym(RTLD_DEFAULT, "openblas_set_num_threads")))
+            set(1);
+    });
 }
 
-// Energy units per instance: total mass times the instance's size, so that rewards of
-// floors of any size and robot are of order one per waypoint.
-double costScale(const tiling::OrderingProblem& problem) {
-    BoundingBox box;
-    for (const tiling::Pose& pose : problem.poses)
-        box.add(pose.waypoint());
-    return problem.robot.totalMass() * std::max({box.width(), box.height(), 1e-9});
+torch::Tensor clippedLoss(const torch::Tensor& logp, const torch::Tensor& oldLogp,
+                          const torch::Tensor& advantage, double clip) {
+    const torch::Tensor ratio = torch::exp(logp - oldLogp);
+    const torch::Tensor clipped = torch::clamp(ratio, 1.0 - clip, 1.0 + clip);
+    return -torch::min(ratio * advantage, clipped * advantage).mean();
 }
 
-struct PointerActorImpl : torch::nn::Module {
-    torch::nn::Linear embed{nullptr};
-    torch::nn::LSTM encoder{nullptr};
-    torch::nn::LSTMCell decoder{nullptr};
-    torch::nn::Linear attendEncoded{nullptr}, attendQuery{nullptr};
-    torch::Tensor attendVector;
+// Tours built in lockstep (all builders have problems of one size); what the update needs
+// is recorded per step.
+struct Rollout {
+    std::vector<torch::Tensor> candidates, lastMoves, masks, actions, logps, values;
+    std::vector<std::vector<double>> energies; // [step][builder]
+};
 
-    explicit PointerActorImpl(int hidden) {
-        embed = register_module("embed", torch::nn::Linear(kFeatures, hidden));
-        encoder = register_module(
-            "encoder", torch::nn::LSTM(torch::nn::LSTMOptions(hidden, hidden).batch_first(true)));
-        decoder = register_module("decoder", torch::nn::LSTMCell(hidden, hidden));
-        attendEncoded = register_module("attend_encoded", torch::nn::Linear(hidden, hidden));
-        attendQuery = register_module("attend_query", torch::nn::Linear(hidden, hidden));
-        attendVector = register_parameter("attend_vector", torch::randn({hidden}) * 0.1);
-    }
-
-    // Log-probabilities of the tours: sampled (actions undefined, sample true), greedy
-    // (sample false) or given (actions [B, n-1], teacher forcing). Returns (tours, logp).
-    std::pair<torch::Tensor, torch::Tensor> run(torch::Tensor x, torch::Tensor actions,
-                                                bool sample) {
-        const auto batch = x.size(0), n = x.size(1);
-        torch::Tensor embedded = embed->forward(x);
-        auto [encoded, state] = encoder->forward(embedded);
-        torch::Tensor keys = attendEncoded->forward(encoded); // [B, n, H]
-        auto h = std::get<0>(state).squeeze(0), c = std::get<1>(state).squeeze(0);
-        torch::Tensor visited = torch::zeros({batch, n}, torch::kBool);
-        visited.index_put_({torch::indexing::Slice(), 0}, true);
-        torch::Tensor current = torch::zeros({batch}, torch::kLong);
-        const auto rows = torch::arange(batch);
-        std::vector<torch::Tensor> chosen, logps;
-        for (int64_t step = 1; step < n; ++step) {
-            torch::Tensor input = embedded.index({rows, current});
-            std::tie(h, c) = decoder->forward(input, std::make_tuple(h, c));
-            torch::Tensor scores =
-                torch::tanh(keys + attendQuery->forward(h).unsqueeze(1)).matmul(attendVector);
-            scores = 10.0 * torch::tanh(scores); // clipped logits (Bello et al.)
-            scores = scores.masked_fill(visited, -1e9);
-            torch::Tensor logp = torch::log_softmax(scores, 1);
-            torch::Tensor next;
-            if (actions.defined())
-                next = actions.index({torch::indexing::Slice(), step - 1});
-            else if (sample)
-                next = torch::multinomial(logp.exp(), 1).squeeze(1);
-            else
-                next = logp.argmax(1);
-            logps.push_back(logp.gather(1, next.unsqueeze(1)).squeeze(1));
-            chosen.push_back(next);
-            visited = visited.scatter(1, next.unsqueeze(1), true);
-            current = next;
+Rollout roll(LocalPointer& net, std::vector<TourBuilder>& builders, int window, int greedyCount) {
+    torch::NoGradGuard noGrad;
+    Rollout r;
+    const auto batch = static_cast<int64_t>(builders.size());
+    const int64_t row = static_cast<int64_t>(window) * kCandidateFeatures;
+    auto state =
+        std::make_tuple(torch::zeros({batch, net->hidden}), torch::zeros({batch, net->hidden}));
+    const auto running = [&builders] {
+        return std::any_of(builders.begin(), builders.end(),
+                           [](const TourBuilder& b) { return !b.done(); });
+    };
+    while (running()) {
+        torch::Tensor x = torch::empty({batch, window, kCandidateFeatures});
+        torch::Tensor last = torch::empty({batch, kCandidateFeatures});
+        torch::Tensor mask = torch::zeros({batch, window}, torch::kBool);
+        for (int64_t b = 0; b < batch; ++b) {
+            const TourBuilder& builder = builders[static_cast<std::size_t>(b)];
+            std::copy_n(builder.features().data(), row, x.data_ptr<float>() + b * row);
+            std::copy_n(builder.lastMove().data(), kCandidateFeatures,
+                        last.data_ptr<float>() + b * kCandidateFeatures);
+            mask[b].narrow(0, 0, static_cast<int64_t>(builder.candidates().size())).fill_(true);
         }
-        if (chosen.empty())
-            return {torch::zeros({batch, 0}, torch::kLong), torch::zeros({batch})};
-        return {torch::stack(chosen, 1), torch::stack(logps, 1).sum(1)};
+        state = net->decode(last, state);
+        const auto [encoded, keys] = net->encode(x);
+        const torch::Tensor logp = net->logProbabilities(keys, std::get<0>(state), mask);
+        torch::Tensor action = torch::multinomial(logp.exp(), 1).squeeze(1);
+        if (greedyCount > 0)
+            action.narrow(0, 0, greedyCount).copy_(logp.narrow(0, 0, greedyCount).argmax(1));
+        r.values.push_back(net->value(encoded, std::get<0>(state), mask));
+        r.logps.push_back(logp.gather(1, action.unsqueeze(1)).squeeze(1));
+        r.candidates.push_back(x);
+        r.lastMoves.push_back(last);
+        r.masks.push_back(mask);
+        r.actions.push_back(action);
+        std::vector<double> energy;
+        auto chosen = action.accessor<int64_t, 1>();
+        for (int64_t b = 0; b < batch; ++b) { // a builder done early (a smaller problem) waits
+            TourBuilder& builder = builders[static_cast<std::size_t>(b)];
+            energy.push_back(builder.done() ? 0.0 : builder.step(static_cast<int>(chosen[b])));
+        }
+        r.energies.push_back(energy);
     }
-};
-TORCH_MODULE(PointerActor);
-
-// The critic: the same encoder, a glimpse (attention-weighted sum) and two layers.
-struct PointerCriticImpl : torch::nn::Module {
-    torch::nn::Linear embed{nullptr};
-    torch::nn::LSTM encoder{nullptr};
-    torch::nn::Linear glimpse{nullptr}, hidden{nullptr}, out{nullptr};
-
-    explicit PointerCriticImpl(int size) {
-        embed = register_module("embed", torch::nn::Linear(kFeatures, size));
-        encoder = register_module(
-            "encoder", torch::nn::LSTM(torch::nn::LSTMOptions(size, size).batch_first(true)));
-        glimpse = register_module("glimpse", torch::nn::Linear(size, 1));
-        hidden = register_module("hidden", torch::nn::Linear(size, size));
-        out = register_module("out", torch::nn::Linear(size, 1));
-    }
-
-    torch::Tensor forward(torch::Tensor x) {
-        auto [encoded, state] = encoder->forward(embed->forward(x));
-        torch::Tensor weights = torch::softmax(glimpse->forward(encoded).squeeze(2), 1);
-        torch::Tensor summary = (weights.unsqueeze(2) * encoded).sum(1);
-        return out->forward(torch::relu(hidden->forward(summary))).squeeze(1);
-    }
-};
-TORCH_MODULE(PointerCritic);
+    return r;
+}
 
 } // namespace
 
 struct PointerPpo::Impl {
     PointerPpoOptions options;
-    PointerActor actor;
-    PointerCritic critic;
-    torch::optim::Adam optimiser;
-    std::uint64_t instanceSeed;
+    LocalPointer net{nullptr};
+    std::unique_ptr<torch::optim::Adam> optimiser;
+    std::unique_ptr<tiling::TrainingInstances> instances;
     std::uint64_t updatesDone = 0;
 
-    explicit Impl(const PointerPpoOptions& o)
-        : options(o), actor((torch::manual_seed(o.seed), o.hidden)), critic(o.hidden),
-          optimiser(parameters(), torch::optim::AdamOptions(o.learningRate)),
-          instanceSeed(o.seed * 1000003) {}
+    explicit Impl(const PointerPpoOptions& o) : options(o) { build(); }
 
-    std::vector<torch::Tensor> parameters() {
-        std::vector<torch::Tensor> all = actor->parameters();
-        for (const torch::Tensor& p : critic->parameters())
-            all.push_back(p);
-        return all;
+    void build() {
+        torch::manual_seed(options.seed);
+        net = LocalPointer(kCandidateFeatures, options.hidden);
+        optimiser = std::make_unique<torch::optim::Adam>(
+            net->parameters(), torch::optim::AdamOptions(options.learningRate));
+    }
+
+    std::vector<TourBuilder> builders(const std::vector<tiling::OrderingProblem>& problems) const {
+        std::vector<TourBuilder> result;
+        for (const tiling::OrderingProblem& problem : problems)
+            result.emplace_back(problem, options.window, tiling::neighbourhoodOf(problem));
+        return result;
+    }
+
+    // GAE advantages and returns of a rollout's scaled rewards, [T, B] each.
+    std::pair<torch::Tensor, torch::Tensor> advantages(const Rollout& r, double energyUnit) const {
+        const auto steps = static_cast<int64_t>(r.energies.size());
+        const auto batch = static_cast<int64_t>(r.energies.front().size());
+        torch::Tensor values = torch::stack(r.values);
+        torch::Tensor advantage = torch::zeros({steps, batch});
+        auto v = values.accessor<float, 2>();
+        auto a = advantage.accessor<float, 2>();
+        for (int64_t b = 0; b < batch; ++b) {
+            double running = 0.0, nextValue = 0.0;
+            for (int64_t t = steps - 1; t >= 0; --t) {
+                const double reward = -r.energies[t][b] / energyUnit;
+                const double delta = reward + options.gamma * nextValue - v[t][b];
+                running = delta + options.gamma * options.lambda * running;
+                a[t][b] = static_cast<float>(running);
+                nextValue = v[t][b];
+            }
+        }
+        return {advantage, advantage + values};
+    }
+
+    double update(const Rollout& r, double energyUnit) {
+        const auto [advantageRaw, returns] = advantages(r, energyUnit);
+        const int64_t steps = advantageRaw.size(0), batch = advantageRaw.size(1);
+        torch::Tensor advantage = advantageRaw.reshape({-1});
+        advantage = (advantage - advantage.mean()) / (advantage.std() + 1e-8);
+        const torch::Tensor x =
+            torch::stack(r.candidates).reshape({steps * batch, options.window, kCandidateFeatures});
+        const torch::Tensor mask = torch::stack(r.masks).reshape({steps * batch, options.window});
+        const torch::Tensor actions = torch::stack(r.actions).reshape({-1, 1});
+        const torch::Tensor oldLogp = torch::stack(r.logps).reshape({-1});
+        const torch::Tensor target = returns.reshape({-1});
+        double criticLoss = 0.0;
+        for (int epoch = 0; epoch < options.epochsPerBatch; ++epoch) {
+            const auto [encoded, keys] = net->encode(x);
+            auto state = std::make_tuple(torch::zeros({batch, net->hidden}),
+                                         torch::zeros({batch, net->hidden}));
+            std::vector<torch::Tensor> queries;
+            for (int64_t t = 0; t < steps; ++t) {
+                state = net->decode(r.lastMoves[t], state);
+                queries.push_back(std::get<0>(state));
+            }
+            const torch::Tensor query = torch::stack(queries).reshape({steps * batch, -1});
+            const torch::Tensor logpAll = net->logProbabilities(keys, query, mask);
+            const torch::Tensor logp = logpAll.gather(1, actions).squeeze(1);
+            const torch::Tensor entropy = -(logpAll.exp() * logpAll).sum(1).mean();
+            const torch::Tensor valueLoss =
+                torch::mse_loss(net->value(encoded, query, mask), target);
+            const torch::Tensor loss = clippedLoss(logp, oldLogp, advantage, options.clip) +
+                                       0.5 * valueLoss - options.entropyWeight * entropy;
+            optimiser->zero_grad();
+            loss.backward();
+            torch::nn::utils::clip_grad_norm_(net->parameters(), 1.0);
+            optimiser->step();
+            criticLoss = valueLoss.item<double>();
+        }
+        return criticLoss;
     }
 };
 
-PointerPpo::PointerPpo(const PointerPpoOptions& options) : impl_(std::make_unique<Impl>(options)) {
-    at::set_num_threads(1);
+PointerPpo::PointerPpo(const PointerPpoOptions& options) {
+    singleThreaded();
+    impl_ = std::make_unique<Impl>(options);
 }
 
 PointerPpo::~PointerPpo() = default;
 
-void PointerPpo::train(int updates,
-                       const std::function<void(const PointerPpoProgress&)>& progress) {
+int PointerPpo::train(int updates, const std::function<void(const PointerPpoProgress&)>& progress,
+                      double maxSeconds) {
+    singleThreaded();
     Impl& m = *impl_;
     const PointerPpoOptions& o = m.options;
-    for (int update = 0; update < updates; ++update) {
-        // Torch's sampling generator is global: reseed it per update so that each network
-        // is reproducible from its own seed, whatever else ran in between.
-        torch::manual_seed(o.seed * 7919 + m.updatesDone++);
+    const auto start = std::chrono::steady_clock::now();
+    if (!m.instances)
+        m.instances =
+            std::make_unique<tiling::TrainingInstances>(o.seed, o.trainingRooms, o.roomWaypoints);
+    int done = 0;
+    for (; done < updates; ++done) {
+        const double elapsed =
+            std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        if (maxSeconds > 0.0 && elapsed >= maxSeconds)
+            break;
+        // Torch's generator is global: reseed it per update, so that a network is
+        // reproducible from its seed whatever else ran in between.
+        torch::manual_seed(o.seed * 7919 + m.updatesDone);
+        // Every fourth batch: scattered small instances (8 to 20 waypoints); else windows
+        // of random rooms.
+        const bool scattered = m.updatesDone++ % 4 == 3;
+        const int size = scattered ? 8 + static_cast<int>(m.updatesDone / 4 % 13) : o.roomWaypoints;
         std::vector<tiling::OrderingProblem> problems;
-        std::vector<torch::Tensor> inputs;
-        for (int k = 0; k < o.batch; ++k) {
-            problems.push_back(
-                tiling::randomOrderingProblem(o.trainingWaypoints, m.instanceSeed++));
-            inputs.push_back(features(problems.back()));
-        }
-        const torch::Tensor x = torch::stack(inputs);
-        torch::Tensor tours, oldLogp;
-        {
-            torch::NoGradGuard noGrad;
-            std::tie(tours, oldLogp) = m.actor->run(x, {}, true);
-        }
-        torch::Tensor rewards = torch::zeros({o.batch});
-        double meanCost = 0.0;
-        auto chosen = tours.accessor<int64_t, 2>();
-        for (int k = 0; k < o.batch; ++k) {
-            tiling::Tour tour{0};
-            for (int64_t s = 0; s < tours.size(1); ++s)
-                tour.push_back(static_cast<int>(chosen[k][s]));
-            const double cost = tiling::tourCost(problems[k], tour);
-            meanCost += cost / o.batch;
-            // Per waypoint, so rewards are of order one whatever the instance size.
-            rewards[k] = static_cast<float>(-cost / costScale(problems[k]) / problems[k].size());
-        }
-        double criticLoss = 0.0;
-        for (int epoch = 0; epoch < o.epochsPerBatch; ++epoch) {
-            const torch::Tensor logp = m.actor->run(x, tours, false).second;
-            const torch::Tensor value = m.critic->forward(x);
-            // Normalised per batch: the critic's early errors must not swamp the actor's step
-            // (both share one gradient clip).
-            torch::Tensor advantage = rewards - value.detach();
-            advantage = (advantage - advantage.mean()) / (advantage.std() + 1e-8);
-            const torch::Tensor ratio = torch::exp(logp - oldLogp);
-            const torch::Tensor clipped = torch::clamp(ratio, 1.0 - o.clip, 1.0 + o.clip);
-            const torch::Tensor actorLoss =
-                -torch::min(ratio * advantage, clipped * advantage).mean();
-            const torch::Tensor valueLoss = torch::mse_loss(value, rewards);
-            m.optimiser.zero_grad();
-            (actorLoss + valueLoss).backward();
-            torch::nn::utils::clip_grad_norm_(m.parameters(), 1.0);
-            m.optimiser.step();
-            criticLoss = valueLoss.item<double>();
-        }
+        for (int k = 0; k < o.batch; ++k)
+            problems.push_back(scattered ? m.instances->scattered(size)
+                                         : m.instances->roomWindow(size));
+        std::vector<TourBuilder> builders = m.builders(problems);
+        const Rollout r = roll(m.net, builders, o.window, 0);
+        if (r.energies.empty())
+            continue;
+        const tiling::OrderingProblem& first = problems.front();
+        const double energyUnit = 4.0 * first.robot.totalMass() * first.blockLeg();
+        double total = 0.0;
+        for (const auto& step : r.energies)
+            for (double e : step)
+                total += e;
+        const double criticLoss = m.update(r, energyUnit);
         if (progress)
-            progress({update + 1, meanCost, criticLoss});
+            progress({done + 1, total / o.batch / size, criticLoss});
     }
+    return done;
+}
+
+tiling::Tour PointerPpo::decodeBest(const tiling::OrderingProblem& problem, int samples,
+                                    std::uint64_t seed) const {
+    singleThreaded();
+    if (problem.size() <= 1)
+        return problem.size() == 0 ? tiling::Tour{} : tiling::Tour{0};
+    torch::manual_seed(seed);
+    const auto neighbourhood = tiling::neighbourhoodOf(problem);
+    std::vector<TourBuilder> builders;
+    for (int k = 0; k <= samples; ++k)
+        builders.emplace_back(problem, impl_->options.window, neighbourhood);
+    roll(impl_->net, builders, impl_->options.window, 1);
+    tiling::Tour best = builders.front().tour();
+    double bestCost = tiling::tourCost(problem, best);
+    for (const TourBuilder& builder : builders) {
+        const double cost = tiling::tourCost(problem, builder.tour());
+        if (cost < bestCost) {
+            bestCost = cost;
+            best = builder.tour();
+        }
+    }
+    return best;
 }
 
 tiling::Tour PointerPpo::decode(const tiling::OrderingProblem& problem) const {
-    tiling::Tour tour{};
-    if (problem.size() == 0)
-        return tour;
+    return decodeBest(problem, 0, 0);
+}
+
+std::vector<double>
+PointerPpo::firstMoveProbabilities(const tiling::OrderingProblem& problem) const {
+    singleThreaded();
     torch::NoGradGuard noGrad;
-    const torch::Tensor tours = impl_->actor->run(features(problem).unsqueeze(0), {}, false).first;
-    tour.push_back(0);
-    auto chosen = tours.accessor<int64_t, 2>();
-    for (int64_t s = 0; s < tours.size(1); ++s)
-        tour.push_back(static_cast<int>(chosen[0][s]));
-    return tour;
+    const int window = impl_->options.window;
+    const TourBuilder builder(problem, window, tiling::neighbourhoodOf(problem));
+    const torch::Tensor x = torch::from_blob(const_cast<float*>(builder.features().data()),
+                                             {1, window, kCandidateFeatures})
+                                .clone();
+    torch::Tensor mask = torch::zeros({1, window}, torch::kBool);
+    mask[0].narrow(0, 0, static_cast<int64_t>(builder.candidates().size())).fill_(true);
+    const auto state = impl_->net->decode(
+        torch::zeros({1, kCandidateFeatures}),
+        {torch::zeros({1, impl_->net->hidden}), torch::zeros({1, impl_->net->hidden})});
+    const torch::Tensor keys = impl_->net->encode(x).second;
+    const torch::Tensor p = impl_->net->logProbabilities(keys, std::get<0>(state), mask).exp()[0];
+    return {p.data_ptr<float>(), p.data_ptr<float>() + window};
 }
 
 void PointerPpo::save(const std::string& path) const {
     torch::serialize::OutputArchive archive;
-    impl_->actor->save(archive);
+    impl_->net->save(archive);
+    archive.write("sizes", torch::tensor({impl_->options.hidden, impl_->options.window}));
     archive.save_to(path);
 }
 
 void PointerPpo::load(const std::string& path) {
-    torch::serialize::InputArchive archive;
-    archive.load_from(path);
-    impl_->actor->load(archive);
+    try {
+        torch::serialize::InputArchive archive;
+        archive.load_from(path);
+        torch::Tensor sizes;
+        archive.read("sizes", sizes);
+        impl_->options.hidden = static_cast<int>(sizes[0].item<int64_t>());
+        impl_->options.window = static_cast<int>(sizes[1].item<int64_t>());
+        impl_->build();
+        impl_->net->load(archive);
+    } catch (const c10::Error& e) {
+        std::string why = e.what_without_backtrace();
+        why = why.substr(0, std::min(why.find('\n'), std::size_t{120}));
+        throw InputError(path + ": not a PPO ordering model (" + why + ")");
+    }
+}
+
+double ppoClippedLoss(const std::vector<double>& newLogp, const std::vector<double>& oldLogp,
+                      const std::vector<double>& advantages, double clip) {
+    auto tensor = [](const std::vector<double>& v) { return torch::tensor(v, torch::kDouble); };
+    return clippedLoss(tensor(newLogp), tensor(oldLogp), tensor(advantages), clip).item<double>();
 }
 
 } // namespace fc
