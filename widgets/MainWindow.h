@@ -4,6 +4,7 @@
 #pragma once
 
 #include "OverlayLayer.h"
+#include "formats/Export.h"
 
 #include <QMainWindow>
 #include <array>
@@ -52,8 +53,11 @@ public:
     void openSample();
     void newDocument();
     bool saveFile(const QString& path);
-    // Path as GeoJSON, CSV, JSON or ROS 2 YAML by extension (the CLI's writers).
+    // Path in the format its extension implies (.geojson .csv .json .yaml .svg .pdf .wkt).
     bool exportPath(const QString& path);
+    // Any export of the CLI's `export` command (MainWindowExport.cpp): the planned path, the
+    // plan or its zones; the path subject needs a planned document.
+    bool exportFile(const QString& path, ExportFormat format, ExportSubject subject);
     // The visible canvas as .png or .svg.
     bool exportView(const QString& path);
     // One-page PDF report of the plan, path, metrics and robot profile.
@@ -91,7 +95,7 @@ private:
     bool save();
     bool saveAs();
     void openWithDialog();
-    void exportPathWithDialog();
+    void exportWithDialog(ExportSubject subject);
     void exportViewWithDialog(const QString& suffix);
     void addRecentFile(const QString& path);
     void updateRecentFilesMenu();

@@ -105,19 +105,8 @@ PlanRequest requestFrom(const Project& project, const Arguments& args) {
     return r;
 }
 
-const std::string& planPath(const Arguments& args) {
-    if (args.positional().size() != 1)
-        throw InputError("expected exactly one PLAN file (see floorcover-cli --help)");
-    return args.positional()[0];
-}
-
-namespace {
-
-int commandPlan(const Arguments& args) {
-    args.allowOnly(kPlanOptions);
-    const std::string& path = planPath(args);
-    const Project project = loadProjectFile(path);
-    PlanRequest request;
+PlanResult planFromArguments(const std::string& path, const Project& project, const Arguments& args,
+                             PlanRequest& request) {
     PlanResult result;
     try {
         request = requestFrom(project, args);
@@ -132,14 +121,36 @@ int commandPlan(const Arguments& args) {
     if (request.sweep.automatic)
         std::cerr << "floorcover-cli: note: " << path << ": sweep angle " << result.stripeAngleDeg
                   << " degrees chosen (shortest path)\n";
-    if (auto out = args.text("--out")) {
-        PathExportInfo info;
-        info.solver = result.solution.solver;
-        info.robot = request.robot;
-        info.metrics = result.metrics;
-        info.epsg = project.plan.epsg;
-        writeFileAtomically(*out, pathToFormat(*out, result.path, info));
-    }
+    return result;
+}
+
+PathExportInfo exportInfoFor(const Project& project, const PlanRequest& request,
+                             const PlanResult& result) {
+    PathExportInfo info;
+    info.solver = result.solution.solver;
+    info.robot = request.robot;
+    info.metrics = result.metrics;
+    info.epsg = project.plan.epsg;
+    return info;
+}
+
+const std::string& planPath(const Arguments& args) {
+    if (args.positional().size() != 1)
+        throw InputError("expected exactly one PLAN file (see floorcover-cli --help)");
+    return args.positional()[0];
+}
+
+namespace {
+
+int commandPlan(const Arguments& args) {
+    args.allowOnly(kPlanOptions);
+    const std::string& path = planPath(args);
+    const Project project = loadProjectFile(path);
+    PlanRequest request;
+    const PlanResult result = planFromArguments(path, project, args, request);
+    if (auto out = args.text("--out"))
+        writeFileAtomically(
+            *out, pathToFormat(*out, result.path, exportInfoFor(project, request, result)));
     std::cout << metricsJsonLine(result.solution.solver, result.metrics) << std::endl;
     return 0;
 }
@@ -268,7 +279,10 @@ int run(int argc, char** argv) {
             return commandTrain(args);
         if (command == "tile")
             return commandTile(args);
-        throw InputError("unknown command \"" + command + "\" (plan, graph, compare, train, tile)");
+        if (command == "export")
+            return commandExport(args);
+        throw InputError("unknown command \"" + command +
+                         "\" (plan, graph, compare, train, tile, export)");
     } catch (const InputError& e) {
         std::cerr << "floorcover-cli: error: " << e.what() << std::endl;
         return 2;
