@@ -17,20 +17,25 @@ int commandExport(const Arguments& args) {
     const std::string& path = planPath(args);
     const auto out = args.text("--out");
     if (!out)
-        throw InputError("export needs --out FILE");
+        throw InputError(path + ": export needs --out FILE");
     std::optional<ExportFormat> format;
-    if (auto name = args.text("--format"))
-        format = exportFormatNamed(*name);
-    else
-        format = exportFormatForExtension(*out);
-    if (!format)
-        throw InputError("cannot tell the export format from \"" + *out +
-                         "\"; give --format (see floorcover-cli --help)");
-    const ExportSubject subject = args.has("--what") ? exportSubjectNamed(*args.text("--what"))
-                                                     : defaultExportSubject(*format);
-    if (!exportSupports(*format, subject))
-        throw InputError("--format " + exportFormatName(*format) + " cannot hold --what " +
-                         *args.text("--what"));
+    ExportSubject subject = ExportSubject::Path;
+    try { // option errors name the output file
+        if (auto name = args.text("--format"))
+            format = exportFormatNamed(*name);
+        else
+            format = exportFormatForExtension(*out);
+        if (!format)
+            throw InputError("cannot tell the export format from the file extension; give "
+                             "--format (see floorcover-cli --help)");
+        subject = args.has("--what") ? exportSubjectNamed(*args.text("--what"))
+                                     : defaultExportSubject(*format);
+        if (!exportSupports(*format, subject))
+            throw InputError("--format " + exportFormatName(*format) + " cannot hold --what " +
+                             *args.text("--what"));
+    } catch (const InputError& e) {
+        throw InputError(*out + ": " + e.what());
+    }
 
     const Project project = loadProjectFile(path);
     PathExportInfo info;
