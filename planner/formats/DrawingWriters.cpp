@@ -79,8 +79,8 @@ std::string planToSvg(const Plan& plan, const CoveragePath& path, const PathExpo
         << n(d.bounds.minX) << ' ' << n(-d.bounds.maxY) << ' ' << n(width) << ' ' << n(height)
         << "\">\n"
         << "<title>" << xmlEscaped(d.title) << "</title>\n"
-        << "<desc>" << xmlEscaped(d.caption)
-        << "; viewBox in metres with y flipped (SVG y = -plan y)</desc>\n"
+        << "<desc>" << xmlEscaped(d.caption) << (d.legend.empty() ? "" : "; ")
+        << xmlEscaped(d.legend) << "; viewBox in metres with y flipped (SVG y = -plan y)</desc>\n"
         << "<g transform=\"scale(1,-1)\" stroke-linejoin=\"round\" stroke-linecap=\"round\">\n";
     for (const formats::DrawItem& item : d.items) {
         out << (item.closed ? "<polygon" : "<polyline") << " points=\"";
@@ -132,7 +132,9 @@ std::string planToPdf(const Plan& plan, const CoveragePath& path, const PathExpo
                 << ") Tj ET\n";
     content << "BT /F1 14 Tf 40 " << n(pageHeight - 40) << " Td (" << pdfText(d.title)
             << ") Tj ET\n"
-            << "BT /F1 8 Tf 40 " << n(pageHeight - 58) << " Td (" << pdfText(d.caption)
+            << "BT /F1 8 Tf 40 " << n(pageHeight - 56) << " Td (" << pdfText(d.caption)
+            << ") Tj ET\n"
+            << "BT /F1 8 Tf 40 " << n(pageHeight - 67) << " Td (" << pdfText(d.legend)
             << ") Tj ET\n";
     const std::string stream = content.str();
 
@@ -143,7 +145,7 @@ std::string planToPdf(const Plan& plan, const CoveragePath& path, const PathExpo
             "] /Contents 4 0 R /Resources << /Font << /F1 5 0 R >> >> >>",
         "<< /Length " + std::to_string(stream.size()) + " >>\nstream\n" + stream + "endstream",
         "<< /Type /Font /Subtype /Type1 /BaseFont /Helvetica /Encoding /WinAnsiEncoding >>",
-        "<< /Title (" + pdfText(d.title) + ") /Subject (" + pdfText(d.caption) +
+        "<< /Title (" + pdfText(d.title) + ") /Subject (" + pdfText(d.caption + "; " + d.legend) +
             ") /Producer (FloorCover) >>"};
     std::string pdf = "%PDF-1.4\n%\xE2\xE3\xCF\xD3\n";
     std::vector<size_t> offsets;

@@ -93,9 +93,9 @@ PlanDrawing drawingOf(const Plan& plan, const CoveragePath& path, const PathExpo
     drawing.title = "FloorCover: " + (plan.name.empty() ? std::string("plan") : plan.name);
     drawing.caption = "units: metres; frame: " + frameDescription(plan.epsg);
     if (!path.empty())
-        drawing.caption += "; path " + fixedNumber(info.metrics.length, 1) + " m (" + info.solver +
-                           "), coverage " + fixedNumber(100.0 * info.metrics.coverage, 1) +
-                           "%; stripes green, contours orange, transit red dashed, overlaps blue";
+        drawing.legend = "path " + fixedNumber(info.metrics.length, 1) + " m (" + info.solver +
+                         "), coverage " + fixedNumber(100.0 * info.metrics.coverage, 1) +
+                         "%; stripes green, contours orange, transit red dashed, overlaps blue";
     return drawing;
 }
 

@@ -34,7 +34,8 @@ struct PlanDrawing {
     std::vector<DrawItem> items; // in painting order
     std::vector<DrawLabel> labels;
     std::string title;
-    std::string caption; // units, frame, metrics, legend
+    std::string caption; // units and frame
+    std::string legend;  // path metrics and colours; empty without a path
 };
 
 // Floor, obstacles, rooms (dashed, with names), the path coloured by segment kind
