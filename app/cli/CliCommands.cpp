@@ -39,6 +39,13 @@ commands:
                 energy; prints one JSON line (energy, length, shape_changes, waypoints,
                 seconds); [--solver zigzag|spiral|greedy|aco|ga|exact|ppo] [--seed N]
                 [--block-leg M] [--block-masses M1,M2,M3,M4] [--out FILE.csv|FILE.json]
+  export PLAN   write the path, the plan or its zones for robots and GIS: --out FILE
+                [--format geojson|wgs84-geojson|csv|json|ros-path|nav2|fields2cover|
+                vda5050|zones|svg|pdf|wkt] (default from the extension: .geojson .csv
+                .json .yaml .svg .pdf .wkt) [--what path|plan|zones] (default path; plan
+                for wgs84-geojson and wkt; zones for zones), the plan options above when
+                the path is exported; ros-path/nav2: [--frame-id ID]; vda5050:
+                [--manufacturer M] [--serial-number S] [--order-id O] [--map-id ID]
 
 PLAN is a GeoJSON floor plan (.geojson) or a FloorCover project (.fcproj).
 Exit codes: 0 success, 2 bad input (one line on stderr), 1 internal error.
