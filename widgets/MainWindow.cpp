@@ -12,6 +12,7 @@
 #include "PlanningController.h"
 #include "PlanningDock.h"
 #include "PreferencesDialog.h"
+#include "tilingmode/TilingMode.h"
 #include "tools/DrawPolygonTool.h"
 #include "tools/EditVerticesTool.h"
 #include "tools/PickRoomTool.h"
@@ -54,6 +55,7 @@ MainWindow::MainWindow(QWidget* parent)
     connect(planner_, &PlanningController::preparedChanged, this,
             [this] { trainingDock_->setPreparedPlan(planner_->prepared()); });
     connect(trainingDock_, &TrainingDock::modelReady, planner_, &PlanningController::setModelPath);
+    tilingMode_ = new TilingMode(this, scene_);
 
     createTools();
     createMenus();
@@ -122,6 +124,8 @@ void MainWindow::createMenus() {
         dialog->start();
     });
     plan->setShortcut(Qt::Key_F5);
+    planMenu->addSeparator();
+    planMenu->addAction(tilingMode_->action());
 
     QMenu* help = menuBar()->addMenu(tr("&Help"));
     help->addAction(tr("&About FloorCover"), this, [this]() {
@@ -203,6 +207,7 @@ void MainWindow::setDocument(std::unique_ptr<Document> document) {
     scene_->setDocument(doc);
     view_->setDocument(doc);
     planner_->setDocument(doc);
+    tilingMode_->setDocument(doc);
     planningDock_->setDocument(doc);
     tools_->setContext(doc, scene_);
     autosaver_->setDocument(doc);

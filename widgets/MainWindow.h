@@ -25,6 +25,7 @@ class PathPreview;
 class PlanScene;
 class PlanningController;
 class PlanningDock;
+class TilingMode;
 class ToolManager;
 class TrainingDock;
 
@@ -41,6 +42,7 @@ public:
     PlanningController* planningController() const { return planner_; }
     PlanningDock* planningDock() const { return planningDock_; }
     TrainingDock* trainingDock() const { return trainingDock_; }
+    TilingMode* tilingMode() const { return tilingMode_; }
     LegendDock* legendDock() const { return legendDock_; }
     PathPreview* pathPreview() const { return preview_; }
     QAction* overlayAction(OverlayKind kind) const {
@@ -111,6 +113,7 @@ private:
     TrainingDock* trainingDock_ = nullptr;
     LegendDock* legendDock_ = nullptr;
     PathPreview* preview_ = nullptr;
+    TilingMode* tilingMode_ = nullptr;
     Autosaver* autosaver_;
     QMenu* recentFilesMenu_ = nullptr;
     QLabel* coordinates_ = nullptr;

@@ -3,6 +3,7 @@
 #include "MainWindow.h"
 #include "Translations.h"
 #include "learning/dqn/DqnSolver.h"
+#include "learning/ppo/PpoOrdering.h"
 
 #include <QApplication>
 #include <QCommandLineParser>
@@ -31,6 +32,7 @@ int main(int argc, char** argv) {
     preferOffscreenForScreenshots(argc, argv);
     QApplication app(argc, argv);
     fc::registerDqnSolver(); // before the window lists the solvers
+    fc::registerPpoOrdering();
     QApplication::setOrganizationName(QStringLiteral("FloorCover"));
     QApplication::setApplicationName(QStringLiteral("FloorCover"));
     QApplication::setApplicationVersion(QStringLiteral(FC_VERSION));

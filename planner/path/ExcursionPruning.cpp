@@ -99,8 +99,9 @@ std::vector<char> prunableExcursions(const Polyline& pts,
         }
         return false;
     };
-    for (const PathExcursion& ex : excursions) {
-        // The margin this excursion sweeps: between its turning point and the wall side.
+    // Whether the rest of the path, as it stands, sweeps the margin this excursion seals.
+    auto prunable = [&](const PathExcursion& ex) {
+        // The margin: between the excursion's turning point and the wall side.
         int tip = ex.begin;
         for (int k = ex.begin; k <= ex.end; ++k)
             if (distance(pts[k], pts[ex.begin]) > distance(pts[tip], pts[ex.begin]))
@@ -113,26 +114,48 @@ std::vector<char> prunableExcursions(const Polyline& pts,
         region.add(a + Vec2{0, side * 0.5 * width});
         region.add(b + Vec2{0, side * 0.5 * width});
         grid.near(region, nearby);
-        int total = 0, hit = 0;
         for (int i = 0; i <= 8; ++i) {
             const Vec2 along = a + (b - a) * (0.02 + 0.96 * i / 8.0);
             for (int k = 1; k <= 4; ++k) {
                 const Vec2 q{along.x, along.y + side * 0.49 * width * k / 4.0};
-                ++total;
                 if (!covered(q, ex.begin, ex.end))
-                    break;
-                ++hit;
+                    return false;
             }
-            if (hit != total)
-                break;
         }
-        if (hit == total) {
-            for (int k = ex.begin; k < ex.end; ++k)
-                segmentActive[k] = 0;
-            for (int k = ex.begin + 1; k <= ex.end; ++k)
-                keep[k] = 0;
-        }
+        return true;
+    };
+    auto setActive = [&](const PathExcursion& ex, char value) {
+        for (int k = ex.begin; k < ex.end; ++k)
+            segmentActive[k] = value;
+    };
+    // Dropping one excursion can make another droppable (two seals at one stripe end: once
+    // the second is gone, the first's base becomes a plain right-angle turn whose mitre
+    // sweeps its margin), so repeat until nothing changes.
+    const int count = static_cast<int>(excursions.size());
+    std::vector<char> pruned(count, 0);
+    for (bool changed = true; changed;) {
+        changed = false;
+        for (int i = 0; i < count; ++i)
+            if (!pruned[i] && prunable(excursions[i])) {
+                setActive(excursions[i], 0);
+                pruned[i] = changed = true;
+            }
     }
+    // A decision may have leant on an excursion dropped later: check each against the final
+    // path and restore the ones it no longer justifies (restoring only adds swept area).
+    for (bool changed = true; changed;) {
+        changed = false;
+        for (int i = 0; i < count; ++i)
+            if (pruned[i] && !prunable(excursions[i])) {
+                setActive(excursions[i], 1);
+                pruned[i] = 0;
+                changed = true;
+            }
+    }
+    for (int i = 0; i < count; ++i)
+        if (pruned[i])
+            for (int k = excursions[i].begin + 1; k <= excursions[i].end; ++k)
+                keep[k] = 0;
     return keep;
 }
 

@@ -2,7 +2,9 @@
 // classic decomposition's cells, a genetic algorithm for the travelling-salesman order of the
 // cells with four entry/exit options per cell (start at any corner; the stripe parity fixes
 // the exit), transits between cells that are not neighbours through the centres of the cells
-// on the way (the one left and the one entered included), back to the start.
+// on the way (the one left and the one entered included), back to the start. Like the TSP
+// tour it solves, the tour begins at its start node: the robot covers the cell it starts in
+// first (in the paper's figure 14B it then returns through the middle of cells 4 and 1).
 #include "solvers/BaselineSupport.h"
 #include "solvers/SolverCommon.h"
 
@@ -83,17 +85,27 @@ private:
 };
 
 struct Individual {
-    std::vector<int> order;  // tasks
+    std::vector<int> order;  // tasks after the first one
     std::vector<int> option; // per task
     double cost = kInf;
 };
 
 class GeneticTour {
 public:
+    // firstTask: the task covered first (the start cell), or -1 when it is not required.
     GeneticTour(const BaselineWorld& w, const CellTransits& transits, std::vector<int> cells,
-                std::vector<std::vector<CoverOption>> options)
+                std::vector<std::vector<CoverOption>> options, int firstTask)
         : w_(w), transits_(transits), cells_(std::move(cells)), options_(std::move(options)),
-          random_(w.seed) {}
+          firstTask_(firstTask), random_(w.seed) {}
+
+    // The whole visiting order of an individual: the first task, then its order.
+    std::vector<int> visits(const Individual& ind) const {
+        std::vector<int> all;
+        if (firstTask_ >= 0)
+            all.push_back(firstTask_);
+        all.insert(all.end(), ind.order.begin(), ind.order.end());
+        return all;
+    }
 
     Individual run() {
         const int n = static_cast<int>(cells_.size());
@@ -129,7 +141,7 @@ private:
         int cell = w_.startCell;
         Vec2 at = w_.start;
         double total = 0;
-        for (int t : ind.order) {
+        for (int t : visits(ind)) {
             const CoverOption& o = options_[t][ind.option[t]];
             total += transits_.cost(cell, at, cells_[t], o.entry) + o.length;
             cell = cells_[t], at = o.exit;
@@ -148,14 +160,17 @@ private:
             int bestTask = -1, bestOption = 0;
             double best = kInf;
             for (int t = 0; t < n; ++t)
-                for (size_t k = 0; !done[t] && k < options_[t].size(); ++k) {
+                for (size_t k = 0; !done[t] && (step > 0 || firstTask_ < 0 || t == firstTask_) &&
+                                   k < options_[t].size();
+                     ++k) {
                     const CoverOption& o = options_[t][k];
                     const double c = transits_.cost(cell, at, cells_[t], o.entry) + o.length;
                     if (bestTask < 0 || c < best)
                         best = c, bestTask = t, bestOption = static_cast<int>(k);
                 }
             done[bestTask] = 1;
-            ind.order.push_back(bestTask);
+            if (bestTask != firstTask_)
+                ind.order.push_back(bestTask);
             ind.option[bestTask] = bestOption;
             cell = cells_[bestTask], at = options_[bestTask][bestOption].exit;
         }
@@ -164,10 +179,13 @@ private:
 
     Individual randomIndividual() {
         const int n = static_cast<int>(cells_.size());
-        Individual ind{std::vector<int>(n), std::vector<int>(n), kInf};
-        for (int i = 0; i < n; ++i)
-            ind.order[i] = i, ind.option[i] = random_.below(optionCount(i));
-        for (int i = n - 1; i > 0; --i)
+        Individual ind{{}, std::vector<int>(n), kInf};
+        for (int i = 0; i < n; ++i) {
+            ind.option[i] = random_.below(optionCount(i));
+            if (i != firstTask_)
+                ind.order.push_back(i);
+        }
+        for (int i = static_cast<int>(ind.order.size()) - 1; i > 0; --i)
             std::swap(ind.order[i], ind.order[random_.below(i + 1)]);
         return ind;
     }
@@ -187,13 +205,15 @@ private:
     // Order crossover: a slice of the first parent in place, the rest in the second
     // parent's order; each cell keeps the option of the parent it came from.
     Individual crossover(const Individual& a, const Individual& b) {
-        const int n = static_cast<int>(cells_.size());
-        int i = random_.below(n);
-        int j = random_.below(n);
+        const int m = static_cast<int>(a.order.size());
+        Individual child{std::vector<int>(m, -1), b.option, kInf};
+        if (m == 0)
+            return child;
+        int i = random_.below(m);
+        int j = random_.below(m);
         if (i > j)
             std::swap(i, j);
-        Individual child{std::vector<int>(n, -1), b.option, kInf};
-        std::vector<char> taken(n, 0);
+        std::vector<char> taken(cells_.size(), 0);
         for (int k = i; k <= j; ++k) {
             child.order[k] = a.order[k];
             child.option[a.order[k]] = a.option[a.order[k]];
@@ -212,15 +232,16 @@ private:
 
     void mutate(Individual& ind) {
         const int n = static_cast<int>(cells_.size());
-        if (random_.below(100) < 30) { // inversion
-            int i = random_.below(n);
-            int j = random_.below(n);
+        const int m = static_cast<int>(ind.order.size());
+        if (m > 1 && random_.below(100) < 30) { // inversion
+            int i = random_.below(m);
+            int j = random_.below(m);
             if (i > j)
                 std::swap(i, j);
             std::reverse(ind.order.begin() + i, ind.order.begin() + j + 1);
         }
-        if (random_.below(100) < 10) { // swap
-            const int i = random_.below(n), j = random_.below(n);
+        if (m > 1 && random_.below(100) < 10) { // swap
+            const int i = random_.below(m), j = random_.below(m);
             std::swap(ind.order[i], ind.order[j]);
         }
         for (int t = 0; t < n; ++t)
@@ -232,6 +253,7 @@ private:
     const CellTransits& transits_;
     std::vector<int> cells_;
     std::vector<std::vector<CoverOption>> options_;
+    int firstTask_;
     solver_detail::SeededRandom random_;
 };
 
@@ -263,21 +285,25 @@ Solution solveAdjacencyGa(const BaselineQuery& query) {
     CellTransits transits(world);
     std::vector<int> cells;
     std::vector<std::vector<CoverOption>> options;
+    int firstTask = -1;
     transits.computeRoutesFrom(world.startCell);
     for (const GraphCell& c : world.graph.cells) {
         if (!world.required[c.id])
             continue;
+        if (c.id == world.startCell)
+            firstTask = static_cast<int>(cells.size());
         cells.push_back(c.id);
         options.push_back(coverOptions(world, field, c.id));
         transits.computeRoutesFrom(c.id);
     }
-    const Individual best = GeneticTour(world, transits, cells, options).run();
+    GeneticTour tour(world, transits, cells, options, firstTask);
+    const Individual best = tour.run();
     if (best.cost == kInf)
         throw SolverError(std::string(kName) + ": a required cell is not connected");
 
     TourBuilder path(world.start, field, world.graph, kName);
     int cell = world.startCell;
-    for (int t : best.order) {
+    for (int t : tour.visits(best)) {
         for (int through : transits.through(cell, cells[t]))
             path.travelTo(transits.centre(through));
         path.follow(options[t][best.option[t]].pattern);

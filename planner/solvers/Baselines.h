@@ -5,9 +5,9 @@
 //   halves (top half on the first pass, bottom half on the second), back to the start
 //   (Mannadiar & Rekleitis 2010; Xu et al. 2014);
 // * adjacency-ga: cell adjacency graph, genetic-algorithm TSP over cells with four entry/exit
-//   options per cell, transits between cells that are not neighbours through the centres of
-//   the cells on the way (the one left and the one entered included), back to the start
-//   (Tung & Liu 2019).
+//   options per cell, the start cell first, transits between cells that are not neighbours
+//   through the centres of the cells on the way (the one left and the one entered included),
+//   back to the start (Tung & Liu 2019).
 // Neither walks the corner graph: both return Solution::directPath.
 #pragma once
 

@@ -270,6 +270,104 @@ struct Search {
             chosen.push_back(best);
         }
     }
+
+    // Local repair of a greedy fill: around each cell left untiled, lift the tiles within
+    // `radius` squares and re-tile that patch exactly, allowing fewer cells to stay untiled
+    // than before; keep the patch only if it improves. Each patch search has its own budget.
+    void repair(std::vector<int>& chosen, std::vector<int>& untiled, int radius, long long budget,
+                long long& nodes) {
+        std::vector<int> owner(grid.cellCount(), -1); // index into chosen
+        for (int t = 0; t < static_cast<int>(chosen.size()); ++t)
+            for (int cell : placements[chosen[t]].cells)
+                owner[cell] = t;
+        std::vector<char> isUntiled(grid.cellCount(), 0);
+        for (int cell : untiled)
+            isUntiled[cell] = 1;
+        for (std::size_t k = 0; k < untiled.size(); ++k) {
+            const int centre = untiled[k];
+            if (!isUntiled[centre])
+                continue; // tiled by an earlier patch
+            const LatticeTriangle c = grid.triangle(centre);
+            std::vector<int> patch, lifted;
+            for (int j = std::max(0, c.squareJ() - radius);
+                 j <= std::min(grid.ny() - 1, c.squareJ() + radius); ++j)
+                for (int i = std::max(0, c.squareI() - radius);
+                     i <= std::min(grid.nx() - 1, c.squareI() + radius); ++i)
+                    for (int half = 0; half < 2; ++half) {
+                        const int cell = grid.cellId(i, j, half);
+                        if (owner[cell] >= 0 && chosen[owner[cell]] >= 0) {
+                            lifted.push_back(owner[cell]);
+                            for (int tileCell : placements[chosen[owner[cell]]].cells)
+                                patch.push_back(tileCell);
+                            chosen[owner[cell]] = -chosen[owner[cell]] - 1; // lifted
+                        } else if (isUntiled[cell]) {
+                            patch.push_back(cell);
+                        }
+                    }
+            std::sort(patch.begin(), patch.end());
+            patch.erase(std::unique(patch.begin(), patch.end()), patch.end());
+            int before = 0;
+            for (int cell : patch)
+                before += isUntiled[cell];
+            // Untiled cells outside the patch must stay as they are.
+            for (int cell : untiled)
+                if (isUntiled[cell] && !std::binary_search(patch.begin(), patch.end(), cell))
+                    covered[cell] = 2;
+            for (int id : lifted)
+                mark(-chosen[id] - 1, 0);
+            std::vector<int> placed, skipped;
+            bool improved = false;
+            for (int skips = before % kBlockCount; !improved && skips < before;
+                 skips += kBlockCount) {
+                placed.clear();
+                skipped.clear();
+                long long used = 0;
+                improved = backtrack(patch, skips, budget, used, placed, skipped);
+                nodes += used;
+            }
+            for (int cell : untiled)
+                if (covered[cell] == 2)
+                    covered[cell] = 0;
+            for (int cell : skipped) // backtrack marks the cells it leaves with 2
+                covered[cell] = 0;
+            if (!improved) {
+                for (int id : lifted) {
+                    chosen[id] = -chosen[id] - 1;
+                    mark(chosen[id], 1);
+                }
+                continue;
+            }
+            // backtrack left the new tiles marked; the skipped cells are not covered.
+            for (int cell : patch)
+                isUntiled[cell] = 0;
+            for (int cell : skipped)
+                isUntiled[cell] = 1;
+            std::size_t slot = 0;
+            for (int id : placed) {
+                int index;
+                if (slot < lifted.size()) {
+                    index = lifted[slot++];
+                    chosen[index] = id;
+                } else {
+                    index = static_cast<int>(chosen.size());
+                    chosen.push_back(id);
+                }
+                for (int cell : placements[id].cells)
+                    owner[cell] = index;
+            }
+            for (; slot < lifted.size(); ++slot)
+                chosen[lifted[slot]] = -1; // an emptied slot, dropped below
+            for (int cell : skipped)
+                owner[cell] = -1;
+        }
+        chosen.erase(std::remove_if(chosen.begin(), chosen.end(), [](int id) { return id < 0; }),
+                     chosen.end());
+        std::vector<int> left;
+        for (int cell = 0; cell < grid.cellCount(); ++cell)
+            if (isUntiled[cell])
+                left.push_back(cell);
+        untiled = std::move(left);
+    }
 };
 
 } // namespace
@@ -293,7 +391,10 @@ TilingResult tileFreeSpace(const TriangleGrid& grid, const TilingOptions& option
             ++result.piecesTiledExactly;
             result.untiled.insert(result.untiled.end(), skipped.begin(), skipped.end());
         } else {
-            search.greedy(cells, chosen, result.untiled);
+            std::vector<int> untiled;
+            search.greedy(cells, chosen, untiled);
+            search.repair(chosen, untiled, options.repairRadius, options.repairBudget, nodes);
+            result.untiled.insert(result.untiled.end(), untiled.begin(), untiled.end());
         }
         result.nodes += nodes;
     }

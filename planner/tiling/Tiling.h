@@ -21,6 +21,10 @@ struct Tile {
 
 struct TilingOptions {
     long long nodeBudget = 2'000'000; // placements tried per piece before the greedy fill
+    // After a greedy fill: the tiles within this many lattice squares of a cell left untiled
+    // are lifted and the patch re-tiled exactly, within repairBudget placements per patch.
+    int repairRadius = 6;
+    long long repairBudget = 200'000;
 };
 
 struct TilingResult {

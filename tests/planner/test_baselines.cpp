@@ -166,6 +166,24 @@ TEST(Baselines, ReebPostmanCoversACellItCrossesTwiceInTwoHalves) {
     EXPECT_GT(reeb.metrics.turns, ga.metrics.turns) << "the halves' turns in the middle";
 }
 
+TEST(Baselines, AdjacencyGaCoversItsStartCellFirst) {
+    // As a TSP tour from its start node: on `simple` (12 x 8 m, a 2 x 2 m obstacle at
+    // x = 5..7) the start cell is the classic cell left of the obstacle; all five of its
+    // stripes (x = 0.5 .. 4.5) come before the robot first goes right of x = 5.
+    PlanRequest r = requestFor("simple", "adjacency-ga");
+    const PlanResult res = planCoverage(r);
+    const auto& pts = res.path.points;
+    const auto firstRight =
+        std::find_if(pts.begin(), pts.end(), [](Vec2 p) { return p.x > 5.0 + 1e-6; });
+    ASSERT_NE(firstRight, pts.end());
+    for (double x : {0.5, 1.5, 2.5, 3.5, 4.5})
+        EXPECT_NE(std::find_if(pts.begin(), firstRight,
+                               [x](Vec2 p) { return std::abs(p.x - x) < 1e-6 && p.y > 7; }),
+                  firstRight)
+            << "stripe x = " << x << " before leaving the start cell";
+    EXPECT_LT(distance(pts.back(), pts.front()), 1e-9) << "back to the start";
+}
+
 TEST(Baselines, GeneratedFloorsAndASlantedSweep) {
     struct Floor {
         const char* name;

@@ -124,6 +124,20 @@ TEST(Pipeline, HeuristicWithinOnePercentOfExact) {
     }
 }
 
+TEST(Pipeline, NoSealIsKeptWhereATurnsMitreSweepsItsMargin) {
+    // simple's one-stripe transition cells are sealed on both sides of both stripe ends.
+    // Where the path turns at such an end, the turn's mitre sweeps the margin, so no
+    // out-and-back seal may stay; the path covers everything all the same.
+    const PlanResult r = planCoverage(requestFor(samplePlan("simple"), "exact"));
+    const Polyline& p = r.path.points;
+    for (std::size_t i = 0; i < p.size(); ++i)
+        for (std::size_t j = i + 2; j < std::min(p.size(), i + 8); ++j)
+            EXPECT_FALSE(distance(p[i], p[j]) < 1e-6 && distance(p[i], p[i + 1]) < 0.6)
+                << "out-and-back seal at (" << p[i].x << ", " << p[i].y << ")";
+    EXPECT_GE(r.metrics.coverage, 0.999);
+    EXPECT_LE(r.metrics.turns, 30);
+}
+
 TEST(Pipeline, RoomSubsetsAndTransitsStayInFreeSpace) {
     PlanRequest r = requestFor(samplePlan("office"), "heuristic");
     r.rooms = {"S01", "N03", "Corridor"};

@@ -207,6 +207,23 @@ TEST(Tiling, GreedyFillWhenTheBudgetRunsOut) {
     EXPECT_GE(result.tiles.size(), 20u);
 }
 
+TEST(Tiling, LocalRepairLeavesFewerCellsThanTheGreedyFill) {
+    // ward's slanted walls defeat the exact search within its budget; the greedy fill leaves
+    // pockets, and re-tiling the patches around them exactly closes some.
+    const TriangleGrid grid = buildTriangleGrid(samplePlan("ward"), 0.21);
+    TilingOptions greedyOnly;
+    greedyOnly.nodeBudget = 0;
+    greedyOnly.repairBudget = 0;
+    TilingOptions repaired;
+    repaired.nodeBudget = 0;
+    const TilingResult before = tileFreeSpace(grid, greedyOnly);
+    const TilingResult after = tileFreeSpace(grid, repaired);
+    expectCompleteAndDisjoint(grid, before);
+    expectCompleteAndDisjoint(grid, after);
+    EXPECT_LT(after.untiled.size(), before.untiled.size());
+    EXPECT_EQ(after.untiled.size() % 4, before.untiled.size() % 4) << "four cells a tile";
+}
+
 class SamplePlanTiling : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(SamplePlanTiling, CompleteAndNonOverlapping) {
