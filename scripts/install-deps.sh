@@ -10,7 +10,7 @@ packages=(
   libtorch-dev libopenblas0-pthread
   libassimp-dev libgdal-dev libqcustomplot-dev nlohmann-json3-dev
   libgtest-dev libbenchmark-dev
-  libproj-dev
+  libproj-dev proj-bin
   gdal-bin python3 python3-yaml libxml2-utils qpdf
   # import/export fixtures and validators (issue 5): a CAD library writing DXF, third-party
   # DXF edge cases and 3D models, a JSON-schema validator, clang for the libFuzzer targets

@@ -5,6 +5,7 @@
 
 #include "OverlayLayer.h"
 #include "formats/Import.h"
+#include "formats/Export.h"
 
 #include <QMainWindow>
 #include <array>
@@ -58,8 +59,11 @@ public:
     void openSample();
     void newDocument();
     bool saveFile(const QString& path);
-    // Path as GeoJSON, CSV, JSON or ROS 2 YAML by extension (the CLI's writers).
+    // Path in the format its extension implies (.geojson .csv .json .yaml .svg .pdf .wkt).
     bool exportPath(const QString& path);
+    // Any export of the CLI's `export` command (MainWindowExport.cpp): the planned path, the
+    // plan or its zones; the path subject needs a planned document.
+    bool exportFile(const QString& path, ExportFormat format, ExportSubject subject);
     // The visible canvas as .png or .svg.
     bool exportView(const QString& path);
     // One-page PDF report of the plan, path, metrics and robot profile.
@@ -98,7 +102,7 @@ private:
     bool saveAs();
     void openWithDialog();
     void importWithDialog(); // MainWindowImport.cpp
-    void exportPathWithDialog();
+    void exportWithDialog(ExportSubject subject);
     void exportViewWithDialog(const QString& suffix);
     void addRecentFile(const QString& path);
     void updateRecentFilesMenu();

@@ -7,7 +7,6 @@
 #include "PdfReport.h"
 #include "PlanScene.h"
 #include "PlanningController.h"
-#include "formats/PathIO.h"
 
 #include <QAction>
 #include <QApplication>
@@ -58,7 +57,11 @@ void MainWindow::createFileMenu() {
     file->addAction(tr("Save &As…"), QKeySequence::SaveAs, this, &MainWindow::saveAs);
     file->addSeparator();
     file->addAction(tr("&Export Path…"), QKeySequence(Qt::CTRL | Qt::Key_E), this,
-                    &MainWindow::exportPathWithDialog);
+                    [this]() { exportWithDialog(ExportSubject::Path); });
+    file->addAction(tr("Export &Zones…"), this,
+                    [this]() { exportWithDialog(ExportSubject::Zones); });
+    file->addAction(tr("Export P&lan (WGS84 GeoJSON, WKT)…"), this,
+                    [this]() { exportWithDialog(ExportSubject::Plan); });
     file->addAction(tr("Export View as &PNG…"), this,
                     [this]() { exportViewWithDialog(QStringLiteral("png")); });
     file->addAction(tr("Export View as S&VG…"), this,
@@ -163,37 +166,6 @@ void MainWindow::updateRecentFilesMenu() {
             ->setToolTip(path);
     }
     recentFilesMenu_->setEnabled(!files.isEmpty());
-}
-
-bool MainWindow::exportPath(const QString& path) {
-    const auto result = planner_->result();
-    if (!result) {
-        showError(tr("There is no path to export: plan the current document first."));
-        return false;
-    }
-    try {
-        PathExportInfo info;
-        info.solver =
-            result->solution.solver.empty() ? document_->project().solver : result->solution.solver;
-        info.robot = result->prepared.robot;
-        info.metrics = result->metrics;
-        info.epsg = document_->plan().epsg;
-        writeFileAtomically(path.toStdString(),
-                            pathToFormat(path.toStdString(), result->path, info));
-    } catch (const std::exception& e) {
-        showError(tr("Cannot export the path to %1: %2").arg(path, fromStd(e.what())));
-        return false;
-    }
-    statusBar()->showMessage(tr("Exported the path to %1").arg(path), 5000);
-    return true;
-}
-
-void MainWindow::exportPathWithDialog() {
-    const QString path = QFileDialog::getSaveFileName(
-        this, tr("Export Path"), document_->displayName() + QStringLiteral("-path.geojson"),
-        tr("GeoJSON (*.geojson);;CSV (*.csv);;JSON (*.json);;ROS 2 nav_msgs/Path (*.yaml)"));
-    if (!path.isEmpty())
-        exportPath(withSuffix(path, QStringLiteral("geojson")));
 }
 
 bool MainWindow::exportView(const QString& path) {

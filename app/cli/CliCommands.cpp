@@ -47,6 +47,13 @@ commands:
                 [--room-layers D] [--ignore-layers E] [--units M_PER_UNIT] [--gap M]
                 [--simplify M] [--epsg N] [--storey S] [--height H]; warnings on stderr,
                 one JSON line (areas, obstacles, rooms, warnings, start) on stdout
+  export PLAN   write the path, the plan or its zones for robots and GIS: --out FILE
+                [--format geojson|wgs84-geojson|csv|json|ros-path|nav2|fields2cover|
+                vda5050|zones|svg|pdf|wkt] (default from the extension: .geojson .csv
+                .json .yaml .svg .pdf .wkt) [--what path|plan|zones] (default path; plan
+                for wgs84-geojson and wkt; zones for zones), the plan options above when
+                the path is exported; ros-path/nav2: [--frame-id ID]; vda5050:
+                [--manufacturer M] [--serial-number S] [--order-id O] [--map-id ID]
 
 PLAN is a GeoJSON floor plan (.geojson) or a FloorCover project (.fcproj).
 Exit codes: 0 success, 2 bad input (one line on stderr), 1 internal error.
@@ -113,19 +120,8 @@ PlanRequest requestFrom(const Project& project, const Arguments& args) {
     return r;
 }
 
-const std::string& planPath(const Arguments& args) {
-    if (args.positional().size() != 1)
-        throw InputError("expected exactly one PLAN file (see floorcover-cli --help)");
-    return args.positional()[0];
-}
-
-namespace {
-
-int commandPlan(const Arguments& args) {
-    args.allowOnly(kPlanOptions);
-    const std::string& path = planPath(args);
-    const Project project = loadProjectFile(path);
-    PlanRequest request;
+PlanResult planFromArguments(const std::string& path, const Project& project, const Arguments& args,
+                             PlanRequest& request) {
     PlanResult result;
     try {
         request = requestFrom(project, args);
@@ -140,14 +136,36 @@ int commandPlan(const Arguments& args) {
     if (request.sweep.automatic)
         std::cerr << "floorcover-cli: note: " << path << ": sweep angle " << result.stripeAngleDeg
                   << " degrees chosen (shortest path)\n";
-    if (auto out = args.text("--out")) {
-        PathExportInfo info;
-        info.solver = result.solution.solver;
-        info.robot = request.robot;
-        info.metrics = result.metrics;
-        info.epsg = project.plan.epsg;
-        writeFileAtomically(*out, pathToFormat(*out, result.path, info));
-    }
+    return result;
+}
+
+PathExportInfo exportInfoFor(const Project& project, const PlanRequest& request,
+                             const PlanResult& result) {
+    PathExportInfo info;
+    info.solver = result.solution.solver;
+    info.robot = request.robot;
+    info.metrics = result.metrics;
+    info.epsg = project.plan.epsg;
+    return info;
+}
+
+const std::string& planPath(const Arguments& args) {
+    if (args.positional().size() != 1)
+        throw InputError("expected exactly one PLAN file (see floorcover-cli --help)");
+    return args.positional()[0];
+}
+
+namespace {
+
+int commandPlan(const Arguments& args) {
+    args.allowOnly(kPlanOptions);
+    const std::string& path = planPath(args);
+    const Project project = loadProjectFile(path);
+    PlanRequest request;
+    const PlanResult result = planFromArguments(path, project, args, request);
+    if (auto out = args.text("--out"))
+        writeFileAtomically(
+            *out, pathToFormat(*out, result.path, exportInfoFor(project, request, result)));
     std::cout << metricsJsonLine(result.solution.solver, result.metrics) << std::endl;
     return 0;
 }
@@ -278,8 +296,10 @@ int run(int argc, char** argv) {
             return commandTile(args);
         if (command == "import")
             return commandImport(args);
+        if (command == "export")
+            return commandExport(args);
         throw InputError("unknown command \"" + command +
-                         "\" (plan, graph, compare, train, tile, import)");
+                         "\" (plan, graph, compare, train, tile, import, export)");
     } catch (const InputError& e) {
         std::cerr << "floorcover-cli: error: " << e.what() << std::endl;
         return 2;

@@ -2,6 +2,7 @@
 #pragma once
 
 #include "Arguments.h"
+#include "formats/PathIO.h"
 #include "formats/PlanIO.h"
 #include "pipeline/Planner.h"
 
@@ -14,11 +15,19 @@ extern const std::vector<std::string> kPlanOptions;
 
 // A request from the project file's settings, overridden by command-line options.
 PlanRequest requestFrom(const Project& project, const Arguments& args);
+// Plans `project` as the options ask, printing warnings and notes on stderr; errors become
+// InputError("PATH: problem").
+PlanResult planFromArguments(const std::string& path, const Project& project, const Arguments& args,
+                             PlanRequest& request);
+// Solver, robot, metrics and EPSG of a planned path, for the path writers.
+PathExportInfo exportInfoFor(const Project& project, const PlanRequest& request,
+                             const PlanResult& result);
 // The one positional PLAN argument; throws InputError otherwise.
 const std::string& planPath(const Arguments& args);
 
 int commandTrain(const Arguments& args);
 int commandTile(const Arguments& args);   // TileCommand.cpp: the tiling robot
 int commandImport(const Arguments& args); // ImportCommand.cpp: DXF, ROS maps, WKT to a plan
+int commandExport(const Arguments& args); // ExportCommand.cpp: files for robots and GIS
 
 } // namespace fc::cli

@@ -1,5 +1,6 @@
 // Path exports (SPEC sect. 6-7): metrics line, GeoJSON, CSV, JSON and ROS 2 nav_msgs/Path.
 #include "formats/PathIO.h"
+#include "formats/WriterSupport.h"
 
 #include <algorithm>
 #include <cctype>
@@ -15,33 +16,11 @@ using nlohmann::ordered_json;
 
 namespace {
 
-double rounded(double value, int decimals) {
-    if (!std::isfinite(value))
-        return value;
-    const double scale = std::pow(10.0, decimals);
-    const double result = std::round(value * scale) / scale;
-    return result == 0.0 ? 0.0 : result; // no "-0.0"
-}
-
-// Fixed-point text with trailing zeros trimmed ("12.5", "4.0"). Fixed notation keeps
-// sub-millimetre precision for UTM-sized coordinates, where %g would drop digits.
-std::string fixedNumber(double value, int decimals) {
-    if (!std::isfinite(value))
-        return std::isnan(value) ? ".nan" : (value > 0 ? ".inf" : "-.inf");
-    char buffer[64];
-    std::snprintf(buffer, sizeof buffer, "%.*f", decimals, rounded(value, decimals));
-    std::string text = buffer;
-    const size_t dot = text.find('.');
-    if (dot != std::string::npos) {
-        const size_t last = text.find_last_not_of('0');
-        text.erase(std::max(last + 1, dot + 2));
-    }
-    return text;
-}
-
-std::string dumped(const ordered_json& value, int indent) {
-    return value.dump(indent, ' ', false, ordered_json::error_handler_t::replace);
-}
+using formats::dumped;
+using formats::fixedNumber;
+using formats::headingsOf;
+using formats::kindAt;
+using formats::rounded;
 
 ordered_json metricsObject(const std::string& solver, const Metrics& m) {
     ordered_json object;
@@ -64,34 +43,6 @@ ordered_json robotObject(const RobotProfile& robot) {
             {"coverage_width", robot.coverageWidth},
             {"speed", robot.speed},
             {"turn_time", robot.turnTime}};
-}
-
-// Heading (radians) of travel from each point to the next. Zero-length steps and the
-// last point keep the previous heading; leading zero-length steps take the first real one.
-std::vector<double> headingsOf(const Polyline& points) {
-    std::vector<double> headings(points.size(), 0.0);
-    double current = 0.0;
-    bool known = false;
-    for (size_t i = 0; i + 1 < points.size(); ++i) {
-        const Vec2 step = points[i + 1] - points[i];
-        if (step.x != 0.0 || step.y != 0.0) {
-            current = std::atan2(step.y, step.x);
-            if (!known)
-                std::fill(headings.begin(), headings.begin() + i, current);
-            known = true;
-        }
-        headings[i] = current;
-    }
-    if (!points.empty())
-        headings.back() = current;
-    return headings;
-}
-
-// Kind of the segment leaving point i; the last point keeps the kind of the last segment.
-const char* kindAt(const CoveragePath& path, size_t i) {
-    if (path.kinds.empty())
-        return segmentKindName(SegmentKind::Transit);
-    return segmentKindName(path.kinds[std::min(i, path.kinds.size() - 1)]);
 }
 
 std::string lowerCaseExtension(const std::string& fileName) {
@@ -137,9 +88,11 @@ std::string pathToGeoJson(const CoveragePath& path, const PathExportInfo& info) 
     return dumped(root, -1) + "\n";
 }
 
-std::string pathToCsv(const CoveragePath& path) {
+std::string pathToCsv(const CoveragePath& path, const PathExportInfo& info) {
     const std::vector<double> headings = headingsOf(path.points);
     std::ostringstream out;
+    out << "# FloorCover path: x, y in metres, frame " << formats::frameDescription(info.epsg)
+        << "; heading in radians counter-clockwise from +x; kind stripe|contour|transit\n";
     out << "x,y,heading,kind\n";
     for (size_t i = 0; i < path.points.size(); ++i) {
         const Vec2 p = path.points[i];
@@ -166,6 +119,8 @@ std::string pathToJson(const CoveragePath& path, const PathExportInfo& info) {
     ordered_json root;
     root["solver"] = info.solver;
     root["units"] = "m";
+    root["heading_units"] = "rad";
+    root["frame"] = formats::frameDescription(info.epsg);
     root["robot"] = robotObject(info.robot);
     root["metrics"] = std::move(metrics);
     root["waypoints"] = std::move(waypoints);
@@ -179,6 +134,8 @@ std::string pathToRosYaml(const CoveragePath& path, const PathExportInfo& info) 
     std::ostringstream out;
     out << "# nav_msgs/msg/Path: robot-centre waypoints in metres (solver "
         << dumped(ordered_json(info.solver), -1) << ")\n";
+    out << "# frame: " << formats::frameDescription(info.epsg)
+        << "; orientation: quaternion x, y, z, w about +z\n";
     out << "header:\n  stamp:\n    sec: 0\n    nanosec: 0\n  frame_id: " << frameId << "\n";
     if (path.points.empty()) {
         out << "poses: []\n";
@@ -207,7 +164,7 @@ std::string pathToFormat(const std::string& fileName, const CoveragePath& path,
     if (extension == ".geojson")
         return pathToGeoJson(path, info);
     if (extension == ".csv")
-        return pathToCsv(path);
+        return pathToCsv(path, info);
     if (extension == ".json")
         return pathToJson(path, info);
     if (extension == ".yaml" || extension == ".yml")
@@ -217,5 +174,79 @@ std::string pathToFormat(const std::string& fileName, const CoveragePath& path,
         (extension.empty() ? std::string("(no file extension)") : "\"" + extension + "\"") +
         "; expected .geojson, .csv, .json, .yaml or .yml");
 }
+
+namespace formats {
+
+double rounded(double value, int decimals) {
+    if (!std::isfinite(value))
+        return value;
+    const double scale = std::pow(10.0, decimals);
+    const double result = std::round(value * scale) / scale;
+    return result == 0.0 ? 0.0 : result; // no "-0.0"
+}
+
+// Fixed-point text with trailing zeros trimmed ("12.5", "4.0"). Fixed notation keeps
+// sub-millimetre precision for UTM-sized coordinates, where %g would drop digits.
+std::string fixedNumber(double value, int decimals) {
+    if (!std::isfinite(value))
+        return std::isnan(value) ? ".nan" : (value > 0 ? ".inf" : "-.inf");
+    char buffer[64];
+    std::snprintf(buffer, sizeof buffer, "%.*f", decimals, rounded(value, decimals));
+    std::string text = buffer;
+    const size_t dot = text.find('.');
+    if (dot != std::string::npos) {
+        const size_t last = text.find_last_not_of('0');
+        text.erase(std::max(last + 1, dot + 2));
+    }
+    return text;
+}
+
+std::string dumped(const ordered_json& value, int indent) {
+    return value.dump(indent, ' ', false, ordered_json::error_handler_t::replace);
+}
+
+// Heading (radians) of travel from each point to the next. Zero-length steps and the
+// last point keep the previous heading; leading zero-length steps take the first real one.
+std::vector<double> headingsOf(const Polyline& points) {
+    std::vector<double> headings(points.size(), 0.0);
+    double current = 0.0;
+    bool known = false;
+    for (size_t i = 0; i + 1 < points.size(); ++i) {
+        const Vec2 step = points[i + 1] - points[i];
+        if (step.x != 0.0 || step.y != 0.0) {
+            current = std::atan2(step.y, step.x);
+            if (!known)
+                std::fill(headings.begin(), headings.begin() + i, current);
+            known = true;
+        }
+        headings[i] = current;
+    }
+    if (!points.empty())
+        headings.back() = current;
+    return headings;
+}
+
+// Kind of the segment leaving point i; the last point keeps the kind of the last segment.
+const char* kindAt(const CoveragePath& path, size_t i) {
+    if (path.kinds.empty())
+        return segmentKindName(SegmentKind::Transit);
+    return segmentKindName(path.kinds[std::min(i, path.kinds.size() - 1)]);
+}
+
+std::string frameDescription(const std::optional<int>& epsg) {
+    return epsg ? "EPSG:" + std::to_string(*epsg)
+                : std::string("local metres (no coordinate reference)");
+}
+
+double ringArea(const Ring& ring) {
+    double twice = 0.0;
+    for (size_t i = 0; i < ring.size(); ++i) {
+        const Vec2 a = ring[i], b = ring[(i + 1) % ring.size()];
+        twice += a.x * b.y - b.x * a.y;
+    }
+    return std::abs(twice) / 2.0;
+}
+
+} // namespace formats
 
 } // namespace fc

@@ -100,13 +100,18 @@ TEST(PathIO, MetricsLineHasTheSpecKeysInOrder) {
 TEST(PathIO, CsvHasHeaderOneRowPerWaypointAndHeadings) {
     const CoveragePath path = squarePath({0, 0});
     const auto rows = lines(pathToCsv(path));
-    ASSERT_EQ(rows.size(), path.points.size() + 1);
-    EXPECT_EQ(rows[0], "x,y,heading,kind");
-    EXPECT_EQ(rows[1], "0.0,0.0,0.0,stripe");
-    EXPECT_EQ(rows[2], "4.0,0.0,1.570796,contour");
-    EXPECT_EQ(rows[3], "4.0,3.0,3.141593,stripe");
-    EXPECT_EQ(rows[4], "0.0,3.0,-1.570796,transit");
-    EXPECT_EQ(rows[5], "0.0,1.0,-1.570796,transit") << "the last point keeps the heading";
+    ASSERT_EQ(rows.size(), path.points.size() + 2);
+    EXPECT_EQ(rows[0].rfind("# FloorCover path: x, y in metres, frame local metres", 0), 0u)
+        << rows[0];
+    EXPECT_EQ(rows[1], "x,y,heading,kind");
+    EXPECT_EQ(rows[2], "0.0,0.0,0.0,stripe");
+    EXPECT_EQ(rows[3], "4.0,0.0,1.570796,contour");
+    EXPECT_EQ(rows[4], "4.0,3.0,3.141593,stripe");
+    EXPECT_EQ(rows[5], "0.0,3.0,-1.570796,transit");
+    EXPECT_EQ(rows[6], "0.0,1.0,-1.570796,transit") << "the last point keeps the heading";
+    PathExportInfo utm;
+    utm.epsg = 25832;
+    EXPECT_NE(pathToCsv(path, utm).find("frame EPSG:25832;"), std::string::npos);
 }
 
 TEST(PathIO, JsonHoldsRobotMetricsAndWaypoints) {
@@ -126,7 +131,7 @@ TEST(PathIO, LargeCoordinatesKeepSubMillimetrePrecision) {
     const Vec2 origin{500000.123456, 5000000.654321};
     const CoveragePath path = squarePath(origin);
     const PathExportInfo info = exportInfo();
-    const auto csvRow = lines(pathToCsv(path))[1];
+    const auto csvRow = lines(pathToCsv(path))[2];
     EXPECT_EQ(csvRow.rfind("500000.123456,5000000.654321,", 0), 0u) << csvRow;
     const auto json = nlohmann::json::parse(pathToJson(path, info));
     EXPECT_EQ(json["waypoints"][0]["x"].get<double>(), origin.x);
@@ -198,7 +203,7 @@ TEST(PathIO, FormatChosenByExtension) {
     const CoveragePath path = squarePath({0, 0});
     const PathExportInfo info = exportInfo();
     EXPECT_EQ(pathToFormat("out.geojson", path, info), pathToGeoJson(path, info));
-    EXPECT_EQ(pathToFormat("dir/out.CSV", path, info), pathToCsv(path));
+    EXPECT_EQ(pathToFormat("dir/out.CSV", path, info), pathToCsv(path, info));
     EXPECT_EQ(pathToFormat("out.json", path, info), pathToJson(path, info));
     EXPECT_EQ(pathToFormat("out.yaml", path, info), pathToRosYaml(path, info));
     EXPECT_EQ(pathToFormat("out.yml", path, info), pathToRosYaml(path, info));

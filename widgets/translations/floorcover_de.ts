@@ -510,22 +510,6 @@ Abdeckungspfadplanung für Reinigungs- und Desinfektionsroboter.</translation>
         <translation>Es gibt keinen Pfad zum Exportieren: Planen Sie zuerst das aktuelle Dokument.</translation>
     </message>
     <message>
-        <source>Cannot export the path to %1: %2</source>
-        <translation>Der Pfad kann nicht nach %1 exportiert werden: %2</translation>
-    </message>
-    <message>
-        <source>Exported the path to %1</source>
-        <translation>Pfad nach %1 exportiert</translation>
-    </message>
-    <message>
-        <source>Export Path</source>
-        <translation>Pfad exportieren</translation>
-    </message>
-    <message>
-        <source>GeoJSON (*.geojson);;CSV (*.csv);;JSON (*.json);;ROS 2 nav_msgs/Path (*.yaml)</source>
-        <translation>GeoJSON (*.geojson);;CSV (*.csv);;JSON (*.json);;ROS 2 nav_msgs/Path (*.yaml)</translation>
-    </message>
-    <message>
         <source>Floor plan exported by FloorCover</source>
         <translation>Grundriss, exportiert von FloorCover</translation>
     </message>
@@ -595,6 +579,30 @@ Abdeckungspfadplanung für Reinigungs- und Desinfektionsroboter.</translation>
             <numerusform>%1 importiert (%n Warnung)</numerusform>
             <numerusform>%1 importiert (%n Warnungen)</numerusform>
         </translation>
+    </message>
+    <message>
+        <source>Cannot export the path to %1: unknown file extension</source>
+        <translation>Der Pfad kann nicht nach %1 exportiert werden: unbekannte Dateiendung</translation>
+    </message>
+    <message>
+        <source>Cannot export to %1: %2</source>
+        <translation>Export nach %1 nicht möglich: %2</translation>
+    </message>
+    <message>
+        <source>Exported %1 to %2</source>
+        <translation>%1 nach %2 exportiert</translation>
+    </message>
+    <message>
+        <source>Export</source>
+        <translation>Exportieren</translation>
+    </message>
+    <message>
+        <source>Export &amp;Zones…</source>
+        <translation>Zo&amp;nen exportieren…</translation>
+    </message>
+    <message>
+        <source>Export P&amp;lan (WGS84 GeoJSON, WKT)…</source>
+        <translation>G&amp;rundriss exportieren (WGS84-GeoJSON, WKT)…</translation>
     </message>
 </context>
 <context>

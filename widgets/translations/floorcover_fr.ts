@@ -510,22 +510,6 @@ Planification de trajets de couverture pour robots de nettoyage et de désinfect
         <translation>Aucun trajet à exporter : planifiez d’abord le document courant.</translation>
     </message>
     <message>
-        <source>Cannot export the path to %1: %2</source>
-        <translation>Impossible d’exporter le trajet vers %1 : %2</translation>
-    </message>
-    <message>
-        <source>Exported the path to %1</source>
-        <translation>Trajet exporté vers %1</translation>
-    </message>
-    <message>
-        <source>Export Path</source>
-        <translation>Exporter le trajet</translation>
-    </message>
-    <message>
-        <source>GeoJSON (*.geojson);;CSV (*.csv);;JSON (*.json);;ROS 2 nav_msgs/Path (*.yaml)</source>
-        <translation>GeoJSON (*.geojson);;CSV (*.csv);;JSON (*.json);;ROS 2 nav_msgs/Path (*.yaml)</translation>
-    </message>
-    <message>
         <source>Floor plan exported by FloorCover</source>
         <translation>Plan exporté par FloorCover</translation>
     </message>
@@ -595,6 +579,30 @@ Planification de trajets de couverture pour robots de nettoyage et de désinfect
             <numerusform>%1 importé (%n avertissement)</numerusform>
             <numerusform>%1 importé (%n avertissements)</numerusform>
         </translation>
+    </message>
+    <message>
+        <source>Cannot export the path to %1: unknown file extension</source>
+        <translation>Impossible d’exporter le trajet vers %1 : extension de fichier inconnue</translation>
+    </message>
+    <message>
+        <source>Cannot export to %1: %2</source>
+        <translation>Impossible d’exporter vers %1 : %2</translation>
+    </message>
+    <message>
+        <source>Exported %1 to %2</source>
+        <translation>%1 exporté vers %2</translation>
+    </message>
+    <message>
+        <source>Export</source>
+        <translation>Exporter</translation>
+    </message>
+    <message>
+        <source>Export &amp;Zones…</source>
+        <translation>Exporter les &amp;zones…</translation>
+    </message>
+    <message>
+        <source>Export P&amp;lan (WGS84 GeoJSON, WKT)…</source>
+        <translation>Exporter le p&amp;lan (GeoJSON WGS84, WKT)…</translation>
     </message>
 </context>
 <context>
