@@ -2,7 +2,10 @@
 // canvas shows the tiles and the tour, the figures appear in the dock, the waypoints export,
 // and an edit of the floor drops the stale tiling.
 #include "EditorFixture.h"
+#include "learning/ppo/PpoOrdering.h"
 #include "tiling/WaypointOrder.h"
+#include "tilingmode/PpoTrainer.h"
+#include "tilingmode/PpoTrainingPanel.h"
 #include "tilingmode/TilingController.h"
 #include "tilingmode/TilingDock.h"
 #include "tilingmode/TilingItem.h"
@@ -18,8 +21,10 @@ using namespace fc::ui;
 class TilingModeTest : public QObject {
     Q_OBJECT
 private slots:
+    void initTestCase() { registerPpoOrdering(); } // as the app's main does
     void tilesOrdersShowsAndExports();
     void badRobotIsReportedNotCrashing();
+    void trainsPpoWithALiveCurveAndPlansWithIt();
 };
 
 void TilingModeTest::tilesOrdersShowsAndExports() {
@@ -104,6 +109,33 @@ void TilingModeTest::badRobotIsReportedNotCrashing() {
     QVERIFY2(controller->errorMessage().contains(QStringLiteral("leg")) ||
                  controller->errorMessage().contains(QStringLiteral("block")),
              qPrintable(controller->errorMessage()));
+}
+
+void TilingModeTest::trainsPpoWithALiveCurveAndPlansWithIt() {
+    auto window = test::makeWindow();
+    QVERIFY(window->openFile(QStringLiteral(FC_PLANS_DIR "/simple.geojson")));
+    TilingMode* mode = window->tilingMode();
+    mode->action()->trigger();
+    PpoTrainingPanel* panel = mode->dock()->trainingPanel();
+    panel->setSeconds(5);
+    QSignalSpy trained(panel->trainer(), &PpoTrainer::trained);
+    panel->start();
+    QVERIFY(panel->trainer()->isRunning());
+    QTRY_VERIFY_WITH_TIMEOUT(!panel->trainer()->isRunning(), 120000);
+    QCOMPARE(trained.count(), 1);
+    QVERIFY(panel->plottedPoints() > 0); // the curve grew while it trained
+    QVERIFY2(panel->statusText().contains(QStringLiteral("Trained")),
+             qPrintable(panel->statusText()));
+    QVERIFY(QFile::exists(panel->trainer()->modelPath()));
+
+    // "ppo" now plans with the trained network instead of training on first use.
+    mode->dock()->setSolver(QStringLiteral("ppo"));
+    QCOMPARE(mode->dock()->solver(), QStringLiteral("ppo"));
+    mode->dock()->tileAndOrder();
+    QTRY_VERIFY_WITH_TIMEOUT(!mode->controller()->isBusy(), 120000);
+    const auto plan = mode->controller()->result();
+    QVERIFY2(plan, qPrintable(mode->controller()->errorMessage()));
+    QVERIFY(tiling::isTour(plan->tour, plan->problem.size()));
 }
 
 QTEST_MAIN(TilingModeTest)

@@ -2,6 +2,7 @@
 
 #include "Conversions.h"
 #include "formats/PlanIO.h"
+#include "tilingmode/PpoTrainingPanel.h"
 #include "tilingmode/TilingController.h"
 #include "tilingmode/TilingItem.h"
 
@@ -10,6 +11,7 @@
 #include <QDoubleSpinBox>
 #include <QFileDialog>
 #include <QFormLayout>
+#include <QGroupBox>
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QPushButton>
@@ -72,7 +74,11 @@ TilingDock::TilingDock(TilingController* controller, QWidget* parent)
     layout->addWidget(metrics_);
     export_ = new QPushButton(tr("Export Waypoints…"));
     layout->addWidget(export_);
-    layout->addStretch();
+    auto* training = new QGroupBox(tr("Learnt ordering (ppo)"));
+    auto* trainingLayout = new QVBoxLayout(training);
+    training_ = new PpoTrainingPanel;
+    trainingLayout->addWidget(training_);
+    layout->addWidget(training, 1);
     setWidget(body);
 
     const tiling::TilingRobotProfile defaults;
@@ -86,6 +92,9 @@ TilingDock::TilingDock(TilingController* controller, QWidget* parent)
             settings.value(QStringLiteral("mass%1").arg(b + 1), defaults.blockMass[b]).toDouble());
     settings.endGroup();
     commitRobot();
+    training_->setSeed(static_cast<quint64>(seed_->value()));
+    connect(seed_, qOverload<int>(&QSpinBox::valueChanged), this,
+            [this](int seed) { training_->setSeed(static_cast<quint64>(seed)); });
 
     connect(run_, &QPushButton::clicked, this, &TilingDock::tileAndOrder);
     connect(export_, &QPushButton::clicked, this, &TilingDock::chooseExportFile);
@@ -133,6 +142,7 @@ void TilingDock::tileAndOrder() {
     for (int b = 0; b < 4; ++b)
         settings.setValue(QStringLiteral("mass%1").arg(b + 1), masses_[b]->value());
     controller_->run(solver(), static_cast<quint64>(seed_->value()));
+    training_->setSeed(static_cast<quint64>(seed_->value()));
 }
 
 void TilingDock::refresh() {

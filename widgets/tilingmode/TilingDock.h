@@ -15,6 +15,7 @@ class QSpinBox;
 
 namespace fc::ui {
 
+class PpoTrainingPanel;
 class TilingController;
 
 class TilingDock : public QDockWidget {
@@ -29,6 +30,7 @@ public:
     // reason in lastError() when there is no result or the file cannot be written.
     bool exportWaypoints(const QString& path);
     QString lastError() const { return lastError_; }
+    PpoTrainingPanel* trainingPanel() const { return training_; }
 
 public slots:
     void tileAndOrder();
@@ -50,6 +52,7 @@ private:
     QPushButton* export_;
     QCheckBox* showTiles_;
     QLabel* metrics_;
+    PpoTrainingPanel* training_;
     QString lastError_;
 };
 
