@@ -58,7 +58,9 @@ zigzag|spiral|greedy|aco|aco+2opt|ga|exact|ppo-policy|ppo [--out FILE.csv|FILE.j
   with no fitting placement is rejected at once), 2,000,000 placements per piece. A piece of
   n cells may leave n % 4 of them out (four cells a tile). A piece the search does not solve
   within the budget gets a greedy fill with one-step look-ahead, which may leave more cells
-  untiled. Placements are tried in order of how far they reach in scan order, so where
+  untiled; then each such cell's neighbourhood (the tiles within 6 lattice squares) is lifted
+  and re-tiled exactly (200,000 placements a patch), kept where fewer cells stay untiled.
+  Placements are tried in order of how far they reach in scan order, so where
   rectangles fill a row the tiling is all rectangles; other shapes appear along slanted
   walls.
 * **Headings**: the lattice's diagonals alternate, so a rectangle at an odd position is the
@@ -110,15 +112,18 @@ const char* kLimitations = R"(
 * The policy is trained for under a minute of one thread's time; the paper trained far
   longer. Its most likely move is the cheapest one almost everywhere (its greedy decode is
   the greedy tour on both sample plans); what it learnt shows in its sampled tours, of
-  which `ppo-policy` keeps the best: about `aco` on `simple`, between `greedy` and `aco` on
-  `simple-diamond`, and about `greedy` on the small scattered instances. `ppo` meets the
-  issue's target (at least as good as `aco` in energy) only with the polish, which does
-  nearly as much for `aco` (`aco+2opt`): the margin of `ppo` over `aco+2opt` is what the
-  policy adds over the ant colony as a starting tour.
+  which `ppo-policy` keeps the best: a few per cent above `aco` and below `greedy` on the
+  sample plans, and about `greedy` on the small scattered instances. `ppo` meets the issue's
+  target (at least as good as `aco` in energy) only with the polish, which does as much for
+  `aco` (`aco+2opt`): the two end within 1% of each other, so as a starting tour the learnt
+  policy is worth about as much as the ant colony, no more.
 * The backtracking solves every piece whose dead ends are local; on floors with slanted walls
   it can run out of budget and the greedy fill leaves more cells than the size % 4 minimum.
-* No tiling mode in the editor yet (the issue's GUI part), and the live training curve of the
-  DQN dock is not wired to `ppo`.
+  The local repair closes pockets only where a patch holds four or more untiled cells; lone
+  pockets of one to three cells along a slanted wall (14 cells on `simple-diamond`, 0.3% of
+  its floor) would need tiles moved across the whole piece, and stay.
+* In the editor (Plan > Tiling Robot Mode) the tiles, the tour and the figures show on the
+  canvas and in the Tiling Robot dock, which also trains `ppo` with a live curve.
 * The shapes, levers and masses are readings of a paper whose figures are missing (see Model).
 )";
 
