@@ -2,6 +2,77 @@
 <!DOCTYPE TS>
 <TS version="2.1" language="de_DE">
 <context>
+    <name>fc::ui::BuildingImportDialog</name>
+    <message>
+        <source>File&apos;s unit</source>
+        <translation>Einheit der Datei</translation>
+    </message>
+    <message>
+        <source>Metres</source>
+        <translation>Meter</translation>
+    </message>
+    <message>
+        <source>Centimetres</source>
+        <translation>Zentimeter</translation>
+    </message>
+    <message>
+        <source>Millimetres</source>
+        <translation>Millimeter</translation>
+    </message>
+    <message>
+        <source>Feet</source>
+        <translation>Fuß</translation>
+    </message>
+    <message>
+        <source>Inches</source>
+        <translation>Zoll</translation>
+    </message>
+    <message>
+        <source>Door leaves do not block</source>
+        <translation>Türblätter blockieren nicht</translation>
+    </message>
+    <message>
+        <source>Import 3D Building Model — %1</source>
+        <translation>3D-Gebäudemodell importieren – %1</translation>
+    </message>
+    <message>
+        <source> m</source>
+        <translation> m</translation>
+    </message>
+    <message>
+        <source>Automatic</source>
+        <translation>Automatisch</translation>
+    </message>
+    <message>
+        <source>Y up</source>
+        <translation>Y oben</translation>
+    </message>
+    <message>
+        <source>Z up</source>
+        <translation>Z oben</translation>
+    </message>
+    <message>
+        <source>Storey:</source>
+        <translation>Geschoss:</translation>
+    </message>
+    <message>
+        <source>Cut above the floor:</source>
+        <translation>Schnitt über dem Boden:</translation>
+    </message>
+    <message>
+        <source>Unit:</source>
+        <translation>Einheit:</translation>
+    </message>
+    <message>
+        <source>Up axis:</source>
+        <translation>Hochachse:</translation>
+    </message>
+    <message>
+        <source>%1 obstacles, %2 rooms</source>
+        <translation>%1 Hindernisse, %2 Räume</translation>
+    </message>
+</context>
+<context>
     <name>fc::ui::CanvasView</name>
     <message>
         <source>%1 m</source>
@@ -566,10 +637,6 @@ Abdeckungspfadplanung für Reinigungs- und Desinfektionsroboter.</translation>
         <translation>Plan importieren</translation>
     </message>
     <message>
-        <source>Importable plans (%1);;DXF drawings (*.dxf);;ROS occupancy maps (*.yaml *.yml);;WKT polygons (*.wkt);;GeoJSON plans (*.geojson *.json)</source>
-        <translation>Importierbare Pläne (%1);;DXF-Zeichnungen (*.dxf);;ROS-Belegungskarten (*.yaml *.yml);;WKT-Polygone (*.wkt);;GeoJSON-Pläne (*.geojson *.json)</translation>
-    </message>
-    <message>
         <source>Import %1</source>
         <translation>%1 importieren</translation>
     </message>
@@ -603,6 +670,10 @@ Abdeckungspfadplanung für Reinigungs- und Desinfektionsroboter.</translation>
     <message>
         <source>Export P&amp;lan (WGS84 GeoJSON, WKT)…</source>
         <translation>G&amp;rundriss exportieren (WGS84-GeoJSON, WKT)…</translation>
+    </message>
+    <message>
+        <source>Importable plans (%1);;DXF drawings (*.dxf);;ROS occupancy maps (*.yaml *.yml);;WKT polygons (*.wkt);;GeoJSON plans (*.geojson *.json);;3D building models (*.ifc *.obj *.gltf *.glb *.stl)</source>
+        <translation>Importierbare Pläne (%1);;DXF-Zeichnungen (*.dxf);;ROS-Belegungskarten (*.yaml *.yml);;WKT-Polygone (*.wkt);;GeoJSON-Pläne (*.geojson *.json);;3D-Gebäudemodelle (*.ifc *.obj *.gltf *.glb *.stl)</translation>
     </message>
 </context>
 <context>
@@ -999,6 +1070,53 @@ Abdeckungspfadplanung für Reinigungs- und Desinfektionsroboter.</translation>
     </message>
 </context>
 <context>
+    <name>fc::ui::PpoTrainingPanel</name>
+    <message>
+        <source> s</source>
+        <translation> s</translation>
+    </message>
+    <message>
+        <source>Training time for the ppo policy (it learns on random rooms, so one model serves every floor)</source>
+        <translation>Trainingszeit der ppo-Strategie (sie lernt auf zufälligen Räumen, ein Modell dient also jedem Grundriss)</translation>
+    </message>
+    <message>
+        <source>Train ppo</source>
+        <translation>ppo trainieren</translation>
+    </message>
+    <message>
+        <source>Stop</source>
+        <translation>Anhalten</translation>
+    </message>
+    <message>
+        <source>ppo trains on first use (about a minute); train it here to watch it learn.</source>
+        <translation>ppo trainiert bei der ersten Verwendung (etwa eine Minute); hier trainiert, sehen Sie ihm beim Lernen zu.</translation>
+    </message>
+    <message>
+        <source>PPO update</source>
+        <translation>PPO-Aktualisierung</translation>
+    </message>
+    <message>
+        <source>Energy per waypoint (kg m)</source>
+        <translation>Energie je Wegpunkt (kg m)</translation>
+    </message>
+    <message>
+        <source>Trained for %1 updates; ppo now plans with %2.</source>
+        <translation>%1 Aktualisierungen trainiert; ppo plant jetzt mit %2.</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;Training failed:&lt;/b&gt; %1</source>
+        <translation>&lt;b&gt;Training fehlgeschlagen:&lt;/b&gt; %1</translation>
+    </message>
+    <message>
+        <source>Training…</source>
+        <translation>Training läuft…</translation>
+    </message>
+    <message>
+        <source>Update %1, %2 kg m per waypoint, %3 s</source>
+        <translation>Aktualisierung %1, %2 kg m je Wegpunkt, %3 s</translation>
+    </message>
+</context>
+<context>
     <name>fc::ui::PreferencesDialog</name>
     <message>
         <source>Preferences</source>
@@ -1011,6 +1129,104 @@ Abdeckungspfadplanung für Reinigungs- und Desinfektionsroboter.</translation>
     <message>
         <source>Language</source>
         <translation>Sprache</translation>
+    </message>
+</context>
+<context>
+    <name>fc::ui::TilingDock</name>
+    <message>
+        <source>Tiling Robot</source>
+        <translation>Kachelroboter</translation>
+    </message>
+    <message>
+        <source>How the tiles are ordered: zigzag and spiral follow the rows, greedy, aco and ga minimise the energy, exact only for a few tiles, ppo is the learnt pointer network.</source>
+        <translation>Wie die Kacheln geordnet werden: zigzag und spiral folgen den Reihen, greedy, aco und ga minimieren die Energie, exact nur für wenige Kacheln, ppo ist das gelernte Pointer-Netz.</translation>
+    </message>
+    <message>
+        <source>Ordering:</source>
+        <translation>Reihenfolge:</translation>
+    </message>
+    <message>
+        <source>Seed:</source>
+        <translation>Startwert:</translation>
+    </message>
+    <message>
+        <source> m</source>
+        <translation> m</translation>
+    </message>
+    <message>
+        <source>Block leg:</source>
+        <translation>Blockkathete:</translation>
+    </message>
+    <message>
+        <source>Mass of block B%1 in kg</source>
+        <translation>Masse von Block B%1 in kg</translation>
+    </message>
+    <message>
+        <source>Block masses (kg):</source>
+        <translation>Blockmassen (kg):</translation>
+    </message>
+    <message>
+        <source>Tile and Order</source>
+        <translation>Kacheln und ordnen</translation>
+    </message>
+    <message>
+        <source>Show tiles on the canvas</source>
+        <translation>Kacheln auf der Zeichenfläche zeigen</translation>
+    </message>
+    <message>
+        <source>Export Waypoints…</source>
+        <translation>Wegpunkte exportieren…</translation>
+    </message>
+    <message>
+        <source>Learnt ordering (ppo)</source>
+        <translation>Gelernte Reihenfolge (ppo)</translation>
+    </message>
+    <message>
+        <source>Tiling and ordering… (ppo trains its network first)</source>
+        <translation>Kacheln und ordnen… (ppo trainiert zuerst sein Netz)</translation>
+    </message>
+    <message>
+        <source>Tiling and ordering…</source>
+        <translation>Kacheln und ordnen…</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;Cannot tile:&lt;/b&gt; %1</source>
+        <translation>&lt;b&gt;Kacheln nicht möglich:&lt;/b&gt; %1</translation>
+    </message>
+    <message>
+        <source>Press “Tile and Order” to cover the floor with the robot&apos;s shapes and order the tiles by energy.</source>
+        <translation>„Kacheln und ordnen“ drücken, um die Fläche mit den Formen des Roboters zu belegen und die Kacheln nach Energie zu ordnen.</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;%1&lt;/b&gt;: energy %2 kg m (translation %3, shape changes %4, turns %5)&lt;br&gt;%6 waypoints, %7 m, %8 shape changes, ordered in %9 s&lt;br&gt;%10 cells free, %11 left untiled, %12 unreachable (red)&lt;br&gt;%13</source>
+        <translation>&lt;b&gt;%1&lt;/b&gt;: Energie %2 kg m (Verschiebung %3, Formwechsel %4, Drehungen %5)&lt;br&gt;%6 Wegpunkte, %7 m, %8 Formwechsel, geordnet in %9 s&lt;br&gt;%10 Zellen frei, %11 ungekachelt, %12 unerreichbar (rot)&lt;br&gt;%13</translation>
+    </message>
+    <message>
+        <source>No tiling to export: press “Tile and Order” first.</source>
+        <translation>Keine Kachelung zum Exportieren: zuerst „Kacheln und ordnen“ drücken.</translation>
+    </message>
+    <message>
+        <source>Export Waypoints</source>
+        <translation>Wegpunkte exportieren</translation>
+    </message>
+    <message>
+        <source>CSV (*.csv);;JSON (*.json)</source>
+        <translation>CSV (*.csv);;JSON (*.json)</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;Export failed:&lt;/b&gt; %1</source>
+        <translation>&lt;b&gt;Export fehlgeschlagen:&lt;/b&gt; %1</translation>
+    </message>
+</context>
+<context>
+    <name>fc::ui::TilingMode</name>
+    <message>
+        <source>&amp;Tiling Robot Mode</source>
+        <translation>&amp;Kachelroboter-Modus</translation>
+    </message>
+    <message>
+        <source>Cover the floor with a shape-shifting tiling robot&apos;s tiles and order them by energy</source>
+        <translation>Die Fläche mit den Kacheln eines formwandelnden Kachelroboters belegen und sie nach Energie ordnen</translation>
     </message>
 </context>
 <context>

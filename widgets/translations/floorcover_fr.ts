@@ -2,6 +2,77 @@
 <!DOCTYPE TS>
 <TS version="2.1" language="fr_FR">
 <context>
+    <name>fc::ui::BuildingImportDialog</name>
+    <message>
+        <source>File&apos;s unit</source>
+        <translation>Unité du fichier</translation>
+    </message>
+    <message>
+        <source>Metres</source>
+        <translation>Mètres</translation>
+    </message>
+    <message>
+        <source>Centimetres</source>
+        <translation>Centimètres</translation>
+    </message>
+    <message>
+        <source>Millimetres</source>
+        <translation>Millimètres</translation>
+    </message>
+    <message>
+        <source>Feet</source>
+        <translation>Pieds</translation>
+    </message>
+    <message>
+        <source>Inches</source>
+        <translation>Pouces</translation>
+    </message>
+    <message>
+        <source>Door leaves do not block</source>
+        <translation>Les vantaux de porte ne bloquent pas</translation>
+    </message>
+    <message>
+        <source>Import 3D Building Model — %1</source>
+        <translation>Importer une maquette 3D de bâtiment — %1</translation>
+    </message>
+    <message>
+        <source> m</source>
+        <translation> m</translation>
+    </message>
+    <message>
+        <source>Automatic</source>
+        <translation>Automatique</translation>
+    </message>
+    <message>
+        <source>Y up</source>
+        <translation>Y vers le haut</translation>
+    </message>
+    <message>
+        <source>Z up</source>
+        <translation>Z vers le haut</translation>
+    </message>
+    <message>
+        <source>Storey:</source>
+        <translation>Étage :</translation>
+    </message>
+    <message>
+        <source>Cut above the floor:</source>
+        <translation>Coupe au-dessus du sol :</translation>
+    </message>
+    <message>
+        <source>Unit:</source>
+        <translation>Unité :</translation>
+    </message>
+    <message>
+        <source>Up axis:</source>
+        <translation>Axe vertical :</translation>
+    </message>
+    <message>
+        <source>%1 obstacles, %2 rooms</source>
+        <translation>%1 obstacles, %2 pièces</translation>
+    </message>
+</context>
+<context>
     <name>fc::ui::CanvasView</name>
     <message>
         <source>%1 m</source>
@@ -566,10 +637,6 @@ Planification de trajets de couverture pour robots de nettoyage et de désinfect
         <translation>Importer un plan</translation>
     </message>
     <message>
-        <source>Importable plans (%1);;DXF drawings (*.dxf);;ROS occupancy maps (*.yaml *.yml);;WKT polygons (*.wkt);;GeoJSON plans (*.geojson *.json)</source>
-        <translation>Plans importables (%1);;Dessins DXF (*.dxf);;Cartes d’occupation ROS (*.yaml *.yml);;Polygones WKT (*.wkt);;Plans GeoJSON (*.geojson *.json)</translation>
-    </message>
-    <message>
         <source>Import %1</source>
         <translation>Importer %1</translation>
     </message>
@@ -603,6 +670,10 @@ Planification de trajets de couverture pour robots de nettoyage et de désinfect
     <message>
         <source>Export P&amp;lan (WGS84 GeoJSON, WKT)…</source>
         <translation>Exporter le p&amp;lan (GeoJSON WGS84, WKT)…</translation>
+    </message>
+    <message>
+        <source>Importable plans (%1);;DXF drawings (*.dxf);;ROS occupancy maps (*.yaml *.yml);;WKT polygons (*.wkt);;GeoJSON plans (*.geojson *.json);;3D building models (*.ifc *.obj *.gltf *.glb *.stl)</source>
+        <translation>Plans importables (%1);;Dessins DXF (*.dxf);;Cartes d’occupation ROS (*.yaml *.yml);;Polygones WKT (*.wkt);;Plans GeoJSON (*.geojson *.json);;Maquettes 3D de bâtiment (*.ifc *.obj *.gltf *.glb *.stl)</translation>
     </message>
 </context>
 <context>
@@ -999,6 +1070,53 @@ Planification de trajets de couverture pour robots de nettoyage et de désinfect
     </message>
 </context>
 <context>
+    <name>fc::ui::PpoTrainingPanel</name>
+    <message>
+        <source> s</source>
+        <translation> s</translation>
+    </message>
+    <message>
+        <source>Training time for the ppo policy (it learns on random rooms, so one model serves every floor)</source>
+        <translation>Durée d’entraînement de la politique ppo (elle apprend sur des pièces aléatoires : un modèle sert à tous les plans)</translation>
+    </message>
+    <message>
+        <source>Train ppo</source>
+        <translation>Entraîner ppo</translation>
+    </message>
+    <message>
+        <source>Stop</source>
+        <translation>Arrêter</translation>
+    </message>
+    <message>
+        <source>ppo trains on first use (about a minute); train it here to watch it learn.</source>
+        <translation>ppo s’entraîne à la première utilisation (environ une minute) ; entraînez-le ici pour le voir apprendre.</translation>
+    </message>
+    <message>
+        <source>PPO update</source>
+        <translation>Mise à jour PPO</translation>
+    </message>
+    <message>
+        <source>Energy per waypoint (kg m)</source>
+        <translation>Énergie par point de passage (kg m)</translation>
+    </message>
+    <message>
+        <source>Trained for %1 updates; ppo now plans with %2.</source>
+        <translation>Entraîné sur %1 mises à jour ; ppo planifie désormais avec %2.</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;Training failed:&lt;/b&gt; %1</source>
+        <translation>&lt;b&gt;Échec de l’entraînement :&lt;/b&gt; %1</translation>
+    </message>
+    <message>
+        <source>Training…</source>
+        <translation>Entraînement…</translation>
+    </message>
+    <message>
+        <source>Update %1, %2 kg m per waypoint, %3 s</source>
+        <translation>Mise à jour %1, %2 kg m par point de passage, %3 s</translation>
+    </message>
+</context>
+<context>
     <name>fc::ui::PreferencesDialog</name>
     <message>
         <source>Preferences</source>
@@ -1011,6 +1129,104 @@ Planification de trajets de couverture pour robots de nettoyage et de désinfect
     <message>
         <source>Language</source>
         <translation>Langue</translation>
+    </message>
+</context>
+<context>
+    <name>fc::ui::TilingDock</name>
+    <message>
+        <source>Tiling Robot</source>
+        <translation>Robot à pavage</translation>
+    </message>
+    <message>
+        <source>How the tiles are ordered: zigzag and spiral follow the rows, greedy, aco and ga minimise the energy, exact only for a few tiles, ppo is the learnt pointer network.</source>
+        <translation>Ordre des tuiles : zigzag et spiral suivent les rangées, greedy, aco et ga minimisent l’énergie, exact seulement pour peu de tuiles, ppo est le réseau pointeur appris.</translation>
+    </message>
+    <message>
+        <source>Ordering:</source>
+        <translation>Ordre :</translation>
+    </message>
+    <message>
+        <source>Seed:</source>
+        <translation>Graine :</translation>
+    </message>
+    <message>
+        <source> m</source>
+        <translation> m</translation>
+    </message>
+    <message>
+        <source>Block leg:</source>
+        <translation>Côté de bloc :</translation>
+    </message>
+    <message>
+        <source>Mass of block B%1 in kg</source>
+        <translation>Masse du bloc B%1 en kg</translation>
+    </message>
+    <message>
+        <source>Block masses (kg):</source>
+        <translation>Masses des blocs (kg) :</translation>
+    </message>
+    <message>
+        <source>Tile and Order</source>
+        <translation>Paver et ordonner</translation>
+    </message>
+    <message>
+        <source>Show tiles on the canvas</source>
+        <translation>Afficher les tuiles sur le plan</translation>
+    </message>
+    <message>
+        <source>Export Waypoints…</source>
+        <translation>Exporter les points de passage…</translation>
+    </message>
+    <message>
+        <source>Learnt ordering (ppo)</source>
+        <translation>Ordre appris (ppo)</translation>
+    </message>
+    <message>
+        <source>Tiling and ordering… (ppo trains its network first)</source>
+        <translation>Pavage et ordonnancement… (ppo entraîne d’abord son réseau)</translation>
+    </message>
+    <message>
+        <source>Tiling and ordering…</source>
+        <translation>Pavage et ordonnancement…</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;Cannot tile:&lt;/b&gt; %1</source>
+        <translation>&lt;b&gt;Pavage impossible :&lt;/b&gt; %1</translation>
+    </message>
+    <message>
+        <source>Press “Tile and Order” to cover the floor with the robot&apos;s shapes and order the tiles by energy.</source>
+        <translation>Cliquez sur « Paver et ordonner » pour couvrir le sol avec les formes du robot et ordonner les tuiles selon l’énergie.</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;%1&lt;/b&gt;: energy %2 kg m (translation %3, shape changes %4, turns %5)&lt;br&gt;%6 waypoints, %7 m, %8 shape changes, ordered in %9 s&lt;br&gt;%10 cells free, %11 left untiled, %12 unreachable (red)&lt;br&gt;%13</source>
+        <translation>&lt;b&gt;%1&lt;/b&gt; : énergie %2 kg m (translation %3, changements de forme %4, rotations %5)&lt;br&gt;%6 points de passage, %7 m, %8 changements de forme, ordonné en %9 s&lt;br&gt;%10 cellules libres, %11 non pavées, %12 inaccessibles (rouge)&lt;br&gt;%13</translation>
+    </message>
+    <message>
+        <source>No tiling to export: press “Tile and Order” first.</source>
+        <translation>Aucun pavage à exporter : cliquez d’abord sur « Paver et ordonner ».</translation>
+    </message>
+    <message>
+        <source>Export Waypoints</source>
+        <translation>Exporter les points de passage</translation>
+    </message>
+    <message>
+        <source>CSV (*.csv);;JSON (*.json)</source>
+        <translation>CSV (*.csv);;JSON (*.json)</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;Export failed:&lt;/b&gt; %1</source>
+        <translation>&lt;b&gt;Échec de l’export :&lt;/b&gt; %1</translation>
+    </message>
+</context>
+<context>
+    <name>fc::ui::TilingMode</name>
+    <message>
+        <source>&amp;Tiling Robot Mode</source>
+        <translation>Mode robot à &amp;pavage</translation>
+    </message>
+    <message>
+        <source>Cover the floor with a shape-shifting tiling robot&apos;s tiles and order them by energy</source>
+        <translation>Couvrir le sol avec les tuiles d’un robot à pavage reconfigurable et les ordonner selon l’énergie</translation>
     </message>
 </context>
 <context>
