@@ -3,12 +3,12 @@
 // and measures the gap to exact/heuristic on 100 random queries.
 //   floorcover-dqn-report [--seconds S] [--seed N] [--queries N] [--cases a,b]
 //                         [--settings paper,improved,improved+gamma=1,...] --out DIR
-// A setting is "paper" or "improved", optionally followed by "+key=value" changes (an
-// ablation): mask=0|1, reward=paper|cost, nstep=N, gamma=G, lr=R, eps=STEPS, net=paper|small,
-// refine=none|corners|local-search, sync=STEPS, batch=N, features=0|1, conv=C (all three
-// layers), hidden=N.
-// Writes DIR/curves-<case>-<setting>.csv and prints a Markdown table (docs/dqn.md). Time is
-// the training thread's CPU time, so a busy machine does not change the figures.
+// A setting is "paper", "improved" or "graph", optionally followed by "+key=value" changes (an
+// ablation): state=image|graph (the state and its network), mask=0|1, reward=paper|cost, nstep=N,
+// gamma=G, lr=R, eps=STEPS, net=paper|small, refine=none|corners|local-search, sync=STEPS, batch=N,
+// features=0|1, conv=C (all three layers), hidden=N. Writes DIR/curves-<case>-<setting>.csv and
+// prints a Markdown table (docs/dqn.md). Time is the training thread's CPU time, so a busy machine
+// does not change the figures.
 #include "formats/PlanIO.h"
 #include "learning/dqn/DqnTrainer.h"
 #include "pipeline/Planner.h"
@@ -59,8 +59,7 @@ TrainingOptions settingOptions(const std::string& setting, std::uint64_t seed) {
             out.push_back(item);
         return out;
     }();
-    TrainingOptions o =
-        parts.at(0) == "paper" ? TrainingOptions::paper(seed) : TrainingOptions::improved(seed);
+    TrainingOptions o = TrainingOptions::named(parts.at(0), seed);
     const TrainingOptions paper = TrainingOptions::paper(seed);
     for (std::size_t i = 1; i < parts.size(); ++i) {
         const std::string key = parts[i].substr(0, parts[i].find('='));
@@ -98,7 +97,15 @@ TrainingOptions settingOptions(const std::string& setting, std::uint64_t seed) {
             o.agent.hiddenUnits = std::stoi(value);
         else if (key == "features")
             o.environment.costChannels = value == "1";
-        else if (key == "refine")
+        else if (key == "state") {
+            const TrainingOptions from =
+                value == "graph" ? TrainingOptions::graph(seed) : TrainingOptions::improved(seed);
+            o.environment.graphState = from.environment.graphState;
+            o.environment.costChannels = from.environment.costChannels;
+            o.agent.network = from.agent.network;
+            o.agent.hiddenUnits = from.agent.hiddenUnits;
+            o.agent.replayCapacity = from.agent.replayCapacity;
+        } else if (key == "refine")
             o.refinement = refinementFromName(value);
         else
             throw std::invalid_argument("unknown setting change " + key);
