@@ -20,9 +20,9 @@ namespace fc {
 
 // Convolutional: the paper's image network. Graph: a per-corner network over the
 // environment's graph-level state (actionCount x inputChannels features, node-major): a shared
-// encoder (inputChannels -> hidden -> hidden), a context of the mean and max of the valid
-// corners' encodings (feature 0 marks them), and a shared head (2 x hidden + hidden ->
-// hidden -> 1) giving Q(s, a) per corner.
+// encoder (inputChannels -> hidden -> hidden) of the valid corners (feature 0 marks them), a
+// context of the mean and max of their encodings (2 x hidden -> hidden), and a shared head
+// (encoding + context -> hidden -> 1) giving Q(s, a) per valid corner; other corners get 0.
 enum class QNetworkKind { Convolutional, Graph };
 
 struct DqnHyperParameters {

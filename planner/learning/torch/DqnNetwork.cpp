@@ -21,7 +21,9 @@ QNetworkImpl::QNetworkImpl(int imageSize, int actionCount, const DqnHyperParamet
         const std::int64_t hidden = params.hiddenUnits;
         encode1_ = register_module("encode1", torch::nn::Linear(channels_, hidden));
         encode2_ = register_module("encode2", torch::nn::Linear(hidden, hidden));
-        head1_ = register_module("head1", torch::nn::Linear(3 * hidden, hidden));
+        head1_ = register_module("head1", torch::nn::Linear(hidden, hidden));
+        context_ = register_module(
+            "context", torch::nn::Linear(torch::nn::LinearOptions(2 * hidden, hidden).bias(false)));
         head2_ = register_module("head2", torch::nn::Linear(hidden, 1));
         return;
     }
@@ -38,20 +40,29 @@ torch::Tensor QNetworkImpl::forward(torch::Tensor x) {
     return kind_ == QNetworkKind::Graph ? forwardGraph(x) : forwardImage(x);
 }
 
+// Only the valid corners (feature 0) are encoded and scored: the others are never chosen
+// (masked acting and argmax) and get Q = 0. Rows of all samples are stacked, so the cost
+// follows the valid corners of the batch, not batch x corners.
 torch::Tensor QNetworkImpl::forwardGraph(torch::Tensor x) {
-    x = x.reshape({-1, actionCount_, channels_});
-    const torch::Tensor valid = x.narrow(2, 0, 1); // [batch, corners, 1]
-    torch::Tensor h = torch::relu(encode1_->forward(x));
-    h = torch::relu(encode2_->forward(h));
-    // Context over the valid corners (all corners when none is valid: a finished episode).
-    const torch::Tensor count = valid.sum(1, /*keepdim=*/true);
-    const torch::Tensor weight = torch::where(count > 0, valid, torch::ones_like(valid));
-    const torch::Tensor mean = (h * weight).sum(1) / weight.sum(1);
-    const torch::Tensor max = std::get<0>((h * weight).max(1));
+    const std::int64_t batch = x.size(0);
+    const torch::Tensor flat = x.reshape({batch * actionCount_, channels_});
+    const torch::Tensor rows = (flat.select(1, 0) > 0.5f).nonzero().squeeze(1);
+    const torch::Tensor owner = torch::div(rows, actionCount_, "floor");
+    torch::Tensor h = torch::relu(encode1_->forward(flat.index_select(0, rows)));
+    h = torch::relu(encode2_->forward(h)); // [valid rows, hidden]
+    const std::int64_t hidden = h.size(1);
+    const torch::Tensor sum = torch::zeros({batch, hidden}).index_add(0, owner, h);
+    const torch::Tensor count =
+        torch::zeros({batch}).index_add(0, owner, torch::ones({rows.size(0)})).clamp_min(1.0f);
+    const torch::Tensor max = torch::zeros({batch, hidden})
+                                  .scatter_reduce(0, owner.unsqueeze(1).expand({-1, hidden}), h,
+                                                  "amax", /*include_self=*/true);
     const torch::Tensor context =
-        torch::cat({mean, max}, 1).unsqueeze(1).expand({h.size(0), actionCount_, 2 * h.size(2)});
-    torch::Tensor q = torch::relu(head1_->forward(torch::cat({h, context}, 2)));
-    return head2_->forward(q).squeeze(2);
+        context_->forward(torch::cat({sum / count.unsqueeze(1), max}, 1)); // [batch, hidden]
+    torch::Tensor q = torch::relu(head1_->forward(h) + context.index_select(0, owner));
+    q = head2_->forward(q).squeeze(1);
+    return torch::zeros({batch * actionCount_}).index_copy(0, rows, q).reshape(
+        {batch, actionCount_});
 }
 
 torch::Tensor QNetworkImpl::forwardImage(torch::Tensor x) {

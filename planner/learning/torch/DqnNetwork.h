@@ -23,7 +23,8 @@ private:
     torch::nn::Linear dense1_{nullptr}, dense2_{nullptr};
     // Graph network: per-corner encoder and head (layer names differ from the image
     // network's, so that weights of one never load into the other).
-    torch::nn::Linear encode1_{nullptr}, encode2_{nullptr}, head1_{nullptr}, head2_{nullptr};
+    torch::nn::Linear encode1_{nullptr}, encode2_{nullptr}, head1_{nullptr}, head2_{nullptr},
+        context_{nullptr};
 };
 TORCH_MODULE(QNetwork);
 
