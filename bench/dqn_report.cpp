@@ -2,15 +2,17 @@
 // setting on sample plans under a fixed time budget (one thread), records learning curves
 // and measures the gap to exact/heuristic on 100 random queries.
 //   floorcover-dqn-report [--seconds S] [--seed N] [--queries N] [--cases a,b]
+// (a case is a sample plan's name or generated-office-N, a generated floor of N rooms)
 //                         [--settings paper,improved,improved+gamma=1,...] --out DIR
 // A setting is "paper", "improved" or "graph", optionally followed by "+key=value" changes (an
 // ablation): state=image|graph (the state and its network), mask=0|1, reward=paper|cost, nstep=N,
-// gamma=G, lr=R, eps=STEPS, net=paper|small, refine=none|corners|local-search, sync=STEPS, batch=N,
-// features=0|1, conv=C (all three layers), hidden=N. Writes DIR/curves-<case>-<setting>.csv and
-// prints a Markdown table (docs/dqn.md). Time is the training thread's CPU time, so a busy machine
-// does not change the figures.
+// gamma=G, lr=R, eps=STEPS, net=paper|small, refine=none|corners|local-search, cost=SCALE (reward
+// per longest edge), sync=STEPS, batch=N, features=0|1, conv=C (all three layers), hidden=N. Writes
+// DIR/curves-<case>-<setting>.csv and prints a Markdown table (docs/dqn.md). Time is the training
+// thread's CPU time, so a busy machine does not change the figures.
 #include "formats/PlanIO.h"
 #include "learning/dqn/DqnTrainer.h"
+#include "model/SyntheticPlans.h"
 #include "pipeline/Planner.h"
 
 #include <algorithm>
@@ -93,6 +95,8 @@ TrainingOptions settingOptions(const std::string& setting, std::uint64_t seed) {
         } else if (key == "conv")
             o.agent.conv1Channels = o.agent.conv2Channels = o.agent.conv3Channels =
                 std::stoi(value);
+        else if (key == "cost")
+            o.environment.costScale = std::stod(value);
         else if (key == "hidden")
             o.agent.hiddenUnits = std::stoi(value);
         else if (key == "features")
@@ -170,6 +174,22 @@ FinalFigures measure(const DqnTrainer& trainer, const Case& c, int count, std::u
     return f;
 }
 
+const std::string kGenerated = "generated-office-";
+
+bool isGenerated(const std::string& name) {
+    return name.rfind(kGenerated, 0) == 0;
+}
+
+// A sample plan by name, or "generated-office-N": generateOfficeFloor(N rooms, seed), an
+// unseen plan for a sanity check.
+Project loadCase(const std::string& name, std::uint64_t seed) {
+    if (!isGenerated(name))
+        return loadProjectFile(std::string(FC_PLANS_DIR) + "/" + name + ".geojson");
+    Project project;
+    project.plan = generateOfficeFloor(std::stoi(name.substr(kGenerated.size())), seed);
+    return project;
+}
+
 } // namespace
 
 int main(int argc, char** argv) {
@@ -197,10 +217,10 @@ int main(int argc, char** argv) {
                 "solver) | max | greedy gap | failures | reference | ms/query (max) |\n");
     std::printf("|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---|---:|\n");
     for (const std::string& name : o.cases) {
-        const Case c{name, name == "office" || name == "ward" ? QuerySet::RoomSubsets
-                                                              : QuerySet::AllCells};
-        const Project project =
-            loadProjectFile(std::string(FC_PLANS_DIR) + "/" + name + ".geojson");
+        const Project project = loadCase(name, o.seed);
+        const Case c{name, name == "office" || name == "ward" || isGenerated(name)
+                               ? QuerySet::RoomSubsets
+                               : QuerySet::AllCells};
         const PreparedPlan prepared = preparePlan(project.plan, project.robot, 90.0);
         for (const std::string& setting : o.settings) {
             const TrainingOptions options = settingOptions(setting, o.seed);

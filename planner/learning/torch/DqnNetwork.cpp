@@ -61,8 +61,9 @@ torch::Tensor QNetworkImpl::forwardGraph(torch::Tensor x) {
         context_->forward(torch::cat({sum / count.unsqueeze(1), max}, 1)); // [batch, hidden]
     torch::Tensor q = torch::relu(head1_->forward(h) + context.index_select(0, owner));
     q = head2_->forward(q).squeeze(1);
-    return torch::zeros({batch * actionCount_}).index_copy(0, rows, q).reshape(
-        {batch, actionCount_});
+    return torch::zeros({batch * actionCount_})
+        .index_copy(0, rows, q)
+        .reshape({batch, actionCount_});
 }
 
 torch::Tensor QNetworkImpl::forwardImage(torch::Tensor x) {
