@@ -54,9 +54,11 @@ torch::Tensor QNetworkImpl::forwardGraph(torch::Tensor x) {
     const torch::Tensor sum = torch::zeros({batch, hidden}).index_add(0, owner, h);
     const torch::Tensor count =
         torch::zeros({batch}).index_add(0, owner, torch::ones({rows.size(0)})).clamp_min(1.0f);
-    const torch::Tensor max = torch::zeros({batch, hidden})
-                                  .scatter_reduce(0, owner.unsqueeze(1).expand({-1, hidden}), h,
-                                                  "amax", /*include_self=*/true);
+    // Encodings are >= 0 (ReLU), so zeros stand in for the other corners in the max.
+    const torch::Tensor max = std::get<0>(torch::zeros({batch * actionCount_, hidden})
+                                              .index_copy(0, rows, h)
+                                              .reshape({batch, actionCount_, hidden})
+                                              .max(1));
     const torch::Tensor context =
         context_->forward(torch::cat({sum / count.unsqueeze(1), max}, 1)); // [batch, hidden]
     torch::Tensor q = torch::relu(head1_->forward(h) + context.index_select(0, owner));
