@@ -1,9 +1,9 @@
-// floorcover-dqn-report: trains the Double-DQN planner in the paper's and in the improved
-// setting on sample plans under a fixed time budget (one thread), records learning curves
-// and measures the gap to exact/heuristic on 100 random queries.
+// floorcover-dqn-report: trains the Double-DQN planner in the paper's, the improved and the
+// graph-state setting on sample plans under a fixed time budget (one thread), records learning
+// curves and measures the gap to exact/heuristic on 100 random queries.
 //   floorcover-dqn-report [--seconds S] [--seed N] [--queries N] [--cases a,b]
-// (a case is a sample plan's name or generated-office-N, a generated floor of N rooms)
 //                         [--settings paper,improved,improved+gamma=1,...] --out DIR
+// A case is a sample plan's name or generated-office-N (a generated floor of N rooms).
 // A setting is "paper", "improved" or "graph", optionally followed by "+key=value" changes (an
 // ablation): state=image|graph (the state and its network), mask=0|1, reward=paper|cost, nstep=N,
 // gamma=G, lr=R, eps=STEPS, net=paper|small, refine=none|corners|local-search, cost=SCALE (reward
