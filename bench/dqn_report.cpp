@@ -1,16 +1,18 @@
-// floorcover-dqn-report: trains the Double-DQN planner in the paper's and in the improved
-// setting on sample plans under a fixed time budget (one thread), records learning curves
-// and measures the gap to exact/heuristic on 100 random queries.
+// floorcover-dqn-report: trains the Double-DQN planner in the paper's, the improved and the
+// graph-state setting on sample plans under a fixed time budget (one thread), records learning
+// curves and measures the gap to exact/heuristic on 100 random queries.
 //   floorcover-dqn-report [--seconds S] [--seed N] [--queries N] [--cases a,b]
 //                         [--settings paper,improved,improved+gamma=1,...] --out DIR
-// A setting is "paper" or "improved", optionally followed by "+key=value" changes (an
-// ablation): mask=0|1, reward=paper|cost, nstep=N, gamma=G, lr=R, eps=STEPS, net=paper|small,
-// refine=none|corners|local-search, sync=STEPS, batch=N, features=0|1, conv=C (all three
-// layers), hidden=N.
-// Writes DIR/curves-<case>-<setting>.csv and prints a Markdown table (docs/dqn.md). Time is
-// the training thread's CPU time, so a busy machine does not change the figures.
+// A case is a sample plan's name or generated-office-N (a generated floor of N rooms).
+// A setting is "paper", "improved" or "graph", optionally followed by "+key=value" changes (an
+// ablation): state=image|graph (the state and its network), mask=0|1, reward=paper|cost, nstep=N,
+// gamma=G, lr=R, eps=STEPS, net=paper|small, refine=none|corners|local-search, cost=SCALE (reward
+// per longest edge), sync=STEPS, batch=N, features=0|1, conv=C (all three layers), hidden=N. Writes
+// DIR/curves-<case>-<setting>.csv and prints a Markdown table (docs/dqn.md). Time is the training
+// thread's CPU time, so a busy machine does not change the figures.
 #include "formats/PlanIO.h"
 #include "learning/dqn/DqnTrainer.h"
+#include "model/SyntheticPlans.h"
 #include "pipeline/Planner.h"
 
 #include <algorithm>
@@ -59,8 +61,7 @@ TrainingOptions settingOptions(const std::string& setting, std::uint64_t seed) {
             out.push_back(item);
         return out;
     }();
-    TrainingOptions o =
-        parts.at(0) == "paper" ? TrainingOptions::paper(seed) : TrainingOptions::improved(seed);
+    TrainingOptions o = TrainingOptions::named(parts.at(0), seed);
     const TrainingOptions paper = TrainingOptions::paper(seed);
     for (std::size_t i = 1; i < parts.size(); ++i) {
         const std::string key = parts[i].substr(0, parts[i].find('='));
@@ -94,11 +95,21 @@ TrainingOptions settingOptions(const std::string& setting, std::uint64_t seed) {
         } else if (key == "conv")
             o.agent.conv1Channels = o.agent.conv2Channels = o.agent.conv3Channels =
                 std::stoi(value);
+        else if (key == "cost")
+            o.environment.costScale = std::stod(value);
         else if (key == "hidden")
             o.agent.hiddenUnits = std::stoi(value);
         else if (key == "features")
             o.environment.costChannels = value == "1";
-        else if (key == "refine")
+        else if (key == "state") {
+            const TrainingOptions from =
+                value == "graph" ? TrainingOptions::graph(seed) : TrainingOptions::improved(seed);
+            o.environment.graphState = from.environment.graphState;
+            o.environment.costChannels = from.environment.costChannels;
+            o.agent.network = from.agent.network;
+            o.agent.hiddenUnits = from.agent.hiddenUnits;
+            o.agent.replayCapacity = from.agent.replayCapacity;
+        } else if (key == "refine")
             o.refinement = refinementFromName(value);
         else
             throw std::invalid_argument("unknown setting change " + key);
@@ -163,6 +174,22 @@ FinalFigures measure(const DqnTrainer& trainer, const Case& c, int count, std::u
     return f;
 }
 
+const std::string kGenerated = "generated-office-";
+
+bool isGenerated(const std::string& name) {
+    return name.rfind(kGenerated, 0) == 0;
+}
+
+// A sample plan by name, or "generated-office-N": generateOfficeFloor(N rooms, seed), an
+// unseen plan for a sanity check.
+Project loadCase(const std::string& name, std::uint64_t seed) {
+    if (!isGenerated(name))
+        return loadProjectFile(std::string(FC_PLANS_DIR) + "/" + name + ".geojson");
+    Project project;
+    project.plan = generateOfficeFloor(std::stoi(name.substr(kGenerated.size())), seed);
+    return project;
+}
+
 } // namespace
 
 int main(int argc, char** argv) {
@@ -190,10 +217,10 @@ int main(int argc, char** argv) {
                 "solver) | max | greedy gap | failures | reference | ms/query (max) |\n");
     std::printf("|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---|---:|\n");
     for (const std::string& name : o.cases) {
-        const Case c{name, name == "office" || name == "ward" ? QuerySet::RoomSubsets
-                                                              : QuerySet::AllCells};
-        const Project project =
-            loadProjectFile(std::string(FC_PLANS_DIR) + "/" + name + ".geojson");
+        const Project project = loadCase(name, o.seed);
+        const Case c{name, name == "office" || name == "ward" || isGenerated(name)
+                               ? QuerySet::RoomSubsets
+                               : QuerySet::AllCells};
         const PreparedPlan prepared = preparePlan(project.plan, project.robot, 90.0);
         for (const std::string& setting : o.settings) {
             const TrainingOptions options = settingOptions(setting, o.seed);

@@ -32,7 +32,7 @@ commands:
                 divided by each baseline's (reeb-cpp, adjacency-ga)
   train PLAN    train the Double-DQN planner for this plan: --out MODEL
                 [--episodes N] [--seconds S] (default 300 s when neither is given)
-                [--seed N] [--setting improved|paper] [--resume] [--evaluate-every N]
+                [--seed N] [--setting improved|graph|paper] [--resume] [--evaluate-every N]
                 and the robot and --angle options above; prints progress; Ctrl-C stops
                 after the current episode and saves what was learnt
   tile PLAN     tiling robot: tile the floor with its five shapes and order the tiles by

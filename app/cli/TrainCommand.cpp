@@ -65,8 +65,8 @@ int commandTrain(const Arguments& args) {
         seconds = 300.0;
     const auto seed = static_cast<std::uint64_t>(args.integer("--seed").value_or(1));
     const std::string setting = args.text("--setting").value_or("improved");
-    if (setting != "improved" && setting != "paper")
-        throw InputError("--setting must be improved or paper");
+    if (setting != "improved" && setting != "paper" && setting != "graph")
+        throw InputError("--setting must be improved, graph or paper");
 
     const Project project = loadProjectFile(path);
     PreparedPlan prepared;
@@ -90,8 +90,7 @@ int commandTrain(const Arguments& args) {
         trainer = std::make_unique<DqnTrainer>(prepared.graph, loadDqnModelFile(*out), *out);
         std::cout << "resuming " << *out << " after " << trainer->episodes() << " episodes\n";
     } else {
-        TrainingOptions options =
-            setting == "paper" ? TrainingOptions::paper(seed) : TrainingOptions::improved(seed);
+        TrainingOptions options = TrainingOptions::named(setting, seed);
         options.evaluationInterval = static_cast<int>(args.integer("--evaluate-every").value_or(0));
         trainer = std::make_unique<DqnTrainer>(prepared.graph, options, angle,
                                                prepared.robot.coverageWidth);

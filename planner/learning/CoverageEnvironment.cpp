@@ -47,6 +47,8 @@ CoverageEnvironment::CoverageEnvironment(const CornerGraph& graph, EnvironmentOp
     maxSteps_ = options_.maxSteps > 0 ? options_.maxSteps : 2 * cellCount + 10;
     covered_.assign(graph.cells.size(), 1);
     initialCovered_ = covered_;
+    if (options_.graphState)
+        graphTables_ = std::make_shared<const GraphStateTables>(graph);
 }
 
 std::vector<char> CoverageEnvironment::componentOf(int node) const {
@@ -132,7 +134,8 @@ std::vector<float> CoverageEnvironment::reset(const Query& query) {
 
 void CoverageEnvironment::begin() {
     initialCovered_ = covered_;
-    if (options_.costChannels) { // transit costs are symmetric: from the end = to the end
+    if (options_.costChannels ||
+        options_.graphState) { // transit costs are symmetric: from the end = to the end
         current_ = end_;
         computeTransits();
         costToEnd_ = transitCost_;
@@ -269,7 +272,26 @@ StepResult CoverageEnvironment::step(int action) {
     return result;
 }
 
+std::size_t CoverageEnvironment::observationSize() const {
+    const std::size_t perNode = static_cast<std::size_t>(channelCount());
+    return options_.graphState ? perNode * graph_->nodes.size()
+                               : perNode * static_cast<std::size_t>(size_ * size_);
+}
+
 std::vector<float> CoverageEnvironment::observation() const {
+    if (!options_.graphState)
+        return imageObservation();
+    GraphStateInput state;
+    state.current = current_;
+    state.end = end_;
+    state.covered = &covered_;
+    state.initialCovered = &initialCovered_;
+    state.transitCost = &transitCost_;
+    state.costToEnd = &costToEnd_;
+    return graphStateFeatures(*graph_, *graphTables_, state);
+}
+
+std::vector<float> CoverageEnvironment::imageObservation() const {
     const std::size_t plane = static_cast<std::size_t>(size_) * static_cast<std::size_t>(size_);
     std::vector<float> image(static_cast<std::size_t>(channelCount()) * plane, 0.0f);
     image[static_cast<std::size_t>(current_)] = 1.0f;

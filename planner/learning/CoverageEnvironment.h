@@ -23,8 +23,10 @@
 #pragma once
 
 #include "graph/CornerGraph.h"
+#include "learning/GraphState.h"
 #include "solvers/Solver.h"
 
+#include <memory>
 #include <random>
 #include <vector>
 
@@ -46,6 +48,9 @@ struct EnvironmentOptions {
     // 4 = cost from each corner to the end corner (under the covered set at reset); both in
     // units of the longest edge, divided by kCostChannelScale and capped at 1.
     bool costChannels = false;
+    // Graph-level state (GraphState.h): per corner kGraphFeatureCount features instead of the
+    // image; the agent then needs the graph network (QNetworkKind::Graph).
+    bool graphState = false;
 };
 
 constexpr double kCostChannelScale = 8.0;
@@ -79,10 +84,15 @@ public:
     // Throws std::logic_error when the episode is already done.
     StepResult step(int action);
 
-    // channelCount() x SIZE x SIZE, channel-major: current corner, covered cells' nodes, end
-    // corner (and the cost channels when enabled).
+    // Image state: channelCount() x SIZE x SIZE, channel-major: current corner, covered cells'
+    // nodes, end corner (and the cost channels when enabled). Graph state: actionCount() x
+    // channelCount() per-corner features, node-major (GraphState.h).
     std::vector<float> observation() const;
-    int channelCount() const { return options_.costChannels ? 5 : 3; }
+    int channelCount() const { return channelCountFor(options_); }
+    static int channelCountFor(const EnvironmentOptions& options) {
+        return options.graphState ? kGraphFeatureCount : options.costChannels ? 5 : 3;
+    }
+    std::size_t observationSize() const;
     // Per node: true for a corner of an uncovered required cell reachable by a transit.
     std::vector<char> actionMask() const;
 
@@ -108,6 +118,7 @@ private:
     std::vector<char> componentOf(int node) const;
     double costReward(double graphCost) const;
     bool isValidAction(int node) const; // a corner of an uncovered required cell, reachable
+    std::vector<float> imageObservation() const;
 
     const CornerGraph* graph_;
     EnvironmentOptions options_;
@@ -121,6 +132,7 @@ private:
     std::vector<double> transitCost_; // node -> cheapest transit cost from current_
     std::vector<double> costToEnd_;   // node -> transit cost to end_ (covered set at reset)
     std::vector<int> parentEdge_;     // node -> last edge of that transit, -1 at the source
+    std::shared_ptr<const GraphStateTables> graphTables_; // graph state only
 };
 
 } // namespace fc

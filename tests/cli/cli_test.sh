@@ -141,6 +141,11 @@ check "compare includes dqn with a model" cli compare "$plans/simple.geojson" --
 check "compare lists dqn" grep -q '^dqn ' "$work/last"
 check "resume training" cli train "$plans/simple.geojson" --out "$work/simple.fcdqn" --episodes 5 --resume
 check "resumed episode count" grep -q '"episodes":35' "$work/last"
+check "train with the graph state" cli train "$plans/room-obstacle.geojson" --out "$work/graph.fcdqn" --episodes 10 --setting graph
+check "plan with a graph-state model" cli plan "$plans/room-obstacle.geojson" --solver dqn --model "$work/graph.fcdqn"
+check "graph-state metrics" metrics_ok
+"$cli" train "$plans/simple.geojson" --out "$work/x.fcdqn" --episodes 3 --setting voxel >"$work/out" 2>"$work/err"
+check "unknown setting is bad input" test $? -eq 2
 "$cli" train "$plans/simple.geojson" --out "$work/interrupted.fcdqn" --seconds 120 >"$work/int.out" 2>&1 &
 trainer=$!
 sleep 3

@@ -8,6 +8,7 @@
 #include "learning/dqn/DqnSolver.h"
 #include "training/TrainingDock.h"
 
+#include <QComboBox>
 #include <QElapsedTimer>
 #include <QPushButton>
 #include <QSignalSpy>
@@ -43,6 +44,7 @@ private slots:
     void refusesAModelOfAnotherPlanAndKeepsItsOwn();
     void planChangeInvalidatesTheModel();
     void mainWindowTrainsAndPlansWithDqn();
+    void trainsWithTheGraphStateSetting();
 };
 
 void TrainingDockTest::trainsPausesResumesAndSaves() {
@@ -92,6 +94,33 @@ void TrainingDockTest::trainsPausesResumesAndSaves() {
     QCOMPARE(dock.modelPath(), path);
 
     // The saved model plans through solver dqn.
+    PlanRequest request;
+    request.plan = loadProjectFile(std::string(FC_PLANS_DIR) + "/simple.geojson").plan;
+    request.solver = "dqn";
+    request.modelPath = path.toStdString();
+    QVERIFY(planCoverage(request).metrics.coverage >= 0.99);
+}
+
+// The setting combo's "Graph state" entry trains a graph-state model end to end.
+void TrainingDockTest::trainsWithTheGraphStateSetting() {
+    registerDqnSolver();
+    TrainingDock dock;
+    dock.setPreparedPlan(preparedSample("simple"));
+    auto* setting = dock.findChild<QComboBox*>();
+    QVERIFY(setting != nullptr);
+    const int graph = setting->findData(QStringLiteral("graph"));
+    QVERIFY(graph >= 0);
+    setting->setCurrentIndex(graph);
+    dock.start();
+    QTRY_VERIFY_WITH_TIMEOUT(dock.episodes() >= 5, 30000);
+    dock.stop();
+    QTRY_COMPARE_WITH_TIMEOUT(dock.state(), TrainingDock::State::Finished, 10000);
+    QTemporaryDir dir;
+    const QString path = dir.filePath("graph.fcdqn");
+    QVERIFY2(dock.saveModel(path), qPrintable(dock.lastError()));
+    const DqnModelInfo info = loadDqnModelInfo(path.toStdString());
+    QCOMPARE(info.setting, std::string("graph"));
+    QVERIFY(info.environment.graphState);
     PlanRequest request;
     request.plan = loadProjectFile(std::string(FC_PLANS_DIR) + "/simple.geojson").plan;
     request.solver = "dqn";

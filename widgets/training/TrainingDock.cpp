@@ -59,9 +59,12 @@ void TrainingDock::buildUi() {
     auto* controls = new QHBoxLayout;
     setting_ = new QComboBox(body);
     setting_->addItem(tr("Improved"), QStringLiteral("improved"));
+    setting_->addItem(tr("Graph state"), QStringLiteral("graph"));
     setting_->addItem(tr("Paper"), QStringLiteral("paper"));
-    setting_->setToolTip(tr("Improved: masking, graph-cost reward, 3-step returns and a refined "
-                            "walk. Paper: the published setting."));
+    setting_->setToolTip(tr("Improved: masking, graph-cost reward, cost channels and a refined "
+                            "walk. Graph state: the same with per-corner features and a "
+                            "per-corner network (faster on large floors). Paper: the published "
+                            "setting."));
     budget_ = new QDoubleSpinBox(body);
     budget_->setRange(5.0, 24 * 3600.0);
     budget_->setValue(300.0);
@@ -165,9 +168,7 @@ void TrainingDock::start() {
         return;
     TrainingOptions options = options_;
     if (!customOptions_)
-        options = setting_->currentData().toString() == QLatin1String("paper")
-                      ? TrainingOptions::paper()
-                      : TrainingOptions::improved();
+        options = TrainingOptions::named(setting_->currentData().toString().toStdString());
     clearPlot();
     episodes_ = 0;
     runStartSeconds_ = 0.0;

@@ -40,7 +40,8 @@ nlohmann::json toJson(const DqnModelInfo& m) {
               {"sweep_angle_deg", m.stripeAngleDeg},
               {"coverage_width", m.coverageWidth}}},
             {"agent",
-             {{"input_channels", a.inputChannels},
+             {{"network", a.network == QNetworkKind::Graph ? "graph" : "conv"},
+              {"input_channels", a.inputChannels},
               {"conv_channels", {a.conv1Channels, a.conv2Channels, a.conv3Channels}},
               {"hidden_units", a.hiddenUnits},
               {"learning_rate", a.learningRate},
@@ -65,7 +66,8 @@ nlohmann::json toJson(const DqnModelInfo& m) {
               {"coverage_overlap_scale", e.coverageOverlapScale},
               {"max_steps", e.maxSteps},
               {"reward_is_negative_graph_cost", e.rewardIsNegativeGraphCost},
-              {"cost_channels", e.costChannels}}},
+              {"cost_channels", e.costChannels},
+              {"state", e.graphState ? "graph" : "image"}}},
             {"n_step", m.nStep},
             {"refinement", refinementName(m.refinement)},
             {"training",
@@ -91,6 +93,10 @@ DqnModelInfo fromJson(const nlohmann::json& j) {
     if (conv.size() != 3)
         throw std::invalid_argument("conv_channels needs three entries");
     p.inputChannels = a.value("input_channels", 3);
+    const std::string network = a.value("network", std::string("conv"));
+    if (network != "conv" && network != "graph")
+        throw std::invalid_argument("unknown network \"" + network + "\" (conv, graph)");
+    p.network = network == "graph" ? QNetworkKind::Graph : QNetworkKind::Convolutional;
     p.conv1Channels = conv[0];
     p.conv2Channels = conv[1];
     p.conv3Channels = conv[2];
@@ -122,6 +128,13 @@ DqnModelInfo fromJson(const nlohmann::json& j) {
     o.maxSteps = e.at("max_steps").get<int>();
     o.rewardIsNegativeGraphCost = e.at("reward_is_negative_graph_cost").get<bool>();
     o.costChannels = e.value("cost_channels", false);
+    const std::string state = e.value("state", std::string("image"));
+    if (state != "image" && state != "graph")
+        throw std::invalid_argument("unknown state kind \"" + state + "\" (image, graph)");
+    o.graphState = state == "graph";
+    if (o.graphState != (p.network == QNetworkKind::Graph))
+        throw std::invalid_argument("a " + state + " state needs the " +
+                                    (o.graphState ? "graph" : "conv") + " network, not " + network);
     m.nStep = j.at("n_step").get<int>();
     m.refinement = refinementFromName(j.at("refinement").get<std::string>());
     const auto& t = j.at("training");
@@ -131,8 +144,8 @@ DqnModelInfo fromJson(const nlohmann::json& j) {
     m.trainingSeconds = t.at("seconds").get<double>();
     if (m.nodeCount <= 0 || m.cellCount <= 0 || m.nStep < 1 || p.conv1Channels <= 0 ||
         p.conv2Channels <= 0 || p.conv3Channels <= 0 || p.hiddenUnits <= 0 ||
-        p.inputChannels != (o.costChannels ? 5 : 3) || m.episodes < 0 || m.steps < 0 ||
-        m.trainSteps < 0)
+        p.inputChannels != CoverageEnvironment::channelCountFor(o) || m.episodes < 0 ||
+        m.steps < 0 || m.trainSteps < 0)
         throw std::invalid_argument("sizes and counts out of range");
     return m;
 }

@@ -15,11 +15,13 @@
 
 namespace fc {
 
-constexpr int kDqnModelFormatVersion = 1;
+// Version 2 adds the state kind ("state": image|graph) and the network ("network": conv|graph);
+// version-1 files (image state, CNN) still load.
+constexpr int kDqnModelFormatVersion = 2;
 
 struct DqnModelInfo {
     int formatVersion = kDqnModelFormatVersion;
-    std::string setting; // "paper", "improved" or "custom"
+    std::string setting; // "paper", "improved", "graph" or "custom"
     DqnHyperParameters agent;
     EnvironmentOptions environment;
     int nStep = 1;

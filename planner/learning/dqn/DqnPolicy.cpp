@@ -14,8 +14,11 @@ Solution solveWithPolicy(const DqnAgent& agent, const CornerGraph& graph, const 
                          const EnvironmentOptions& environment, OrderRefinement refinement,
                          const SolveControl& control) {
     CoverageEnvironment env(graph, environment);
+    if (environment.graphState != (agent.parameters().network == QNetworkKind::Graph))
+        throw SolverError("dqn: the model's network does not fit its state kind (image/graph)");
     if (env.size() != agent.imageSize() || env.actionCount() != agent.actionCount() ||
-        env.channelCount() != agent.parameters().inputChannels)
+        env.channelCount() != agent.parameters().inputChannels ||
+        env.observationSize() != agent.observationSize())
         throw SolverError("dqn: the model was trained on a graph of another size");
     std::vector<float> observation;
     try {

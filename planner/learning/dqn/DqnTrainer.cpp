@@ -1,5 +1,7 @@
 #include "learning/dqn/DqnTrainer.h"
 
+#include "model/Plan.h"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -60,12 +62,42 @@ TrainingOptions TrainingOptions::improved(std::uint64_t seed) {
     return o;
 }
 
+TrainingOptions TrainingOptions::graph(std::uint64_t seed) {
+    TrainingOptions o = improved(seed);
+    o.setting = "graph";
+    o.environment.costChannels = false;
+    o.environment.graphState = true;
+    DqnHyperParameters& a = o.agent;
+    a.network = QNetworkKind::Graph;
+    // 32 units: a gradient step on office (232 corners) costs about 11 ms on one core, 64
+    // units about 26 ms, for no better policy in a 60 s trial.
+    a.hiddenUnits = 32;
+    // A graph state is actionCount x 14 floats (13 kB on office's 232 corners) per side of a
+    // transition.
+    a.replayCapacity = 10'000;
+    a.epsilonDecaySteps = 10'000;
+    return o;
+}
+
+TrainingOptions TrainingOptions::named(const std::string& setting, std::uint64_t seed) {
+    if (setting == "paper")
+        return paper(seed);
+    if (setting == "improved")
+        return improved(seed);
+    if (setting == "graph")
+        return graph(seed);
+    throw InputError("unknown training setting \"" + setting + "\" (paper, improved, graph)");
+}
+
 DqnTrainer::DqnTrainer(const CornerGraph& graph, TrainingOptions options, double stripeAngleDeg,
                        double coverageWidth)
     : graph_(std::make_unique<CornerGraph>(graph)), options_(std::move(options)),
       stripeAngleDeg_(stripeAngleDeg), coverageWidth_(coverageWidth), rng_(options_.agent.seed) {
     if (options_.nStep < 1)
         throw std::invalid_argument("DqnTrainer: n-step must be at least 1");
+    if (options_.environment.graphState != (options_.agent.network == QNetworkKind::Graph))
+        throw std::invalid_argument(
+            "DqnTrainer: the graph state needs the graph network and the image the CNN");
     environment_ = std::make_unique<CoverageEnvironment>(*graph_, options_.environment);
     options_.agent.inputChannels = environment_->channelCount();
     agent_ = std::make_unique<DqnAgent>(environment_->size(), environment_->actionCount(),

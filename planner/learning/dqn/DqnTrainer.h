@@ -36,6 +36,11 @@ struct TrainingOptions {
     // the state, a narrower network and a schedule sized for minutes on one core, and the
     // walk's corners and order refined by the true-cost local search at inference.
     static TrainingOptions improved(std::uint64_t seed = 1);
+    // improved() with the graph-level state (GraphState.h) and the per-corner network instead
+    // of the image and its CNN: cost grows with the corners, not with SIZE^2 x channels.
+    static TrainingOptions graph(std::uint64_t seed = 1);
+    // "paper", "improved" or "graph"; throws InputError naming the choices otherwise.
+    static TrainingOptions named(const std::string& setting, std::uint64_t seed = 1);
 };
 
 struct EvaluationReport {

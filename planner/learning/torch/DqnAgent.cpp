@@ -9,6 +9,7 @@
 #include <dlfcn.h>
 #include <iterator>
 #include <limits>
+#include <malloc.h>
 #include <mutex>
 #include <stdexcept>
 #include <string>
@@ -28,6 +29,12 @@ void useOneThread() {
     // time because the reference BLAS has no such function.
     static std::once_flag blasOnce;
     std::call_once(blasOnce, [] {
+        // LibTorch allocates its batch tensors (hundreds of kB) with malloc; above glibc's
+        // mmap threshold every one is a fresh mapping whose pages fault in zeroed, and on a
+        // virtual machine that cost three times the arithmetic (measured on office's graph
+        // state). Keep such blocks in the heap and do not trim it after every step.
+        mallopt(M_MMAP_THRESHOLD, 64 << 20);
+        mallopt(M_TRIM_THRESHOLD, 256 << 20);
         if (std::getenv("FC_NO_MKLDNN"))
             at::globalContext().setUserEnabledMkldnn(false);
         using SetThreads = void (*)(int);
@@ -81,6 +88,14 @@ DqnAgent::DqnAgent(int imageSize, int actionCount, DqnHyperParameters params)
 }
 
 DqnAgent::~DqnAgent() = default;
+
+std::size_t DqnAgent::observationSize() const {
+    const auto channels = static_cast<std::size_t>(params_.inputChannels);
+    return params_.network == QNetworkKind::Graph
+               ? channels * static_cast<std::size_t>(actionCount_)
+               : channels * static_cast<std::size_t>(imageSize_) *
+                     static_cast<std::size_t>(imageSize_);
+}
 DqnAgent::DqnAgent(DqnAgent&&) noexcept = default;
 DqnAgent& DqnAgent::operator=(DqnAgent&&) noexcept = default;
 
@@ -96,14 +111,12 @@ std::vector<float> DqnAgent::targetQValues(const std::vector<float>& observation
 
 std::vector<float> DqnAgent::evaluate(bool target, const std::vector<float>& observations,
                                       int batch) const {
-    const std::int64_t pixels =
-        static_cast<std::int64_t>(params_.inputChannels) * imageSize_ * imageSize_;
-    if (batch <= 0 || static_cast<std::int64_t>(observations.size()) != batch * pixels)
+    const auto length = static_cast<std::int64_t>(observationSize());
+    if (batch <= 0 || static_cast<std::int64_t>(observations.size()) != batch * length)
         throw std::invalid_argument("DqnAgent::qValues: observation size mismatch");
     torch::NoGradGuard noGrad;
     const torch::Tensor input =
-        torch::from_blob(const_cast<float*>(observations.data()),
-                         {batch, params_.inputChannels, imageSize_, imageSize_}, torch::kFloat32);
+        torch::from_blob(const_cast<float*>(observations.data()), {batch, length}, torch::kFloat32);
     QNetwork& network = target ? impl_->target : impl_->online;
     const torch::Tensor q = network->forward(input).contiguous();
     return std::vector<float>(q.data_ptr<float>(), q.data_ptr<float>() + q.numel());
@@ -131,8 +144,7 @@ int DqnAgent::act(const std::vector<float>& observation, const std::vector<char>
 }
 
 void DqnAgent::remember(Transition transition) {
-    const std::size_t pixels = static_cast<std::size_t>(params_.inputChannels) *
-                               static_cast<std::size_t>(imageSize_ * imageSize_);
+    const std::size_t pixels = observationSize();
     if (transition.observation.size() != pixels || transition.nextObservation.size() != pixels ||
         transition.nextMask.size() != static_cast<std::size_t>(actionCount_) ||
         transition.action < 0 || transition.action >= actionCount_)
@@ -144,8 +156,7 @@ double DqnAgent::trainStep() {
     useOneThread();
     const auto batch = static_cast<std::size_t>(params_.batchSize);
     const std::vector<std::size_t> indices = memory_.sample(batch, rng_);
-    const std::size_t pixels = static_cast<std::size_t>(params_.inputChannels) *
-                               static_cast<std::size_t>(imageSize_ * imageSize_);
+    const std::size_t pixels = observationSize();
     const auto actions = static_cast<std::size_t>(actionCount_);
 
     std::vector<float> observations(batch * pixels);
@@ -171,9 +182,9 @@ double DqnAgent::trainStep() {
     }
 
     const auto b = static_cast<std::int64_t>(batch);
+    const auto length = static_cast<std::int64_t>(pixels);
     const torch::Tensor next =
-        torch::from_blob(nextObservations.data(),
-                         {b, params_.inputChannels, imageSize_, imageSize_}, torch::kFloat32);
+        torch::from_blob(nextObservations.data(), {b, length}, torch::kFloat32);
     {
         torch::NoGradGuard noGrad;
         const torch::Tensor onlineQ = impl_->online->forward(next).contiguous();
@@ -186,8 +197,7 @@ double DqnAgent::trainStep() {
     std::vector<float> y =
         doubleDqnTargets(targetsInput, static_cast<float>(params_.gamma), params_.maskTargetArgmax);
 
-    const torch::Tensor input = torch::from_blob(
-        observations.data(), {b, params_.inputChannels, imageSize_, imageSize_}, torch::kFloat32);
+    const torch::Tensor input = torch::from_blob(observations.data(), {b, length}, torch::kFloat32);
     const torch::Tensor actionIndex = torch::from_blob(chosen.data(), {b, 1}, torch::kInt64);
     const torch::Tensor targets = torch::from_blob(y.data(), {b}, torch::kFloat32);
 
@@ -242,7 +252,8 @@ void DqnAgent::loadWeights(std::istream& in) {
         archive.load_from(in);
         loaded->load(archive);
     } catch (const c10::Error& e) {
-        throw std::runtime_error(std::string("DqnAgent: cannot load weights: ") +
+        throw std::runtime_error(std::string("DqnAgent: cannot load weights (another "
+                                             "architecture or a corrupt archive): ") +
                                  e.what_without_backtrace());
     }
     const auto expected = impl_->online->named_parameters(true);

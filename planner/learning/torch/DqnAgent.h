@@ -18,10 +18,19 @@
 
 namespace fc {
 
+// Convolutional: the paper's image network. Graph: a per-corner network over the
+// environment's graph-level state (actionCount x inputChannels features, node-major): a shared
+// encoder (inputChannels -> hidden -> hidden) of the valid corners (feature 0 marks them), a
+// context of the mean and max of their encodings (2 x hidden -> hidden), and a shared head
+// (encoding + context -> hidden -> 1) giving Q(s, a) per valid corner; other corners get 0.
+enum class QNetworkKind { Convolutional, Graph };
+
 struct DqnHyperParameters {
+    QNetworkKind network = QNetworkKind::Convolutional;
     // Network: conv inputChannels -> conv1 -> conv2 -> conv3 (3x3, padding 1, ReLU), dense ->
-    // hidden -> actions.
-    int inputChannels = 3; // the paper's image; 5 with the environment's cost channels
+    // hidden -> actions. The graph network uses inputChannels and hiddenUnits only.
+    int inputChannels = 3; // the paper's image; 5 with the environment's cost channels; the
+                           // graph state's features per corner
     int conv1Channels = 32;
     int conv2Channels = 64;
     int conv3Channels = 64;
@@ -98,6 +107,8 @@ public:
     void restoreCounters(long steps, long trainSteps);
 
     int imageSize() const { return imageSize_; }
+    // Floats per observation: inputChannels x SIZE x SIZE, or actionCount x inputChannels.
+    std::size_t observationSize() const;
     int actionCount() const { return actionCount_; }
     const DqnHyperParameters& parameters() const { return params_; }
     const ReplayMemory& memory() const { return memory_; }

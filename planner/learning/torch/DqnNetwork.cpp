@@ -12,9 +12,21 @@ torch::nn::Conv2d conv(int in, int out) {
 
 } // namespace
 
-QNetworkImpl::QNetworkImpl(int imageSize, int actionCount, const DqnHyperParameters& params) {
+QNetworkImpl::QNetworkImpl(int imageSize, int actionCount, const DqnHyperParameters& params)
+    : kind_(params.network), imageSize_(imageSize), actionCount_(actionCount),
+      channels_(params.inputChannels) {
     if (imageSize <= 0 || actionCount <= 0)
         throw std::invalid_argument("QNetwork: image size and action count must be positive");
+    if (kind_ == QNetworkKind::Graph) {
+        const std::int64_t hidden = params.hiddenUnits;
+        encode1_ = register_module("encode1", torch::nn::Linear(channels_, hidden));
+        encode2_ = register_module("encode2", torch::nn::Linear(hidden, hidden));
+        head1_ = register_module("head1", torch::nn::Linear(hidden, hidden));
+        context_ = register_module(
+            "context", torch::nn::Linear(torch::nn::LinearOptions(2 * hidden, hidden).bias(false)));
+        head2_ = register_module("head2", torch::nn::Linear(hidden, 1));
+        return;
+    }
     conv1_ = register_module("conv1", conv(params.inputChannels, params.conv1Channels));
     conv2_ = register_module("conv2", conv(params.conv1Channels, params.conv2Channels));
     conv3_ = register_module("conv3", conv(params.conv2Channels, params.conv3Channels));
@@ -25,6 +37,39 @@ QNetworkImpl::QNetworkImpl(int imageSize, int actionCount, const DqnHyperParamet
 }
 
 torch::Tensor QNetworkImpl::forward(torch::Tensor x) {
+    return kind_ == QNetworkKind::Graph ? forwardGraph(x) : forwardImage(x);
+}
+
+// Only the valid corners (feature 0) are encoded and scored: the others are never chosen
+// (masked acting and argmax) and get Q = 0. Rows of all samples are stacked, so the cost
+// follows the valid corners of the batch, not batch x corners.
+torch::Tensor QNetworkImpl::forwardGraph(torch::Tensor x) {
+    const std::int64_t batch = x.size(0);
+    const torch::Tensor flat = x.reshape({batch * actionCount_, channels_});
+    const torch::Tensor rows = (flat.select(1, 0) > 0.5f).nonzero().squeeze(1);
+    const torch::Tensor owner = torch::div(rows, actionCount_, "floor");
+    torch::Tensor h = torch::relu(encode1_->forward(flat.index_select(0, rows)));
+    h = torch::relu(encode2_->forward(h)); // [valid rows, hidden]
+    const std::int64_t hidden = h.size(1);
+    const torch::Tensor sum = torch::zeros({batch, hidden}).index_add(0, owner, h);
+    const torch::Tensor count =
+        torch::zeros({batch}).index_add(0, owner, torch::ones({rows.size(0)})).clamp_min(1.0f);
+    // Encodings are >= 0 (ReLU), so zeros stand in for the other corners in the max.
+    const torch::Tensor max = std::get<0>(torch::zeros({batch * actionCount_, hidden})
+                                              .index_copy(0, rows, h)
+                                              .reshape({batch, actionCount_, hidden})
+                                              .max(1));
+    const torch::Tensor context =
+        context_->forward(torch::cat({sum / count.unsqueeze(1), max}, 1)); // [batch, hidden]
+    torch::Tensor q = torch::relu(head1_->forward(h) + context.index_select(0, owner));
+    q = head2_->forward(q).squeeze(1);
+    return torch::zeros({batch * actionCount_})
+        .index_copy(0, rows, q)
+        .reshape({batch, actionCount_});
+}
+
+torch::Tensor QNetworkImpl::forwardImage(torch::Tensor x) {
+    x = x.reshape({-1, channels_, imageSize_, imageSize_});
     x = torch::relu(conv1_->forward(x));
     x = torch::relu(conv2_->forward(x));
     x = torch::relu(conv3_->forward(x));

@@ -10,12 +10,21 @@ namespace fc {
 class QNetworkImpl : public torch::nn::Module {
 public:
     QNetworkImpl(int imageSize, int actionCount, const DqnHyperParameters& params);
-    // [batch, 3, SIZE, SIZE] -> [batch, actionCount]
+    // [batch, observationSize] (flat) -> [batch, actionCount]
     torch::Tensor forward(torch::Tensor x);
 
 private:
+    torch::Tensor forwardImage(torch::Tensor x);
+    torch::Tensor forwardGraph(torch::Tensor x);
+
+    QNetworkKind kind_ = QNetworkKind::Convolutional;
+    std::int64_t imageSize_ = 0, actionCount_ = 0, channels_ = 0;
     torch::nn::Conv2d conv1_{nullptr}, conv2_{nullptr}, conv3_{nullptr};
     torch::nn::Linear dense1_{nullptr}, dense2_{nullptr};
+    // Graph network: per-corner encoder and head (layer names differ from the image
+    // network's, so that weights of one never load into the other).
+    torch::nn::Linear encode1_{nullptr}, encode2_{nullptr}, head1_{nullptr}, head2_{nullptr},
+        context_{nullptr};
 };
 TORCH_MODULE(QNetwork);
 

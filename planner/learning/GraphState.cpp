@@ -1,0 +1,145 @@
+// The graph-level state's per-corner features (see GraphState.h).
+#include "learning/GraphState.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+
+namespace fc {
+
+namespace {
+
+constexpr double kInfinity = std::numeric_limits<double>::infinity();
+
+} // namespace
+
+GraphStateTables::GraphStateTables(const CornerGraph& graph) {
+    exitNode.assign(graph.nodes.size(), -1);
+    cellNeighbours.assign(graph.cells.size(), {});
+    cellCentre.assign(graph.cells.size(), Vec2{});
+    for (const GraphEdge& e : graph.edges) {
+        if (e.kind == EdgeKind::Coverage) {
+            exitNode[static_cast<std::size_t>(e.u)] = e.v;
+            exitNode[static_cast<std::size_t>(e.v)] = e.u;
+        }
+        const int a = graph.nodes[static_cast<std::size_t>(e.u)].cell;
+        const int b = graph.nodes[static_cast<std::size_t>(e.v)].cell;
+        if (a >= 0 && b >= 0 && a != b) {
+            auto& na = cellNeighbours[static_cast<std::size_t>(a)];
+            if (std::find(na.begin(), na.end(), b) == na.end()) {
+                na.push_back(b);
+                cellNeighbours[static_cast<std::size_t>(b)].push_back(a);
+            }
+        }
+    }
+    for (const GraphCell& c : graph.cells) {
+        Vec2 sum;
+        for (int n : c.nodes)
+            sum = sum + graph.nodes[static_cast<std::size_t>(n)].position;
+        if (!c.nodes.empty())
+            cellCentre[static_cast<std::size_t>(c.id)] = sum * (1.0 / c.nodes.size());
+    }
+    if (!graph.nodes.empty()) {
+        Vec2 lo = graph.nodes.front().position, hi = lo;
+        for (const GraphNode& n : graph.nodes) {
+            lo = {std::min(lo.x, n.position.x), std::min(lo.y, n.position.y)};
+            hi = {std::max(hi.x, n.position.x), std::max(hi.y, n.position.y)};
+        }
+        diagonal = std::max(norm(hi - lo), 1e-9);
+    }
+}
+
+std::vector<float> graphStateFeatures(const CornerGraph& graph, const GraphStateTables& tables,
+                                      const GraphStateInput& state) {
+    if (!state.covered || !state.initialCovered || !state.transitCost || !state.costToEnd)
+        throw std::invalid_argument("graphStateFeatures: incomplete state");
+    const std::vector<char>& covered = *state.covered;
+    const std::vector<char>& initial = *state.initialCovered;
+    const std::size_t cellCount = graph.cells.size();
+    const double edge = std::max(graph.maxEdgeLength, 1e-9);
+    const double unit = edge * kGraphCostUnit;
+    auto cost = [unit](double c) {
+        return static_cast<float>(c < kInfinity ? std::min(c / unit, kGraphCostCap)
+                                                : kGraphCostCap);
+    };
+
+    // Per-cell and per-room counts of the episode.
+    std::vector<int> uncoveredCells;
+    int required = 0;
+    int roomSlots = 0;
+    for (const GraphCell& c : graph.cells)
+        roomSlots = std::max(roomSlots, c.room + 1);
+    std::vector<int> roomRequired(static_cast<std::size_t>(roomSlots), 0);
+    std::vector<int> roomLeft(static_cast<std::size_t>(roomSlots), 0);
+    for (std::size_t c = 0; c < cellCount; ++c) {
+        const int room = graph.cells[c].room;
+        if (!initial[c]) {
+            ++required;
+            if (room >= 0)
+                ++roomRequired[static_cast<std::size_t>(room)];
+        }
+        if (!covered[c]) {
+            uncoveredCells.push_back(static_cast<int>(c));
+            if (room >= 0)
+                ++roomLeft[static_cast<std::size_t>(room)];
+        }
+    }
+    const float leftFraction =
+        required > 0 ? static_cast<float>(uncoveredCells.size()) / static_cast<float>(required)
+                     : 0.0f;
+    const float lastCell = uncoveredCells.size() == 1 ? 1.0f : 0.0f;
+    const GraphNode& current = graph.nodes[static_cast<std::size_t>(state.current)];
+    const int currentRoom = current.cell >= 0 ? graph.cells[current.cell].room : -1;
+    const double nearRadius = 2.0 * edge;
+
+    const int F = kGraphFeatureCount;
+    std::vector<float> out(graph.nodes.size() * static_cast<std::size_t>(F), 0.0f);
+    for (const GraphNode& n : graph.nodes) {
+        float* f = out.data() + static_cast<std::size_t>(n.id) * F;
+        const auto id = static_cast<std::size_t>(n.id);
+        const int cell = n.cell;
+        const bool valid = cell >= 0 && !covered[static_cast<std::size_t>(cell)] &&
+                           (*state.transitCost)[id] < kInfinity;
+        const int exit = tables.exitNode[id];
+        f[0] = valid ? 1.0f : 0.0f;
+        f[3] = n.id == state.end ? 1.0f : 0.0f;
+        f[4] = n.id == state.current ? 1.0f : 0.0f;
+        f[5] = leftFraction;
+        f[6] = lastCell;
+        f[7] = static_cast<float>((n.position.x - current.position.x) / tables.diagonal);
+        f[8] = static_cast<float>((n.position.y - current.position.y) / tables.diagonal);
+        if (cell < 0)
+            continue;
+        const GraphCell& c = graph.cells[static_cast<std::size_t>(cell)];
+        if (valid) {
+            f[1] = cost((*state.transitCost)[id]);
+            f[2] = exit >= 0 ? cost((*state.costToEnd)[static_cast<std::size_t>(exit)])
+                             : kGraphCostCap;
+        }
+        const Vec2 from =
+            exit >= 0 ? graph.nodes[static_cast<std::size_t>(exit)].position : n.position;
+        double nearest = kInfinity;
+        int near = 0;
+        for (int other : uncoveredCells) {
+            if (other == cell)
+                continue;
+            const double d = distance(from, tables.cellCentre[static_cast<std::size_t>(other)]);
+            nearest = std::min(nearest, d);
+            near += d <= nearRadius ? 1 : 0;
+        }
+        f[9] = nearest < kInfinity ? cost(nearest) : 0.0f;
+        int adjacent = 0;
+        for (int other : tables.cellNeighbours[static_cast<std::size_t>(cell)])
+            adjacent += covered[static_cast<std::size_t>(other)] ? 0 : 1;
+        f[10] = std::min(1.0f, static_cast<float>(adjacent) / 4.0f);
+        if (c.room >= 0 && roomRequired[static_cast<std::size_t>(c.room)] > 0)
+            f[11] = static_cast<float>(roomLeft[static_cast<std::size_t>(c.room)]) /
+                    static_cast<float>(roomRequired[static_cast<std::size_t>(c.room)]);
+        f[12] = c.room == currentRoom ? 1.0f : 0.0f;
+        f[13] = std::min(1.0f, static_cast<float>(near) / 8.0f);
+    }
+    return out;
+}
+
+} // namespace fc
