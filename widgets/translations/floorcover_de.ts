@@ -1244,10 +1244,6 @@ Abdeckungspfadplanung für Reinigungs- und Desinfektionsroboter.</translation>
         <translation>Wie im Artikel</translation>
     </message>
     <message>
-        <source>Improved: masking, graph-cost reward, 3-step returns and a refined walk. Paper: the published setting.</source>
-        <translation>Verbessert: Maskierung, Belohnung nach Graphkosten, 3-Schritt-Erträge und ein verfeinerter Weg. Wie im Artikel: die veröffentlichte Einstellung.</translation>
-    </message>
-    <message>
         <source> s</source>
         <translation> s</translation>
     </message>
@@ -1362,6 +1358,14 @@ Abdeckungspfadplanung für Reinigungs- und Desinfektionsroboter.</translation>
     <message>
         <source>Resume</source>
         <translation>Fortsetzen</translation>
+    </message>
+    <message>
+        <source>Graph state</source>
+        <translation>Graphzustand</translation>
+    </message>
+    <message>
+        <source>Improved: masking, graph-cost reward, cost channels and a refined walk. Graph state: the same with per-corner features and a per-corner network (faster on large floors). Paper: the published setting.</source>
+        <translation>Verbessert: Maskierung, Belohnung aus Graphkosten, Kostenkanäle und ein verfeinerter Weg. Graphzustand: dasselbe mit Merkmalen je Ecke und einem Netz je Ecke (schneller auf großen Grundrissen). Artikel: die veröffentlichte Einstellung.</translation>
     </message>
 </context>
 <context>

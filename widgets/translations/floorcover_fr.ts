@@ -1244,10 +1244,6 @@ Planification de trajets de couverture pour robots de nettoyage et de désinfect
         <translation>Comme l’article</translation>
     </message>
     <message>
-        <source>Improved: masking, graph-cost reward, 3-step returns and a refined walk. Paper: the published setting.</source>
-        <translation>Amélioré : masquage, récompense selon le coût du graphe, retours à 3 pas et un parcours affiné. Comme l’article : le réglage publié.</translation>
-    </message>
-    <message>
         <source> s</source>
         <translation> s</translation>
     </message>
@@ -1362,6 +1358,14 @@ Planification de trajets de couverture pour robots de nettoyage et de désinfect
     <message>
         <source>Resume</source>
         <translation>Reprendre</translation>
+    </message>
+    <message>
+        <source>Graph state</source>
+        <translation>État de graphe</translation>
+    </message>
+    <message>
+        <source>Improved: masking, graph-cost reward, cost channels and a refined walk. Graph state: the same with per-corner features and a per-corner network (faster on large floors). Paper: the published setting.</source>
+        <translation>Amélioré : masquage, récompense par coût de graphe, canaux de coût et parcours affiné. État de graphe : la même chose avec des caractéristiques par coin et un réseau par coin (plus rapide sur les grands plans). Article : le réglage publié.</translation>
     </message>
 </context>
 <context>
