@@ -42,6 +42,38 @@ sys.exit(0 if s["format"] == "ros-map" and abs(s["free_area"] - 6) < 0.06 and s[
 grep -q '"hasStart": *true' "$work/map.fcproj" || grep -q '"start"' "$work/map.fcproj" ||
   fail "map project has no start"
 
+# Map images written by GDAL, not by us: office and simple-diamond (a slanted obstacle)
+# rasterized at 5 cm the way a map
+# server stores a recorded map (free 254, walls and furniture 0, unknown 205 around it), as
+# PGM with its YAML. The traced free area must be within 1% of the plan's.
+if command -v gdal_rasterize >/dev/null && command -v gdal_translate >/dev/null; then
+for name in office simple-diamond; do
+  plan="${FC_PLANS_DIR:?}/$name.geojson"
+  read -r xmin ymin xmax ymax < <(python3 -c 'import json, sys
+pts = [p for f in json.load(open(sys.argv[1]))["features"] for r in f["geometry"]["coordinates"] for p in r]
+xs = [p[0] for p in pts]; ys = [p[1] for p in pts]
+print(min(xs) - 1, min(ys) - 1, max(xs) + 1, max(ys) + 1)' "$plan")
+  gdal_rasterize -q -init 205 -burn 254 -where "role='boundary'" -tr 0.05 0.05 \
+    -te "$xmin" "$ymin" "$xmax" "$ymax" -ot Byte -of GTiff "$plan" "$work/$name.tif" &&
+    gdal_rasterize -q -b 1 -burn 0 -where "role='obstacle'" "$plan" "$work/$name.tif" &&
+    gdal_translate -q -of PNM "$work/$name.tif" "$work/$name-map.pgm" || fail "gdal map"
+  printf 'image: %s-map.pgm\nresolution: 0.05\norigin: [%s, %s, 0.0]\nnegate: 0\noccupied_thresh: 0.65\nfree_thresh: 0.196\nmode: trinary\n' \
+    "$name" "$xmin" "$ymin" >"$work/$name-map.yaml"
+  "$cli" import "$plan" --out "$work/$name-reference.geojson" >"$work/$name-reference" 2>/dev/null ||
+    fail "$name reference"
+  "$cli" import "$work/$name-map.yaml" --out "$work/$name-map.geojson" >"$work/out" \
+    2>"$work/err" || fail "gdal map exit: $(cat "$work/err")"
+  python3 -c 'import json, sys
+ref = json.load(open(sys.argv[1]))["free_area"]; got = json.load(open(sys.argv[2]))["free_area"]
+print(sys.argv[3] + " map: free area %.2f m2 against the plan'"'"'s %.2f m2" % (got, ref))
+sys.exit(0 if abs(got - ref) <= 0.01 * ref else 1)' "$work/$name-reference" "$work/out" "$name" ||
+    fail "gdal map free area: $(cat "$work/out")"
+  "$cli" plan "$work/$name-map.geojson" >/dev/null 2>&1 || fail "the $name map's plan does not plan"
+done
+else
+  echo "SKIP: gdal_rasterize not installed (gdal-bin)"
+fi
+
 # WKT.
 echo 'POLYGON ((0 0, 10 0, 10 5, 0 5, 0 0), (2 2, 3 2, 3 3, 2 3, 2 2))' >"$work/hall.wkt"
 "$cli" import "$work/hall.wkt" --out "$work/hall.geojson" >"$work/out" 2>/dev/null &&
