@@ -4,8 +4,8 @@
 #pragma once
 
 #include "OverlayLayer.h"
-#include "formats/Import.h"
 #include "formats/Export.h"
+#include "formats/Import.h"
 
 #include <QMainWindow>
 #include <array>
