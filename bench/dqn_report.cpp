@@ -3,14 +3,18 @@
 // curves and measures the gap to exact/heuristic on 100 random queries.
 //   floorcover-dqn-report [--seconds S] [--seed N] [--queries N] [--cases a,b]
 //                         [--settings paper,improved,improved+gamma=1,...] --out DIR
+//   floorcover-dqn-report --model FILE --cases NAME [--refine none|corners|local-search]
 // A case is a sample plan's name or generated-office-N (a generated floor of N rooms).
 // A setting is "paper", "improved" or "graph", optionally followed by "+key=value" changes (an
 // ablation): state=image|graph (the state and its network), mask=0|1, reward=paper|cost, nstep=N,
 // gamma=G, lr=R, eps=STEPS, net=paper|small, refine=none|corners|local-search, cost=SCALE (reward
-// per longest edge), sync=STEPS, batch=N, features=0|1, conv=C (all three layers), hidden=N. Writes
-// DIR/curves-<case>-<setting>.csv and prints a Markdown table (docs/dqn.md). Time is the training
-// thread's CPU time, so a busy machine does not change the figures.
+// per longest edge), sync=STEPS, batch=N, features=0|1, graphfeatures=14|16, conv=C (all three
+// layers), hidden=N. Writes DIR/curves-<case>-<setting>.csv and prints a Markdown table
+// (docs/dqn.md). Time is the training thread's CPU time, so a busy machine does not change the
+// figures.
 #include "formats/PlanIO.h"
+#include "learning/dqn/DqnModelFile.h"
+#include "learning/dqn/DqnPolicy.h"
 #include "learning/dqn/DqnTrainer.h"
 #include "model/SyntheticPlans.h"
 #include "pipeline/Planner.h"
@@ -18,6 +22,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <ctime>
 #include <fstream>
@@ -42,6 +47,8 @@ struct Options {
     std::vector<std::string> cases{"simple", "room-obstacle", "office"};
     std::vector<std::string> settings{"paper", "improved"};
     std::string out = ".";
+    std::string model;      // measure this saved model instead of training
+    std::string refinement; // with --model: override the model's refinement
 };
 
 std::vector<std::string> split(const std::string& text) {
@@ -109,7 +116,9 @@ TrainingOptions settingOptions(const std::string& setting, std::uint64_t seed) {
             o.agent.network = from.agent.network;
             o.agent.hiddenUnits = from.agent.hiddenUnits;
             o.agent.replayCapacity = from.agent.replayCapacity;
-        } else if (key == "refine")
+        } else if (key == "graphfeatures")
+            o.environment.graphFeatures = std::stoi(value);
+        else if (key == "refine")
             o.refinement = refinementFromName(value);
         else
             throw std::invalid_argument("unknown setting change " + key);
@@ -129,28 +138,32 @@ double threadCpuSeconds() {
 struct FinalFigures {
     int queries = 0, failures = 0, exactReferences = 0;
     double meanGap = 0, maxGap = 0, meanRefinedGap = 0, maxRefinedGap = 0, greedyGap = 0;
+    double refinedGreedyGap = 0; // greedy's walk under the same refinement: what the policy adds
     double meanMs = 0, maxMs = 0;
 };
 
 // Plans `queries` random queries with the trained policy (raw and as the dqn solver, i.e.
 // with the model's refinement) and compares with the exact optimum (<= 12 cells) or the
 // heuristic solver.
-FinalFigures measure(const DqnTrainer& trainer, const Case& c, int count, std::uint64_t seed) {
-    const CornerGraph& graph = trainer.graph();
+FinalFigures measure(const DqnAgent& agent, const CornerGraph& graph,
+                     const EnvironmentOptions& environment, OrderRefinement refinement,
+                     const Case& c, int count, std::uint64_t seed) {
     FinalFigures f;
     for (const Query& q : randomQueries(graph, count, seed * 1000003ULL + 17ULL, c.queries)) {
         const int cells = static_cast<int>(std::count(q.required.begin(), q.required.end(), 1));
         const bool exact = cells <= 12;
+        const double tRef = threadCpuSeconds();
         const double reference = std::max(
             exact ? solveExact(graph, q).graphCost : solveHeuristic(graph, q).graphCost, 1e-9);
+        const double referenceMs = 1000.0 * (threadCpuSeconds() - tRef);
         f.exactReferences += exact ? 1 : 0;
         ++f.queries;
         try {
-            const EnvironmentOptions& environment = trainer.options().environment;
-            const Solution raw = solveWithPolicy(trainer.agent(), graph, q, environment);
+            const double tRaw = threadCpuSeconds();
+            const Solution raw = solveWithPolicy(agent, graph, q, environment);
+            const double rawMs = 1000.0 * (threadCpuSeconds() - tRaw);
             const double t0 = threadCpuSeconds();
-            const Solution solved = solveWithPolicy(trainer.agent(), graph, q, environment,
-                                                    trainer.options().refinement);
+            const Solution solved = solveWithPolicy(agent, graph, q, environment, refinement);
             const double ms = 1000.0 * (threadCpuSeconds() - t0);
             f.meanMs += ms;
             f.maxMs = std::max(f.maxMs, ms);
@@ -160,7 +173,17 @@ FinalFigures measure(const DqnTrainer& trainer, const Case& c, int count, std::u
             f.maxGap = std::max(f.maxGap, gap);
             f.meanRefinedGap += refined;
             f.maxRefinedGap = std::max(f.maxRefinedGap, refined);
-            f.greedyGap += solveGreedy(graph, q).graphCost / reference - 1.0;
+            const Solution greedy = solveGreedy(graph, q);
+            f.greedyGap += greedy.graphCost / reference - 1.0;
+            const double greedyRefined =
+                refineCellOrder(graph, q, greedy, refinement).graphCost / reference - 1.0;
+            f.refinedGreedyGap += greedyRefined;
+            if (std::getenv("FC_DQN_REPORT_QUERIES"))
+                std::fprintf(stderr,
+                             "query cells=%d ref=%.1f policy=%.3f dqn=%.3f greedy=%.3f "
+                             "greedy+refine=%.3f ms=%.1f policyms=%.1f refms=%.1f\n",
+                             cells, reference, gap, refined, greedy.graphCost / reference - 1.0,
+                             greedyRefined, ms, rawMs, referenceMs);
         } catch (const SolverError& e) {
             ++f.failures;
             std::cerr << "failure: " << e.what() << "\n";
@@ -170,6 +193,7 @@ FinalFigures measure(const DqnTrainer& trainer, const Case& c, int count, std::u
     f.meanGap /= ok;
     f.meanRefinedGap /= ok;
     f.greedyGap /= ok;
+    f.refinedGreedyGap /= ok;
     f.meanMs /= ok;
     return f;
 }
@@ -190,6 +214,44 @@ Project loadCase(const std::string& name, std::uint64_t seed) {
     return project;
 }
 
+void printRow(const std::string& name, const std::string& setting, long episodes, long steps,
+              const FinalFigures& f) {
+    const char* reference = f.exactReferences == f.queries ? "exact"
+                            : f.exactReferences == 0       ? "heuristic"
+                                                           : "exact/heuristic";
+    std::printf("| %s | %s | %ld | %ld | %.2f%% | %.1f%% | %.2f%% | %.2f%% | %.2f%% | %.2f%% | "
+                "%d/%d | %s | %.1f (%.1f) |\n",
+                name.c_str(), setting.c_str(), episodes, steps, 100 * f.meanGap, 100 * f.maxGap,
+                100 * f.meanRefinedGap, 100 * f.maxRefinedGap, 100 * f.greedyGap,
+                100 * f.refinedGreedyGap, f.failures, f.queries, reference, f.meanMs, f.maxMs);
+    std::fflush(stdout);
+}
+
+Case caseOf(const std::string& name) {
+    return Case{name, name == "office" || name == "ward" || isGenerated(name)
+                          ? QuerySet::RoomSubsets
+                          : QuerySet::AllCells};
+}
+
+// --model FILE: measures a saved model on its case (no training), e.g. to compare inference
+// options on one trained policy.
+int measureSavedModel(const Options& o) {
+    if (o.cases.size() != 1)
+        throw std::invalid_argument("--model needs exactly one case (--cases NAME)");
+    const std::string& name = o.cases.front();
+    const Project project = loadCase(name, o.seed);
+    const DqnModel model = loadDqnModelFile(o.model);
+    const PreparedPlan prepared =
+        preparePlan(project.plan, project.robot, model.info.stripeAngleDeg);
+    checkModelFitsGraph(model.info, prepared.graph, o.model);
+    const OrderRefinement refinement =
+        o.refinement.empty() ? model.info.refinement : refinementFromName(o.refinement);
+    const FinalFigures f = measure(*model.agent, prepared.graph, model.info.environment, refinement,
+                                   caseOf(name), o.queries, o.seed);
+    printRow(name, model.info.setting + " (saved)", model.info.episodes, model.info.steps, f);
+    return 0;
+}
+
 } // namespace
 
 int main(int argc, char** argv) {
@@ -208,19 +270,24 @@ int main(int argc, char** argv) {
             o.settings = split(value);
         else if (key == "--out")
             o.out = value;
+        else if (key == "--model")
+            o.model = value;
+        else if (key == "--refine")
+            o.refinement = value;
         else {
             std::cerr << "unknown option " << key << "\n";
             return 2;
         }
     }
     std::printf("| plan | setting | episodes | env steps | gap (policy) | max gap | gap (dqn "
-                "solver) | max | greedy gap | failures | reference | ms/query (max) |\n");
-    std::printf("|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---|---:|\n");
+                "solver) | max | greedy gap | greedy refined | failures | reference | ms/query "
+                "(max) |\n");
+    std::printf("|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---|---:|\n");
+    if (!o.model.empty())
+        return measureSavedModel(o);
     for (const std::string& name : o.cases) {
         const Project project = loadCase(name, o.seed);
-        const Case c{name, name == "office" || name == "ward" || isGenerated(name)
-                               ? QuerySet::RoomSubsets
-                               : QuerySet::AllCells};
+        const Case c = caseOf(name);
         const PreparedPlan prepared = preparePlan(project.plan, project.robot, 90.0);
         for (const std::string& setting : o.settings) {
             const TrainingOptions options = settingOptions(setting, o.seed);
@@ -253,16 +320,9 @@ int main(int argc, char** argv) {
             const EvaluationReport last = trainer.evaluate();
             csv << trainer.episodes() << ',' << o.seconds << ",,,,," << last.meanGap << ','
                 << last.meanRefinedGap << '\n';
-            const FinalFigures f = measure(trainer, c, o.queries, o.seed);
-            const char* reference = f.exactReferences == f.queries ? "exact"
-                                    : f.exactReferences == 0       ? "heuristic"
-                                                                   : "exact/heuristic";
-            std::printf(
-                "| %s | %s | %ld | %ld | %.2f%% | %.1f%% | %.2f%% | %.2f%% | %.2f%% | %d/%d "
-                "| %s | %.1f (%.1f) |\n",
-                name.c_str(), setting.c_str(), trainer.episodes(), trainer.agent().stepCount(),
-                100 * f.meanGap, 100 * f.maxGap, 100 * f.meanRefinedGap, 100 * f.maxRefinedGap,
-                100 * f.greedyGap, f.failures, f.queries, reference, f.meanMs, f.maxMs);
+            const FinalFigures f = measure(trainer.agent(), prepared.graph, options.environment,
+                                           options.refinement, c, o.queries, o.seed);
+            printRow(name, setting, trainer.episodes(), trainer.agent().stepCount(), f);
             std::fflush(stdout);
             trainer.save(o.out + "/model-" + name + "-" + setting + ".fcdqn");
         }

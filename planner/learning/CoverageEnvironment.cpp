@@ -288,7 +288,7 @@ std::vector<float> CoverageEnvironment::observation() const {
     state.initialCovered = &initialCovered_;
     state.transitCost = &transitCost_;
     state.costToEnd = &costToEnd_;
-    return graphStateFeatures(*graph_, *graphTables_, state);
+    return graphStateFeatures(*graph_, *graphTables_, state, options_.graphFeatures);
 }
 
 std::vector<float> CoverageEnvironment::imageObservation() const {

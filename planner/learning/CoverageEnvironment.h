@@ -51,6 +51,9 @@ struct EnvironmentOptions {
     // Graph-level state (GraphState.h): per corner kGraphFeatureCount features instead of the
     // image; the agent then needs the graph network (QNetworkKind::Graph).
     bool graphState = false;
+    // Features per corner: kGraphFeatureCount, or kFirstGraphFeatureCount for models trained
+    // before features 14-15 existed (they still load and plan).
+    int graphFeatures = kGraphFeatureCount;
 };
 
 constexpr double kCostChannelScale = 8.0;
@@ -90,7 +93,7 @@ public:
     std::vector<float> observation() const;
     int channelCount() const { return channelCountFor(options_); }
     static int channelCountFor(const EnvironmentOptions& options) {
-        return options.graphState ? kGraphFeatureCount : options.costChannels ? 5 : 3;
+        return options.graphState ? options.graphFeatures : options.costChannels ? 5 : 3;
     }
     std::size_t observationSize() const;
     // Per node: true for a corner of an uncovered required cell reachable by a transit.

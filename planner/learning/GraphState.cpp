@@ -51,7 +51,9 @@ GraphStateTables::GraphStateTables(const CornerGraph& graph) {
 }
 
 std::vector<float> graphStateFeatures(const CornerGraph& graph, const GraphStateTables& tables,
-                                      const GraphStateInput& state) {
+                                      const GraphStateInput& state, int featureCount) {
+    if (featureCount != kGraphFeatureCount && featureCount != kFirstGraphFeatureCount)
+        throw std::invalid_argument("graphStateFeatures: unknown feature count");
     if (!state.covered || !state.initialCovered || !state.transitCost || !state.costToEnd)
         throw std::invalid_argument("graphStateFeatures: incomplete state");
     const std::vector<char>& covered = *state.covered;
@@ -93,7 +95,13 @@ std::vector<float> graphStateFeatures(const CornerGraph& graph, const GraphState
     const int currentRoom = current.cell >= 0 ? graph.cells[current.cell].room : -1;
     const double nearRadius = 2.0 * edge;
 
-    const int F = kGraphFeatureCount;
+    double cheapestTransit = kInfinity;
+    for (const GraphNode& n : graph.nodes)
+        if (n.cell >= 0 && !covered[static_cast<std::size_t>(n.cell)])
+            cheapestTransit =
+                std::min(cheapestTransit, (*state.transitCost)[static_cast<std::size_t>(n.id)]);
+
+    const int F = featureCount;
     std::vector<float> out(graph.nodes.size() * static_cast<std::size_t>(F), 0.0f);
     for (const GraphNode& n : graph.nodes) {
         float* f = out.data() + static_cast<std::size_t>(n.id) * F;
@@ -116,6 +124,11 @@ std::vector<float> graphStateFeatures(const CornerGraph& graph, const GraphState
             f[1] = cost((*state.transitCost)[id]);
             f[2] = exit >= 0 ? cost((*state.costToEnd)[static_cast<std::size_t>(exit)])
                              : kGraphCostCap;
+            if (F > kFirstGraphFeatureCount) {
+                const double margin = (*state.transitCost)[id] - cheapestTransit;
+                f[14] = static_cast<float>(std::min(margin / edge, kGraphCostCap));
+                f[15] = margin <= 1e-9 * edge ? 1.0f : 0.0f;
+            }
         }
         const Vec2 from =
             exit >= 0 ? graph.nodes[static_cast<std::size_t>(exit)].position : n.position;

@@ -21,6 +21,10 @@
 //  12 a's cell is in the current corner's room
 //  13 uncovered cells other than a's whose centre lies within 2 longest edges of exit(a), / 8,
 //     capped at 1
+//  14 transit cost to a minus the cheapest transit to any valid corner, in longest edges
+//     (finer than 1), capped at kGraphCostCap: the greedy choice's margin, which the coarse
+//     feature 1 hides on large floors
+//  15 a is a cheapest valid corner (the greedy solver's choice)
 // Layout: node-major, features of node 0 first.
 #pragma once
 
@@ -30,8 +34,9 @@
 
 namespace fc {
 
-constexpr int kGraphFeatureCount = 14;
-constexpr double kGraphCostUnit = 8.0; // longest edges
+constexpr int kGraphFeatureCount = 16;
+constexpr int kFirstGraphFeatureCount = 14; // model files of the first version
+constexpr double kGraphCostUnit = 8.0;      // longest edges
 constexpr double kGraphCostCap = 4.0;
 
 // What depends on the graph only, computed once per environment.
@@ -53,8 +58,10 @@ struct GraphStateInput {
     const std::vector<double>* costToEnd = nullptr;    // per node, to end (inf: none)
 };
 
-// nodes x kGraphFeatureCount features (see the header comment).
+// nodes x featureCount features (see the header comment): the first featureCount of them,
+// kGraphFeatureCount or kFirstGraphFeatureCount.
 std::vector<float> graphStateFeatures(const CornerGraph& graph, const GraphStateTables& tables,
-                                      const GraphStateInput& state);
+                                      const GraphStateInput& state,
+                                      int featureCount = kGraphFeatureCount);
 
 } // namespace fc

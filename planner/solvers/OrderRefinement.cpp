@@ -5,6 +5,7 @@
 #include "solvers/ProxyDistances.h"
 #include "solvers/Solver.h"
 #include "solvers/SolverCommon.h"
+#include "solvers/TourSearch.h"
 #include "solvers/TransitSearch.h"
 
 namespace fc {
@@ -46,6 +47,18 @@ Solution refineCellOrder(const CornerGraph& graph, const Query& query, const Sol
     double cost = evaluator.setBase(order);
     if (refinement == OrderRefinement::LocalSearch && cost < kInfinity) {
         ProxyDistances distances(transit, search, std::min(tasks - 1, kNeighbourCount));
+        // The given order's proxy local optimum (Or-opt, 2-opt, option changes; no kicks)
+        // may start the true-cost polish cheaper; the proxy misses the covered state, so
+        // both starts are priced exactly and the cheaper is polished.
+        TourSearch tour(problem, distances, problem.seed);
+        tour.startFrom(order);
+        tour.optimise();
+        std::vector<int> proxyOrder = tour.order();
+        const double proxyCost = evaluator.setBase(proxyOrder);
+        if (proxyCost < cost) {
+            order = std::move(proxyOrder);
+            cost = proxyCost;
+        }
         OrderPolish polish(evaluator, distances, tasks, problem.seed);
         cost = polish.improve(order, workBudget, control);
     }

@@ -90,6 +90,16 @@ void TourSearch::buildNearestNeighbour() {
     cost_ = fullCost();
 }
 
+void TourSearch::startFrom(const std::vector<int>& order) {
+    tour_.assign(1, kStartMark);
+    tour_.insert(tour_.end(), order.begin(), order.end());
+    tour_.push_back(kEndMark);
+    refreshPositions(1, count_);
+    std::fill(option_.begin(), option_.end(), 0);
+    cost_ = fullCost();
+    optimiseOptions(); // the best options for this order, when cheaper
+}
+
 void TourSearch::refreshPositions(int from, int to) {
     for (int p = std::max(from, 1); p <= std::min(to, count_); ++p)
         position_[tour_[p]] = p;

@@ -15,6 +15,8 @@ public:
     TourSearch(const Problem& problem, ProxyDistances& distances, std::uint64_t seed);
 
     void buildNearestNeighbour();
+    // Starts from a given order of all tasks (e.g. a learnt policy's), best options for it.
+    void startFrom(const std::vector<int>& order);
     // Moves to a local optimum of the proxy cost.
     void optimise();
     // Iterated local search: `kicks` perturbations, each kept only if the result improves.

@@ -1,6 +1,8 @@
 // Graph solvers (SPEC sect. 3-4) on hand-built corner graphs, checked against hand-computed
 // costs and an independent brute force over cell orders and cover options.
 #include "TestGraphs.h"
+#include "formats/PlanIO.h"
+#include "pipeline/Planner.h"
 #include "solvers/OrderEvaluator.h"
 #include "solvers/Solver.h"
 
@@ -9,6 +11,7 @@
 #include <cmath>
 #include <functional>
 #include <gtest/gtest.h>
+#include <limits>
 #include <queue>
 #include <random>
 
@@ -458,4 +461,29 @@ TEST(OrderRefinement, EachLevelKeepsTheOrderValidAndNeverCostsMore) {
         }
     }
     RecordProperty("improved_by_corner_choice", improvedByCorners);
+}
+
+// The local search level must repair a poor order on a real floor, not only polish a good
+// one: a learnt policy early in training walks the cells in a far-from-good order. Here a
+// shuffled order of every cell of the office plan (budgets count work, not time).
+TEST(OrderRefinement, LocalSearchRepairsAPoorOrderOnALargeFloor) {
+    const Project project = loadProjectFile(std::string(FC_PLANS_DIR) + "/office.geojson");
+    const PreparedPlan prepared = preparePlan(project.plan, project.robot, 90.0);
+    Query query;
+    query.required.assign(prepared.graph.cells.size(), 0);
+    for (const GraphCell& c : prepared.graph.cells)
+        query.required[static_cast<std::size_t>(c.id)] = c.reachable ? 1 : 0;
+    query.startNode = prepared.graph.cells.front().nodes.front();
+    query.endNode = query.startNode;
+    Solution poor = solveGreedy(prepared.graph, query);
+    std::mt19937 shuffle(7);
+    std::shuffle(poor.cellOrder.begin(), poor.cellOrder.end(), shuffle);
+    poor.graphCost = std::numeric_limits<double>::infinity(); // not its walk any more
+    const Solution refined =
+        refineCellOrder(prepared.graph, query, poor, OrderRefinement::LocalSearch);
+    expectValid(prepared.graph, query, refined);
+    const double heuristic = solveHeuristic(prepared.graph, query).graphCost;
+    RecordProperty("refined_over_heuristic_permille",
+                   static_cast<int>(1000.0 * refined.graphCost / heuristic));
+    EXPECT_LE(refined.graphCost, 1.05 * heuristic);
 }

@@ -83,6 +83,8 @@ TEST(GraphState, FeaturesMatchAHandComputedCase) {
     EXPECT_FLOAT_EQ(feature(obs, 0, 11), 1.0f);
     EXPECT_FLOAT_EQ(feature(obs, 0, 12), 1.0f);
     EXPECT_FLOAT_EQ(feature(obs, 0, 13), 0.25f); // two centres within 18 m
+    EXPECT_FLOAT_EQ(feature(obs, 0, 14), 0.0f);  // the cheapest transit: greedy's choice
+    EXPECT_FLOAT_EQ(feature(obs, 0, 15), 1.0f);
     // Corner 9 (the end): reached by 0-2, 2-5, 5-7, 7-9 = 6 + sqrt 5; its cell exits at 6.
     EXPECT_FLOAT_EQ(feature(obs, 9, 1), static_cast<float>((6 + root5) / unit));
     EXPECT_FLOAT_EQ(feature(obs, 9, 2), static_cast<float>((4 + root5) / unit));
@@ -90,6 +92,8 @@ TEST(GraphState, FeaturesMatchAHandComputedCase) {
     EXPECT_FLOAT_EQ(feature(obs, 9, 7), static_cast<float>(7 / diagonal));
     EXPECT_FLOAT_EQ(feature(obs, 9, 8), static_cast<float>(2 / diagonal));
     EXPECT_FLOAT_EQ(feature(obs, 9, 10), 0.25f);
+    EXPECT_FLOAT_EQ(feature(obs, 9, 14), static_cast<float>((6 + root5) / 9)); // in edges
+    EXPECT_FLOAT_EQ(feature(obs, 9, 15), 0.0f);
 
     // Cover cell 0 from corner 0: the robot stands at 2, two of three cells are left.
     env.step(0);
@@ -204,10 +208,16 @@ TEST(GraphModelFile, RoundTripAndRefusalOfAnotherStateKind) {
     EXPECT_NE(refusal(replaced(bytes, "\"state\":\"graph\"", "\"state\":\"voxel\""))
                   .find("unknown state kind"),
               std::string::npos);
+    // A feature count this version does not know: named, not a size mismatch.
+    std::string unknown =
+        replaced(bytes, "\"input_channels\":" + std::to_string(F), "\"input_channels\":15");
+    unknown = replaced(unknown, "\"graph_features\":" + std::to_string(F), "\"graph_features\":15");
+    EXPECT_NE(refusal(unknown).find("graph state of 15 features per corner"), std::string::npos)
+        << refusal(unknown);
     // A consistent image header over graph weights: the weights do not fit.
     std::string image = replaced(bytes, "\"state\":\"graph\"", "\"state\":\"image\"");
     image = replaced(image, "\"network\":\"graph\"", "\"network\":\"conv\"");
-    image = replaced(image, "\"input_channels\":14", "\"input_channels\":3");
+    image = replaced(image, "\"input_channels\":" + std::to_string(F), "\"input_channels\":3");
     EXPECT_NE(refusal(image).find("another architecture"), std::string::npos) << refusal(image);
     // The image solver's options with a graph model: refused by the policy, never run.
     std::istringstream in(bytes);
@@ -257,4 +267,22 @@ TEST(GraphPolicy, MaskedInferenceAlwaysFinishesAndTrainingIsReproducible) {
         return rewards;
     };
     EXPECT_EQ(run(), run());
+}
+
+// Graph models saved before features 14-15 (14 per corner, no "graph_features" key) still
+// load and plan with the features they were trained on.
+TEST(GraphModelFile, FirstFeatureSetModelsStillLoadAndPlan) {
+    const PreparedPlan plan = prepared("simple");
+    TrainingOptions options = smallGraphOptions(4);
+    options.environment.graphFeatures = kFirstGraphFeatureCount;
+    DqnTrainer trainer(plan.graph, options);
+    trainer.train(2, 0.0);
+    ASSERT_EQ(trainer.agent().parameters().inputChannels, kFirstGraphFeatureCount);
+    const std::string old = replaced(serialized(trainer), ",\"graph_features\":14", "");
+    std::istringstream in(old);
+    const DqnModel model = readDqnModel(in, "first.fcdqn");
+    EXPECT_EQ(model.info.environment.graphFeatures, kFirstGraphFeatureCount);
+    const Query q = randomQueries(plan.graph, 1, 5, QuerySet::AllCells).front();
+    const Solution s = solveWithPolicy(*model.agent, plan.graph, q, model.info.environment);
+    EXPECT_TRUE(evaluateWalk(plan.graph, q, s.walk).coversAllRequired);
 }

@@ -1,6 +1,7 @@
 #include "learning/dqn/DqnModelFile.h"
 
 #include "formats/PlanIO.h"
+#include "learning/GraphState.h"
 #include "model/Plan.h"
 
 #include <cmath>
@@ -67,7 +68,8 @@ nlohmann::json toJson(const DqnModelInfo& m) {
               {"max_steps", e.maxSteps},
               {"reward_is_negative_graph_cost", e.rewardIsNegativeGraphCost},
               {"cost_channels", e.costChannels},
-              {"state", e.graphState ? "graph" : "image"}}},
+              {"state", e.graphState ? "graph" : "image"},
+              {"graph_features", e.graphState ? e.graphFeatures : 0}}},
             {"n_step", m.nStep},
             {"refinement", refinementName(m.refinement)},
             {"training",
@@ -135,6 +137,17 @@ DqnModelInfo fromJson(const nlohmann::json& j) {
     if (o.graphState != (p.network == QNetworkKind::Graph))
         throw std::invalid_argument("a " + state + " state needs the " +
                                     (o.graphState ? "graph" : "conv") + " network, not " + network);
+    if (o.graphState) {
+        // Version-2 files of the first graph state have 14 features per corner.
+        o.graphFeatures = e.value("graph_features", p.inputChannels);
+        if ((o.graphFeatures != kGraphFeatureCount && o.graphFeatures != kFirstGraphFeatureCount) ||
+            o.graphFeatures != p.inputChannels)
+            throw std::invalid_argument(
+                "a graph state of " + std::to_string(p.inputChannels) +
+                " features per corner, which this version does not know (it reads " +
+                std::to_string(kFirstGraphFeatureCount) + " or " +
+                std::to_string(kGraphFeatureCount) + ")");
+    }
     m.nStep = j.at("n_step").get<int>();
     m.refinement = refinementFromName(j.at("refinement").get<std::string>());
     const auto& t = j.at("training");
