@@ -1,15 +1,22 @@
 // floorcover-plot-curves: renders the learning curves written by floorcover-dqn-report as
 // one PNG per plan (QCustomPlot, off screen): reward and gap to the reference, against
-// episodes and against training seconds, for the paper's and the improved setting.
+// episodes and against training seconds, for the paper's, the improved and (when its curves
+// exist) the graph-state setting.
 //   floorcover-plot-curves DIR CASE[,CASE..] OUTDIR
 #include <QApplication>
 #include <QFile>
 #include <QTextStream>
+#include <algorithm>
 #include <cstdio>
 #include <qcustomplot.h>
 #include <stdexcept>
+#include <utility>
+#include <vector>
 
 namespace {
+
+// The gaps span from the optimum (0) to several hundred percent: a log axis, 0 drawn here.
+constexpr double kLowestGapPercent = 0.1;
 
 struct Curve {
     QVector<double> episode, seconds, reward, average, gapEpisode, gapSeconds, gap;
@@ -49,7 +56,7 @@ Curve readCurve(const QString& path) {
         if (!f[6].isEmpty()) { // an evaluation of the policy
             c.gapEpisode << episode;
             c.gapSeconds << seconds;
-            c.gap << 100.0 * value(f[6]);
+            c.gap << std::max(kLowestGapPercent, 100.0 * value(f[6]));
         }
     }
     return c;
@@ -82,12 +89,24 @@ int main(int argc, char** argv) {
         return 2;
     }
     const QString dir = argv[1];
-    const QColor paperColor(0xd9, 0x5f, 0x02), improvedColor(0x1b, 0x9e, 0x77);
+    // The paper's reward on the left axis; improved and graph share theirs (minus the added
+    // graph cost) on the right. The graph setting is drawn when its curves exist.
+    const struct {
+        const char* name;
+        QColor color;
+        bool optional;
+    } settings[] = {{"paper", QColor(0xd9, 0x5f, 0x02), false},
+                    {"improved", QColor(0x1b, 0x9e, 0x77), false},
+                    {"graph", QColor(0x75, 0x70, 0xb3), true}};
     for (const QString& name : QString(argv[2]).split(',')) {
-        Curve paper, improved;
+        std::vector<std::pair<int, Curve>> curves; // index into settings
         try {
-            paper = readCurve(dir + "/curves-" + name + "-paper.csv");
-            improved = readCurve(dir + "/curves-" + name + "-improved.csv");
+            for (int i = 0; i < 3; ++i) {
+                const QString path = dir + "/curves-" + name + "-" + settings[i].name + ".csv";
+                if (settings[i].optional && !QFile::exists(path))
+                    continue;
+                curves.emplace_back(i, readCurve(path));
+            }
         } catch (const std::exception& e) {
             std::fprintf(stderr, "floorcover-plot-curves: %s\n", e.what());
             return 2;
@@ -107,40 +126,38 @@ int main(int argc, char** argv) {
         } axes[] = {{"episodes", false}, {"training CPU seconds (one thread)", true}};
         for (int column = 0; column < 2; ++column) {
             const bool bySeconds = axes[column].seconds;
-            // Reward: each setting has its own reward function, so each its own axis.
+            // Reward: the paper's setting has its own reward function, so its own axis.
             auto* reward = new QCPAxisRect(&plot);
             grid->addElement(0, column, reward);
             reward->axis(QCPAxis::atBottom)->setLabel(axes[column].x);
             reward->axis(QCPAxis::atLeft)->setLabel("paper: episode reward (avg of 100)");
-            reward->axis(QCPAxis::atRight)->setLabel("improved: -graph cost / longest edge");
-            addLine(reward, reward->axis(QCPAxis::atLeft),
-                    bySeconds ? paper.seconds : paper.episode, paper.average, paperColor, "paper",
-                    plot);
-            addLine(reward, reward->axis(QCPAxis::atRight),
-                    bySeconds ? improved.seconds : improved.episode, improved.average,
-                    improvedColor, "improved", plot);
-            auto lastX = [bySeconds](const Curve& c) {
+            reward->axis(QCPAxis::atRight)->setLabel("improved, graph: -graph cost / longest edge");
+            double lastX = 0.0;
+            for (const auto& [index, c] : curves) {
                 const QVector<double>& x = bySeconds ? c.seconds : c.episode;
-                return x.isEmpty() ? 0.0 : x.back();
-            };
-            reward->axis(QCPAxis::atBottom)->setRange(0, std::max(lastX(paper), lastX(improved)));
+                addLine(reward, reward->axis(index == 0 ? QCPAxis::atLeft : QCPAxis::atRight), x,
+                        c.average, settings[index].color, settings[index].name, plot);
+                lastX = std::max(lastX, x.isEmpty() ? 0.0 : x.back());
+            }
+            reward->axis(QCPAxis::atBottom)->setRange(0, lastX);
             // Gap of the greedy policy (no refinement) to the reference solver.
             auto* gap = new QCPAxisRect(&plot);
             grid->addElement(1, column, gap);
             gap->axis(QCPAxis::atBottom)->setLabel(axes[column].x);
-            gap->axis(QCPAxis::atLeft)->setLabel("policy gap to exact/heuristic (%)");
-            addLine(gap, gap->axis(QCPAxis::atLeft),
-                    bySeconds ? paper.gapSeconds : paper.gapEpisode, paper.gap, paperColor, "paper",
-                    plot);
-            addLine(gap, gap->axis(QCPAxis::atLeft),
-                    bySeconds ? improved.gapSeconds : improved.gapEpisode, improved.gap,
-                    improvedColor, "improved", plot);
-            gap->axis(QCPAxis::atLeft)->setRangeLower(0.0);
+            gap->axis(QCPAxis::atLeft)
+                ->setLabel("policy gap to exact/heuristic (%, log; 0 drawn at 0.1)");
+            gap->axis(QCPAxis::atLeft)->setScaleType(QCPAxis::stLogarithmic);
+            gap->axis(QCPAxis::atLeft)->setTicker(QSharedPointer<QCPAxisTickerLog>::create());
+            for (const auto& [index, c] : curves)
+                addLine(gap, gap->axis(QCPAxis::atLeft), bySeconds ? c.gapSeconds : c.gapEpisode,
+                        c.gap, settings[index].color, settings[index].name, plot);
+            gap->axis(QCPAxis::atLeft)->setRangeLower(kLowestGapPercent);
             gap->axis(QCPAxis::atBottom)->setRange(reward->axis(QCPAxis::atBottom)->range());
             auto* legend = new QCPLegend;
             gap->insetLayout()->addElement(legend, Qt::AlignTop | Qt::AlignRight);
             legend->setLayer(QStringLiteral("legend"));
-            for (int i = plot.graphCount() - 2; i < plot.graphCount(); ++i)
+            const int lines = static_cast<int>(curves.size());
+            for (int i = plot.graphCount() - lines; i < plot.graphCount(); ++i)
                 legend->addItem(new QCPPlottableLegendItem(legend, plot.graph(i)));
         }
         const QString out = QString(argv[3]) + "/dqn-curves-" + name + ".png";

@@ -32,9 +32,10 @@ commands:
                 divided by each baseline's (reeb-cpp, adjacency-ga)
   train PLAN    train the Double-DQN planner for this plan: --out MODEL
                 [--episodes N] [--seconds S] (default 300 s when neither is given)
-                [--seed N] [--setting improved|graph|paper] [--resume] [--evaluate-every N]
-                and the robot and --angle options above; prints progress; Ctrl-C stops
-                after the current episode and saves what was learnt
+                [--seed N] [--setting graph|improved|paper] [--resume] [--evaluate-every N]
+                (graph is the default) and the robot and --angle options above;
+                prints progress; Ctrl-C stops after the current episode and saves
+                what was learnt
   tile PLAN     tiling robot: tile the floor with its five shapes and order the tiles by
                 energy; prints one JSON line (energy, length, shape_changes, waypoints,
                 seconds); [--solver zigzag|spiral|greedy|aco|aco+2opt|ga|exact|

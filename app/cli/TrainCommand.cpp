@@ -64,9 +64,9 @@ int commandTrain(const Arguments& args) {
     if (episodes == 0 && seconds == 0.0)
         seconds = 300.0;
     const auto seed = static_cast<std::uint64_t>(args.integer("--seed").value_or(1));
-    const std::string setting = args.text("--setting").value_or("improved");
+    const std::string setting = args.text("--setting").value_or("graph");
     if (setting != "improved" && setting != "paper" && setting != "graph")
-        throw InputError("--setting must be improved, graph or paper");
+        throw InputError("--setting must be graph, improved or paper");
 
     const Project project = loadProjectFile(path);
     PreparedPlan prepared;

@@ -58,8 +58,9 @@ void TrainingDock::buildUi() {
 
     auto* controls = new QHBoxLayout;
     setting_ = new QComboBox(body);
-    setting_->addItem(tr("Improved"), QStringLiteral("improved"));
+    // Graph state first: the default, the one that learns on floors of many corners.
     setting_->addItem(tr("Graph state"), QStringLiteral("graph"));
+    setting_->addItem(tr("Improved"), QStringLiteral("improved"));
     setting_->addItem(tr("Paper"), QStringLiteral("paper"));
     setting_->setToolTip(tr("Improved: masking, graph-cost reward, cost channels and a refined "
                             "walk. Graph state: the same with per-corner features and a "

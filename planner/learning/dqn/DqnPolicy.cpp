@@ -47,7 +47,7 @@ Solution solveWithPolicy(const DqnAgent& agent, const CornerGraph& graph, const 
         throw SolverError("dqn: the policy's walk does not cover the query (internal error)");
     solution.cellOrder = evaluation.cellOrder;
     solution.graphCost = evaluation.graphCost;
-    return refineCellOrder(graph, query, solution, refinement, 200'000, control);
+    return refineCellOrder(graph, query, solution, refinement, kPolicyRefinementBudget, control);
 }
 
 namespace {

@@ -11,6 +11,12 @@
 
 namespace fc {
 
+// Settled search nodes the dqn solver's refinement may spend (OrderRefinement::LocalSearch).
+// Most of its gain comes from the proxy local optimum of the learnt order, which this budget
+// does not count; 100,000 keeps a query on office near 20 ms (max ~32 ms) on a 2-core VM,
+// where 200,000 gained 0.3 points of gap for 70% more time (docs/dqn.md).
+constexpr std::uint64_t kPolicyRefinementBudget = 100'000;
+
 // Greedy rollout of the policy from the query's start to its end, covering the required
 // cells (the others count as covered). Actions are always masked to corners of uncovered
 // reachable cells, whatever the agent was trained with, so the rollout always finishes.

@@ -248,8 +248,8 @@ EvaluationReport DqnTrainer::evaluate() {
         try {
             const Solution raw =
                 solveWithPolicy(*agent_, *graph_, evaluationQueries_[i], options_.environment);
-            const Solution refined =
-                refineCellOrder(*graph_, evaluationQueries_[i], raw, options_.refinement);
+            const Solution refined = refineCellOrder(*graph_, evaluationQueries_[i], raw,
+                                                     options_.refinement, kPolicyRefinementBudget);
             report.meanMilliseconds += 1000.0 * secondsSince(start);
             const double reference = std::max(referenceCosts_[i], 1e-9);
             const double gap = raw.graphCost / reference - 1.0;
