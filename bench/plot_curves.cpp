@@ -133,13 +133,28 @@ int main(int argc, char** argv) {
             reward->axis(QCPAxis::atLeft)->setLabel("paper: episode reward (avg of 100)");
             reward->axis(QCPAxis::atRight)->setLabel("improved, graph: -graph cost / longest edge");
             double lastX = 0.0;
+            QCPRange left(0, 0), right(0, 0); // the data's own ranges, with a margin below
+            bool anyLeft = false, anyRight = false;
             for (const auto& [index, c] : curves) {
                 const QVector<double>& x = bySeconds ? c.seconds : c.episode;
                 addLine(reward, reward->axis(index == 0 ? QCPAxis::atLeft : QCPAxis::atRight), x,
                         c.average, settings[index].color, settings[index].name, plot);
                 lastX = std::max(lastX, x.isEmpty() ? 0.0 : x.back());
+                for (double y : c.average) {
+                    QCPRange& range = index == 0 ? left : right;
+                    bool& any = index == 0 ? anyLeft : anyRight;
+                    range = any ? QCPRange(std::min(range.lower, y), std::max(range.upper, y))
+                                : QCPRange(y, y);
+                    any = true;
+                }
             }
             reward->axis(QCPAxis::atBottom)->setRange(0, lastX);
+            // QCustomPlot's rescale clipped a short line on a long key axis: set them here.
+            for (auto [axis, range] : {std::pair{reward->axis(QCPAxis::atLeft), left},
+                                       std::pair{reward->axis(QCPAxis::atRight), right}}) {
+                const double margin = 0.04 * std::max(range.size(), 1e-6);
+                axis->setRange(range.lower - margin, range.upper + margin);
+            }
             // Gap of the greedy policy (no refinement) to the reference solver.
             auto* gap = new QCPAxisRect(&plot);
             grid->addElement(1, column, gap);
