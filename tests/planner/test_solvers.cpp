@@ -487,3 +487,19 @@ TEST(OrderRefinement, LocalSearchRepairsAPoorOrderOnALargeFloor) {
                    static_cast<int>(1000.0 * refined.graphCost / heuristic));
     EXPECT_LE(refined.graphCost, 1.05 * heuristic);
 }
+
+// One or two required cells: the proxy stage and the polish have nothing or little to move.
+TEST(OrderRefinement, LocalSearchHandlesOneAndTwoCells) {
+    for (int required = 1; required <= 2; ++required)
+        for (unsigned seed = 500; seed < 510; ++seed) {
+            const Instance inst = randomInstance(seed, 6, 1.0, required);
+            const Solution given = solveGreedy(inst.graph, inst.query);
+            const Solution local =
+                refineCellOrder(inst.graph, inst.query, given, OrderRefinement::LocalSearch);
+            expectValid(inst.graph, inst.query, local);
+            EXPECT_LE(local.graphCost, given.graphCost + 1e-9) << "seed " << seed;
+            EXPECT_NEAR(local.graphCost, solveExact(inst.graph, inst.query).graphCost,
+                        1e-6 * local.graphCost + 1e-9)
+                << "seed " << seed;
+        }
+}
