@@ -45,6 +45,7 @@ private slots:
     void planChangeInvalidatesTheModel();
     void mainWindowTrainsAndPlansWithDqn();
     void trainsWithTheGraphStateSetting();
+    void evaluatesTheModelAndStopCancels();
 };
 
 void TrainingDockTest::trainsPausesResumesAndSaves() {
@@ -201,3 +202,53 @@ void TrainingDockTest::mainWindowTrainsAndPlansWithDqn() {
 
 QTEST_MAIN(TrainingDockTest)
 #include "test_training.moc"
+
+// Evaluate plans the trainer's test queries with the model on the worker thread and reports
+// the gaps; Stop cancels an evaluation in progress and leaves the model usable.
+void TrainingDockTest::evaluatesTheModelAndStopCancels() {
+    registerDqnSolver();
+    TrainingDock dock;
+    TrainingOptions options = TrainingOptions::graph(3);
+    options.agent.learningStarts = 50;
+    dock.setTrainingOptions(options);
+    dock.setPreparedPlan(preparedSample("room-obstacle"));
+    QPushButton* evaluateButton = nullptr;
+    for (QPushButton* b : dock.findChildren<QPushButton*>())
+        if (b->text() == QStringLiteral("Evaluate"))
+            evaluateButton = b;
+    QVERIFY(evaluateButton != nullptr);
+    QVERIFY(!evaluateButton->isEnabled()); // no model yet
+    dock.start();
+    QTRY_VERIFY_WITH_TIMEOUT(dock.episodes() >= 20, 30000);
+    dock.stop();
+    QTRY_COMPARE_WITH_TIMEOUT(dock.state(), TrainingDock::State::Finished, 10000);
+    QVERIFY(evaluateButton->isEnabled());
+
+    evaluateButton->click();
+    QVERIFY(dock.evaluating());
+    QVERIFY(!evaluateButton->isEnabled());
+    QTRY_VERIFY_WITH_TIMEOUT(!dock.evaluating(), 60000);
+    QVERIFY2(dock.lastEvaluation().has_value(), qPrintable(dock.lastError()));
+    const TrainingEvaluation& e = *dock.lastEvaluation();
+    QCOMPARE(e.failures, 0);
+    QVERIFY(e.queries > 0);
+    QCOMPARE(e.reference, QStringLiteral("exact"));
+    QVERIFY(e.plannedGap >= -1e-6);
+    QVERIFY(e.plannedGap <= e.policyGap + 1e-6); // the refinement never makes it worse
+
+    QTemporaryDir dir;
+    QVERIFY2(dock.saveModel(dir.filePath("after.fcdqn")), qPrintable(dock.lastError()));
+
+    // Stop right after Evaluate: the worker sees the cancel before its first query (the
+    // flag is armed before the request is queued), the dock says so, the model stays usable
+    // and the previous figures stay.
+    dock.evaluate();
+    QVERIFY(dock.evaluating());
+    dock.stop();
+    QTRY_VERIFY_WITH_TIMEOUT(!dock.evaluating(), 30000);
+    QVERIFY2(dock.lastError().contains(QStringLiteral("cancelled")), qPrintable(dock.lastError()));
+    QVERIFY(dock.lastEvaluation().has_value());
+    QCOMPARE(dock.state(), TrainingDock::State::Finished);
+    QVERIFY(evaluateButton->isEnabled());
+    QVERIFY2(dock.saveModel(dir.filePath("again.fcdqn")), qPrintable(dock.lastError()));
+}

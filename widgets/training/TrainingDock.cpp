@@ -36,6 +36,8 @@ TrainingDock::TrainingDock(QWidget* parent) : QDockWidget(tr("Training"), parent
     connect(&thread_, &QThread::finished, worker_, &QObject::deleteLater);
     connect(worker_, &TrainingWorker::progress, this, &TrainingDock::appendPoints);
     connect(worker_, &TrainingWorker::finished, this, &TrainingDock::onFinished);
+    connect(worker_, &TrainingWorker::evaluated, this, &TrainingDock::onEvaluated);
+    connect(worker_, &TrainingWorker::evaluationFailed, this, &TrainingDock::onEvaluationFailed);
     connect(worker_, &TrainingWorker::failed, this, [this](const QString& message) {
         lastError_ = message;
         status_->setText(message);
@@ -48,6 +50,7 @@ TrainingDock::TrainingDock(QWidget* parent) : QDockWidget(tr("Training"), parent
 
 TrainingDock::~TrainingDock() {
     worker_->requestStop();
+    worker_->cancelEvaluation();
     thread_.quit();
     thread_.wait();
 }
@@ -116,8 +119,12 @@ void TrainingDock::buildUi() {
     auto* files = new QHBoxLayout;
     saveButton_ = new QPushButton(tr("Save Model…"), body);
     loadButton_ = new QPushButton(tr("Load Model…"), body);
+    evaluateButton_ = new QPushButton(tr("Evaluate"), body);
+    evaluateButton_->setToolTip(tr("Plan the model's test queries with it and compare with the "
+                                   "exact or heuristic solver"));
     files->addWidget(saveButton_);
     files->addWidget(loadButton_);
+    files->addWidget(evaluateButton_);
     files->addStretch(1);
     layout->addLayout(files);
     setWidget(body);
@@ -132,6 +139,7 @@ void TrainingDock::buildUi() {
     connect(stopButton_, &QPushButton::clicked, this, &TrainingDock::stop);
     connect(saveButton_, &QPushButton::clicked, this, &TrainingDock::saveWithDialog);
     connect(loadButton_, &QPushButton::clicked, this, &TrainingDock::loadWithDialog);
+    connect(evaluateButton_, &QPushButton::clicked, this, &TrainingDock::evaluate);
 }
 
 void TrainingDock::setPreparedPlan(std::shared_ptr<const PreparedPlan> prepared) {
@@ -141,6 +149,9 @@ void TrainingDock::setPreparedPlan(std::shared_ptr<const PreparedPlan> prepared)
     QMetaObject::invokeMethod(worker_, [w = worker_, p = prepared_] { w->setPlan(p); });
     if (sameGraph)
         return;
+    lastEvaluation_.reset();
+    if (evaluating_)
+        worker_->cancelEvaluation(); // its figures would be for the old plan
     if (state_ == State::Running || state_ == State::Paused) {
         worker_->requestStop();
         status_->setText(tr("The plan changed: the model no longer fits it. Start to train for "
@@ -176,6 +187,7 @@ void TrainingDock::start() {
     lastSeconds_ = 0.0;
     modelPath_.clear();
     lastError_.clear();
+    lastEvaluation_.reset();
     const double seconds = budgetSeconds();
     setState(State::Running);
     QMetaObject::invokeMethod(
@@ -193,12 +205,17 @@ void TrainingDock::resumeTraining() {
     if (state_ != State::Paused && state_ != State::Finished)
         return;
     runStartSeconds_ = lastSeconds_;
+    lastEvaluation_.reset(); // the model is about to change
     const double seconds = budgetSeconds();
     setState(State::Running);
     QMetaObject::invokeMethod(worker_, [w = worker_, seconds] { w->resume(seconds); });
 }
 
 void TrainingDock::stop() {
+    if (evaluating_) { // Stop cancels an evaluation; the model stays as it is
+        worker_->cancelEvaluation();
+        return;
+    }
     if (state_ == State::Running)
         worker_->requestStop();
     if (state_ == State::Running || state_ == State::Paused)
@@ -314,6 +331,7 @@ bool TrainingDock::loadModel(const QString& path) {
     }
     clearPlot();
     modelPath_ = path;
+    lastEvaluation_.reset();
     setState(State::Finished);
     status_->setText(tr("Loaded %1 (%2 episodes of training)").arg(path).arg(episodes_));
     emit modelReady(path);
@@ -354,14 +372,16 @@ int TrainingDock::plottedPoints() const {
 
 void TrainingDock::setState(State state) {
     state_ = state;
-    const bool running = state == State::Running;
+    // An evaluation holds the worker: nothing else starts until it answers.
+    const bool running = state == State::Running || evaluating_;
     startButton_->setEnabled(!running && prepared_ != nullptr);
-    pauseButton_->setEnabled(running || state == State::Paused);
+    pauseButton_->setEnabled(!evaluating_ && (running || state == State::Paused));
     pauseButton_->setText(state == State::Paused ? tr("Resume") : tr("Pause"));
     stopButton_->setEnabled(running || state == State::Paused);
     setting_->setEnabled(!running);
-    saveButton_->setEnabled(state == State::Paused || state == State::Finished);
+    saveButton_->setEnabled(!evaluating_ && (state == State::Paused || state == State::Finished));
     loadButton_->setEnabled(!running);
+    evaluateButton_->setEnabled(!running && (state == State::Paused || state == State::Finished));
     emit stateChanged(state);
 }
 

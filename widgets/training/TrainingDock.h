@@ -11,6 +11,7 @@
 #include <QElapsedTimer>
 #include <QThread>
 #include <memory>
+#include <optional>
 
 class QComboBox;
 class QCustomPlot;
@@ -43,6 +44,8 @@ public:
     QCustomPlot* plot() const { return plot_; }
     int plottedPoints() const;
     QString lastError() const { return lastError_; }
+    bool evaluating() const { return evaluating_; }
+    const std::optional<TrainingEvaluation>& lastEvaluation() const { return lastEvaluation_; }
 
 public slots:
     void start();
@@ -52,6 +55,9 @@ public slots:
     // Saves synchronously from the caller's point of view (waits for the worker).
     bool saveModel(const QString& path);
     bool loadModel(const QString& path);
+    // Measures the model on the trainer's fixed test queries on the worker thread
+    // (TrainingEvaluation.cpp); the result shows in the status line.
+    void evaluate();
 
 signals:
     void stateChanged(fc::ui::TrainingDock::State state);
@@ -65,6 +71,8 @@ private:
     void onFinished(fc::ui::TrainingEnd end, double trainedSeconds, long episodes);
     void updateProgress(double seconds);
     void clearPlot();
+    void onEvaluated(const fc::ui::TrainingEvaluation& result);
+    void onEvaluationFailed(const QString& message);
     void saveWithDialog();
     void loadWithDialog();
     QString cacheModelPath() const;
@@ -81,6 +89,8 @@ private:
     long episodes_ = 0;
     double runStartSeconds_ = 0.0; // trained seconds when this run began
     double lastSeconds_ = 0.0;
+    bool evaluating_ = false;
+    std::optional<TrainingEvaluation> lastEvaluation_;
 
     QComboBox* setting_ = nullptr;
     QDoubleSpinBox* budget_ = nullptr;
@@ -89,6 +99,7 @@ private:
     QPushButton* stopButton_ = nullptr;
     QPushButton* saveButton_ = nullptr;
     QPushButton* loadButton_ = nullptr;
+    QPushButton* evaluateButton_ = nullptr;
     QProgressBar* progress_ = nullptr;
     QLabel* status_ = nullptr;
     QCustomPlot* plot_ = nullptr;

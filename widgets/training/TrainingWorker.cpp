@@ -8,6 +8,7 @@ namespace fc::ui {
 TrainingWorker::TrainingWorker(QObject* parent) : QObject(parent) {
     qRegisterMetaType<QVector<fc::ui::TrainingPoint>>();
     qRegisterMetaType<fc::ui::TrainingEnd>();
+    qRegisterMetaType<fc::ui::TrainingEvaluation>();
 }
 
 TrainingWorker::~TrainingWorker() = default;
@@ -100,6 +101,28 @@ void TrainingWorker::save(QString path) {
         emit saved(path, {});
     } catch (const std::exception& e) {
         emit saved(path, QString::fromStdString(e.what()));
+    }
+}
+
+void TrainingWorker::evaluate() {
+    if (!trainer_) {
+        emit evaluationFailed(tr("there is no trained model yet"));
+        return;
+    }
+    SolveControl control;
+    control.cancelled = [this] { return evaluationCancelled_.load(); };
+    try {
+        const EvaluationReport report = trainer_->evaluate(control);
+        TrainingEvaluation result;
+        result.queries = report.queries;
+        result.failures = report.failures;
+        result.policyGap = 100.0 * report.meanGap;
+        result.plannedGap = 100.0 * report.meanRefinedGap;
+        result.milliseconds = report.meanMilliseconds;
+        result.reference = QString::fromStdString(report.reference);
+        emit evaluated(result);
+    } catch (const std::exception& e) {
+        emit evaluationFailed(evaluationCancelled_ ? QString() : QString::fromStdString(e.what()));
     }
 }
 

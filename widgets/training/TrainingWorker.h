@@ -29,6 +29,16 @@ struct TrainingPoint {
 
 enum class TrainingEnd { BudgetReached, Interrupted, Failed };
 
+// The model on the trainer's fixed test queries (DqnTrainer::evaluate), in percent.
+struct TrainingEvaluation {
+    int queries = 0;
+    int failures = 0;
+    double policyGap = 0.0;  // the learnt rollout alone, above the reference solver
+    double plannedGap = 0.0; // what solver dqn returns (after the model's refinement)
+    double milliseconds = 0.0;
+    QString reference; // "exact", "heuristic" or "exact/heuristic"
+};
+
 class TrainingWorker : public QObject {
     Q_OBJECT
 public:
@@ -37,6 +47,10 @@ public:
 
     // Thread-safe: the running train() returns after the current episode.
     void requestStop() { stopRequested_ = true; }
+    // Thread-safe, from the GUI thread: arm before queuing evaluate(), then cancel it. A
+    // separate flag, so that a cancel sent while a run is still ending is not lost.
+    void armEvaluation() { evaluationCancelled_ = false; }
+    void cancelEvaluation() { evaluationCancelled_ = true; }
 
 public slots:
     // A new model for the plan's corner graph (replaces any previous one).
@@ -45,6 +59,8 @@ public slots:
     // Continues the current model, or the one in `modelPath` when given.
     void resume(double seconds, QString modelPath = {});
     void save(QString path);
+    // Measures the current model; cancelEvaluation() cancels it.
+    void evaluate();
     void setPlan(std::shared_ptr<const fc::PreparedPlan> prepared);
 
 signals:
@@ -53,6 +69,8 @@ signals:
     void failed(QString message);
     void saved(QString path, QString error); // error empty on success
     void modelLoaded(QString path, long episodes);
+    void evaluated(fc::ui::TrainingEvaluation result);
+    void evaluationFailed(QString message); // empty when cancelled
 
 private:
     void run(double seconds);
@@ -60,9 +78,11 @@ private:
     std::shared_ptr<const fc::PreparedPlan> prepared_;
     std::unique_ptr<fc::DqnTrainer> trainer_;
     std::atomic<bool> stopRequested_{false};
+    std::atomic<bool> evaluationCancelled_{false};
 };
 
 } // namespace fc::ui
 
 Q_DECLARE_METATYPE(fc::ui::TrainingPoint)
 Q_DECLARE_METATYPE(fc::ui::TrainingEnd)
+Q_DECLARE_METATYPE(fc::ui::TrainingEvaluation)

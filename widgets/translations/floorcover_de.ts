@@ -1367,6 +1367,37 @@ Abdeckungspfadplanung für Reinigungs- und Desinfektionsroboter.</translation>
         <source>Improved: masking, graph-cost reward, cost channels and a refined walk. Graph state: the same with per-corner features and a per-corner network (faster on large floors). Paper: the published setting.</source>
         <translation>Verbessert: Maskierung, Belohnung aus Graphkosten, Kostenkanäle und ein verfeinerter Weg. Graphzustand: dasselbe mit Merkmalen je Ecke und einem Netz je Ecke (schneller auf großen Grundrissen). Artikel: die veröffentlichte Einstellung.</translation>
     </message>
+    <message>
+        <source>Evaluate</source>
+        <translation>Bewerten</translation>
+    </message>
+    <message>
+        <source>Plan the model&apos;s test queries with it and compare with the exact or heuristic solver</source>
+        <translation>Die Testanfragen des Modells damit planen und mit dem exakten oder heuristischen Löser vergleichen</translation>
+    </message>
+    <message>
+        <source>Evaluating the model on its test queries…</source>
+        <translation>Das Modell wird an seinen Testanfragen bewertet…</translation>
+    </message>
+    <message>
+        <source>On %1 test queries: the policy alone is %2% above the %3 solver; solver dqn is %4% above it, %5 ms per query.</source>
+        <translation>Bei %1 Testanfragen: Die Strategie allein liegt %2 % über dem Löser %3; der Löser dqn %4 % darüber, %5 ms pro Anfrage.</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n queries did not finish.</source>
+        <translation>
+            <numerusform>%n Anfrage wurde nicht beendet.</numerusform>
+            <numerusform>%n Anfragen wurden nicht beendet.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Evaluation cancelled.</source>
+        <translation>Bewertung abgebrochen.</translation>
+    </message>
+    <message>
+        <source>Evaluation failed: %1</source>
+        <translation>Bewertung fehlgeschlagen: %1</translation>
+    </message>
 </context>
 <context>
     <name>fc::ui::TrainingWorker</name>

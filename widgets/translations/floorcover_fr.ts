@@ -1367,6 +1367,37 @@ Planification de trajets de couverture pour robots de nettoyage et de désinfect
         <source>Improved: masking, graph-cost reward, cost channels and a refined walk. Graph state: the same with per-corner features and a per-corner network (faster on large floors). Paper: the published setting.</source>
         <translation>Amélioré : masquage, récompense par coût de graphe, canaux de coût et parcours affiné. État de graphe : la même chose avec des caractéristiques par coin et un réseau par coin (plus rapide sur les grands plans). Article : le réglage publié.</translation>
     </message>
+    <message>
+        <source>Evaluate</source>
+        <translation>Évaluer</translation>
+    </message>
+    <message>
+        <source>Plan the model&apos;s test queries with it and compare with the exact or heuristic solver</source>
+        <translation>Planifier les requêtes de test du modèle avec lui et comparer au solveur exact ou heuristique</translation>
+    </message>
+    <message>
+        <source>Evaluating the model on its test queries…</source>
+        <translation>Évaluation du modèle sur ses requêtes de test…</translation>
+    </message>
+    <message>
+        <source>On %1 test queries: the policy alone is %2% above the %3 solver; solver dqn is %4% above it, %5 ms per query.</source>
+        <translation>Sur %1 requêtes de test : la politique seule est à %2 % au-dessus du solveur %3 ; le solveur dqn à %4 %, %5 ms par requête.</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n queries did not finish.</source>
+        <translation>
+            <numerusform>%n requête n’a pas abouti.</numerusform>
+            <numerusform>%n requêtes n’ont pas abouti.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Evaluation cancelled.</source>
+        <translation>Évaluation annulée.</translation>
+    </message>
+    <message>
+        <source>Evaluation failed: %1</source>
+        <translation>Échec de l’évaluation : %1</translation>
+    </message>
 </context>
 <context>
     <name>fc::ui::TrainingWorker</name>

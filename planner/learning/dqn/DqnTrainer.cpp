@@ -222,19 +222,27 @@ TrainingStop DqnTrainer::train(long episodes, double seconds,
     }
 }
 
-EvaluationReport DqnTrainer::evaluate() {
+EvaluationReport DqnTrainer::evaluate(const SolveControl& control) {
+    auto throwIfCancelled = [&control] {
+        if (control.cancelled && control.cancelled())
+            throw SolverError("evaluation cancelled");
+    };
     if (evaluationQueries_.empty()) {
         const QuerySet kind = roomCount(*graph_) > 1 ? QuerySet::RoomSubsets : QuerySet::AllCells;
-        evaluationQueries_ = randomQueries(*graph_, std::max(1, options_.evaluationQueries),
-                                           options_.agent.seed ^ 0x5eedULL, kind);
+        std::vector<Query> queries = randomQueries(*graph_, std::max(1, options_.evaluationQueries),
+                                                   options_.agent.seed ^ 0x5eedULL, kind);
+        std::vector<double> costs;
         int exactCount = 0;
-        for (const Query& q : evaluationQueries_) {
+        for (const Query& q : queries) {
+            throwIfCancelled();
             const int cells = static_cast<int>(std::count(q.required.begin(), q.required.end(), 1));
             const bool exact = cells <= kExactReferenceCells;
             exactCount += exact ? 1 : 0;
-            referenceCosts_.push_back(exact ? solveExact(*graph_, q).graphCost
-                                            : solveHeuristic(*graph_, q).graphCost);
+            costs.push_back(exact ? solveExact(*graph_, q, {}, control).graphCost
+                                  : solveHeuristic(*graph_, q, control).graphCost);
         }
+        evaluationQueries_ = std::move(queries); // only complete references are kept
+        referenceCosts_ = std::move(costs);
         referenceName_ = exactCount == static_cast<int>(evaluationQueries_.size()) ? "exact"
                          : exactCount == 0                                         ? "heuristic"
                                            : "exact/heuristic";
@@ -244,12 +252,15 @@ EvaluationReport DqnTrainer::evaluate() {
     report.queries = static_cast<int>(evaluationQueries_.size());
     int finished = 0;
     for (std::size_t i = 0; i < evaluationQueries_.size(); ++i) {
+        throwIfCancelled();
         const Clock::time_point start = Clock::now();
         try {
             const Solution raw =
-                solveWithPolicy(*agent_, *graph_, evaluationQueries_[i], options_.environment);
-            const Solution refined = refineCellOrder(*graph_, evaluationQueries_[i], raw,
-                                                     options_.refinement, kPolicyRefinementBudget);
+                solveWithPolicy(*agent_, *graph_, evaluationQueries_[i], options_.environment,
+                                OrderRefinement::None, control);
+            const Solution refined =
+                refineCellOrder(*graph_, evaluationQueries_[i], raw, options_.refinement,
+                                kPolicyRefinementBudget, control);
             report.meanMilliseconds += 1000.0 * secondsSince(start);
             const double reference = std::max(referenceCosts_[i], 1e-9);
             const double gap = raw.graphCost / reference - 1.0;
@@ -258,6 +269,7 @@ EvaluationReport DqnTrainer::evaluate() {
             report.meanRefinedGap += refined.graphCost / reference - 1.0;
             ++finished;
         } catch (const SolverError&) {
+            throwIfCancelled(); // a cancelled rollout is not a failure of the policy
             ++report.failures;
         }
     }

@@ -86,7 +86,9 @@ public:
                        const std::function<bool()>& cancelled = {});
 
     // The fixed query set (all cells, or random room subsets on floors with several rooms).
-    EvaluationReport evaluate();
+    // Cancellable (control.cancelled): throws SolverError, and a cancelled first evaluation
+    // keeps no partial reference costs.
+    EvaluationReport evaluate(const SolveControl& control = {});
 
     DqnModelInfo modelInfo() const;
     void save(const std::string& path) const;
