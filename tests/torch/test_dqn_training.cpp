@@ -108,6 +108,27 @@ TEST(DqnTrainer, CancelsBetweenEpisodesAndResumesFromAModel) {
     EXPECT_GT(resumed.agent().stepCount(), trainer.agent().stepCount());
 }
 
+// A cancelled evaluation throws and keeps no partial reference costs: the next one measures
+// exactly what an uncancelled one does.
+TEST(DqnTrainer, EvaluationIsCancellableAndKeepsNoPartialReferences) {
+    const PreparedPlan plan = prepared("room-obstacle");
+    DqnTrainer trainer(plan.graph, smallOptions(TrainingOptions::graph(6)));
+    trainer.train(5, 0.0);
+    int checks = 0;
+    SolveControl control;
+    control.cancelled = [&checks] { return ++checks > 3; }; // during the reference solutions
+    EXPECT_THROW(trainer.evaluate(control), SolverError);
+    const EvaluationReport after = trainer.evaluate();
+    DqnTrainer same(plan.graph, smallOptions(TrainingOptions::graph(6)));
+    same.train(5, 0.0);
+    const EvaluationReport fresh = same.evaluate();
+    EXPECT_EQ(after.queries, fresh.queries);
+    EXPECT_EQ(after.failures, 0);
+    EXPECT_DOUBLE_EQ(after.meanGap, fresh.meanGap);
+    EXPECT_DOUBLE_EQ(after.meanRefinedGap, fresh.meanRefinedGap);
+    EXPECT_LE(after.meanRefinedGap, after.meanGap + 1e-12);
+}
+
 TEST(DqnModelFile, RoundTripKeepsPolicyAndMetadata) {
     const PreparedPlan plan = prepared("room-obstacle");
     TrainingOptions options = smallOptions(TrainingOptions::improved(7));
