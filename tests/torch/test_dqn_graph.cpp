@@ -2,7 +2,7 @@
 // hand-built graph, the network's locality, the masked Double-DQN target through a real
 // gradient step, the model file's state kind, masked inference and reproducibility.
 #include "../planner/TestGraphs.h"
-#include "SmallNetwork.h"
+#include "DqnTestSupport.h"
 #include "formats/PlanIO.h"
 #include "learning/CoverageEnvironment.h"
 #include "learning/dqn/DqnModelFile.h"
@@ -26,23 +26,14 @@ float feature(const std::vector<float>& obs, int node, int index) {
     return obs[static_cast<std::size_t>(node * F + index)];
 }
 
+using fc::test::serialized;
+
 PreparedPlan prepared(const std::string& name) {
-    const Project project = loadProjectFile(std::string(FC_PLANS_DIR) + "/" + name + ".geojson");
-    return preparePlan(project.plan, RobotProfile{}, 90.0);
+    return fc::test::preparedSample(name);
 }
 
 TrainingOptions smallGraphOptions(std::uint64_t seed) {
-    TrainingOptions options = TrainingOptions::graph(seed);
-    fc::test::shrinkForTests(options.agent);
-    options.agent.replayCapacity = 2000;
-    options.agent.epsilonDecaySteps = 300;
-    return options;
-}
-
-std::string serialized(const DqnTrainer& trainer) {
-    std::ostringstream out;
-    writeDqnModel(out, trainer.modelInfo(), trainer.agent());
-    return out.str();
+    return fc::test::smallOptions(TrainingOptions::graph(seed));
 }
 
 std::string replaced(std::string text, const std::string& from, const std::string& to) {

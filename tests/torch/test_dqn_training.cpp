@@ -1,6 +1,6 @@
 // The Double-DQN planner end to end below the CLI: training loop, model file, refusal of a
 // mismatched or broken model, masked inference, the "dqn" solver in the pipeline.
-#include "SmallNetwork.h"
+#include "DqnTestSupport.h"
 #include "formats/PlanIO.h"
 #include "learning/dqn/DqnModelFile.h"
 #include "learning/dqn/DqnPolicy.h"
@@ -16,26 +16,12 @@ using namespace fc;
 
 namespace {
 
-Plan samplePlan(const std::string& name) {
-    return loadProjectFile(std::string(FC_PLANS_DIR) + "/" + name + ".geojson").plan;
-}
+using fc::test::samplePlan;
+using fc::test::serialized;
+using fc::test::smallOptions;
 
 PreparedPlan prepared(const std::string& name) {
-    return preparePlan(samplePlan(name), RobotProfile{}, 90.0);
-}
-
-// A small network and schedule, so that a test trains in a second or two.
-TrainingOptions smallOptions(TrainingOptions options) {
-    fc::test::shrinkForTests(options.agent);
-    options.agent.replayCapacity = 2000;
-    options.agent.epsilonDecaySteps = 300;
-    return options;
-}
-
-std::string serialized(const DqnTrainer& trainer) {
-    std::ostringstream out;
-    writeDqnModel(out, trainer.modelInfo(), trainer.agent());
-    return out.str();
+    return fc::test::preparedSample(name);
 }
 
 // Q values on a few fixed states (the archives' bytes differ between runs: torch mangles
