@@ -176,7 +176,9 @@ FinalFigures measure(const DqnAgent& agent, const CornerGraph& graph,
             const Solution greedy = solveGreedy(graph, q);
             f.greedyGap += greedy.graphCost / reference - 1.0;
             const double greedyRefined =
-                refineCellOrder(graph, q, greedy, refinement).graphCost / reference - 1.0;
+                refineCellOrder(graph, q, greedy, refinement, kPolicyRefinementBudget).graphCost /
+                    reference -
+                1.0;
             f.refinedGreedyGap += greedyRefined;
             if (std::getenv("FC_DQN_REPORT_QUERIES"))
                 std::fprintf(stderr,
