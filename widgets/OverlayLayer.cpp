@@ -267,6 +267,13 @@ void OverlayLayer::addPath(const PlanResult& result) {
     const OverlayStyle gapLook = overlayStyle(OverlayKind::CoverageGaps);
     addPathItem(groups_[static_cast<int>(OverlayKind::CoverageGaps)], gaps, gapLook.pen,
                 gapLook.brush);
+    // Floor no robot position can sweep (too narrow for the disc, corners beyond the head):
+    // dots in the unreachable colour beside the decomposition's crosses.
+    QPainterPath unreachable;
+    for (Vec2 p : result.metrics.unreachable)
+        unreachable.addEllipse(toQt(p), dot, dot);
+    addPathItem(groups_[static_cast<int>(OverlayKind::Unreachable)], unreachable, Qt::NoPen,
+                overlayStyle(OverlayKind::Unreachable).pen.color());
 }
 
 } // namespace fc::ui

@@ -110,8 +110,10 @@ void PlanningController::startPrepare() {
             emit busyChanged(false);
         return;
     }
-    // "auto" picks its angle while planning; until then the overlays use the default.
-    const double angle = project.sweep.automatic ? 90.0 : project.sweep.angleDeg;
+    // "auto" picks its angle while planning; until then the overlays use its first
+    // candidate (stripes across the dominant walls).
+    const double angle =
+        project.sweep.automatic ? candidateAngles(project.plan).front() : project.sweep.angleDeg;
     runInBackground<PreparedPlan>(
         [project, angle, latest = latestPrepare_, generation]() {
             if (*latest != generation) // edited again while this waited for a thread

@@ -118,7 +118,8 @@ QWidget* PlanningDock::createMetricsGroup() {
     auto* form = new QFormLayout(group);
     const std::pair<const char*, QString> rows[] = {
         {"length", tr("Length")},      {"extra", tr("Extra distance")},  {"turns", tr("Turns")},
-        {"coverage", tr("Coverage")},  {"time", tr("Estimated time")},   {"cells", tr("Cells")},
+        {"coverage", tr("Coverage")},  {"uncovered", tr("Uncovered")},
+        {"unreachable", tr("Unreachable")}, {"time", tr("Estimated time")},   {"cells", tr("Cells")},
         {"angle", tr("Stripe angle")}, {"seconds", tr("Planning time")},
     };
     for (const auto& [key, label] : rows) {
@@ -266,8 +267,10 @@ QString PlanningDock::metricText(const QString& key) const {
 
 void PlanningDock::refreshMetrics() {
     const auto result = controller_ ? controller_->result() : nullptr;
-    for (QLabel* label : std::as_const(metrics_))
+    for (QLabel* label : std::as_const(metrics_)) {
         label->setText(QStringLiteral("–"));
+        label->setStyleSheet(QString());
+    }
     if (!result)
         return;
     const Metrics& m = result->metrics;
@@ -279,6 +282,16 @@ void PlanningDock::refreshMetrics() {
     metrics_[QStringLiteral("extra")]->setText(tr("%1 m").arg(number(m.extra, 1)));
     metrics_[QStringLiteral("turns")]->setText(locale.toString(m.turns));
     metrics_[QStringLiteral("coverage")]->setText(tr("%1 %").arg(number(100.0 * m.coverage, 2)));
+    // Losses above the reported threshold in red: they are what a supervisor must not miss.
+    const auto showLoss = [&](const char* key, double area) {
+        QLabel* label = metrics_[QLatin1String(key)];
+        const double share = m.requiredArea > 0.0 ? area / m.requiredArea : 0.0;
+        label->setText(tr("%1 m² (%2 %)").arg(number(area, 2), number(100.0 * share, 1)));
+        label->setStyleSheet(share > kReportedLossFraction ? QStringLiteral("color: #d03030")
+                                                           : QString());
+    };
+    showLoss("uncovered", m.uncoveredArea);
+    showLoss("unreachable", m.unreachableArea);
     const int seconds = static_cast<int>(std::lround(m.time));
     metrics_[QStringLiteral("time")]->setText(
         tr("%1 min %2 s").arg(seconds / 60).arg(seconds % 60, 2, 10, QLatin1Char('0')));
@@ -306,8 +319,13 @@ void PlanningDock::refreshStatus() {
         else
             status_->clear();
     }
-    if (const auto result = controller_->result(); result && !result->warnings.empty())
-        status_->setText(fromStd(result->warnings.front()));
+    if (const auto result = controller_->result(); result && !result->warnings.empty()) {
+        QStringList lines;
+        for (const std::string& warning : result->warnings)
+            lines << fromStd(warning);
+        status_->setStyleSheet(QStringLiteral("color: #d03030"));
+        status_->setText(lines.join(QLatin1Char('\n')));
+    }
 }
 
 } // namespace fc::ui

@@ -20,9 +20,15 @@ const char* kUsage = R"(usage: floorcover-cli COMMAND PLAN [options]
 commands:
   plan PLAN     plan a coverage path; prints one JSON line of metrics
                 [--width W] [--robot-diameter L] [--cleaning-diameter D] [--speed V]
-                [--turn-time S] [--angle DEG|auto] [--rooms A,B] [--start X,Y] [--end X,Y]
+                [--turn-time S] [--angle per-room|auto|DEG] [--rooms A,B] [--start X,Y] [--end X,Y]
                 [--solver exact|heuristic|greedy|dqn|reeb-cpp|adjacency-ga] [--model FILE]
-                [--seed N] [--out FILE]
+                [--seed N] [--out FILE] [--strict]
+                (--robot-diameter L, default 0.6: the robot is a disc; its centre keeps L/2
+                from walls, so passages at least L wide are driven and swept)
+                (--angle per-room, the default: each room's stripes follow its own walls;
+                --angle auto: the shortest estimated time among the angles that cover
+                everything reachable; losses above 0.5% of the floor are warned on stderr,
+                and with --strict the exit code is 3)
                 (dqn needs --model, a file written by train; it plans at its sweep angle)
                 (--out format by extension: .geojson .csv .json .yaml)
   graph PLAN    write the corner graph: [--width W] [--angle DEG] --out FILE.json
@@ -57,7 +63,8 @@ commands:
                 [--manufacturer M] [--serial-number S] [--order-id O] [--map-id ID]
 
 PLAN is a GeoJSON floor plan (.geojson) or a FloorCover project (.fcproj).
-Exit codes: 0 success, 2 bad input (one line on stderr), 1 internal error.
+Exit codes: 0 success, 2 bad input (one line on stderr), 3 coverage loss with --strict,
+1 internal error.
 )";
 
 } // namespace
@@ -75,6 +82,7 @@ const std::vector<std::string> kPlanOptions{"--width",
                                             "--model",
                                             "--seed",
                                             "--out",
+                                            "--strict",
                                             "--no-transition-cells"};
 
 // A request from the project file's settings, overridden by command-line options.
@@ -99,8 +107,12 @@ PlanRequest requestFrom(const Project& project, const Arguments& args) {
     if (auto a = args.text("--angle")) {
         if (*a == "auto") {
             r.sweep.automatic = true;
+        } else if (*a == "per-room") {
+            r.sweep.automatic = false;
+            r.sweep.perRoom = true;
         } else {
             r.sweep.automatic = false;
+            r.sweep.perRoom = false;
             r.sweep.angleDeg = *args.number("--angle");
         }
     }
@@ -136,7 +148,8 @@ PlanResult planFromArguments(const std::string& path, const Project& project, co
         std::cerr << "floorcover-cli: warning: " << path << ": " << w << "\n";
     if (request.sweep.automatic)
         std::cerr << "floorcover-cli: note: " << path << ": sweep angle " << result.stripeAngleDeg
-                  << " degrees chosen (shortest path)\n";
+                  << " degrees chosen (shortest estimated time among the plans that cover "
+                     "everything reachable)\n";
     return result;
 }
 
@@ -158,6 +171,8 @@ const std::string& planPath(const Arguments& args) {
 
 namespace {
 
+constexpr int kExitCoverageLoss = 3;
+
 int commandPlan(const Arguments& args) {
     args.allowOnly(kPlanOptions);
     const std::string& path = planPath(args);
@@ -168,6 +183,12 @@ int commandPlan(const Arguments& args) {
         writeFileAtomically(
             *out, pathToFormat(*out, result.path, exportInfoFor(project, request, result)));
     std::cout << metricsJsonLine(result.solution.solver, result.metrics) << std::endl;
+    // --strict: any reported loss of coverage fails the run (the path is still written).
+    if (args.has("--strict") && !coverageLossWarnings(result.metrics).empty()) {
+        std::cerr << "floorcover-cli: error: " << path
+                  << ": coverage loss above 0.5% of the selected floor (--strict)\n";
+        return kExitCoverageLoss;
+    }
     return 0;
 }
 

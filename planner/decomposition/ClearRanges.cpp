@@ -68,7 +68,7 @@ std::vector<Polyline> pinchLines(const Cell& cell, double x0, double x1, int lay
 } // namespace
 
 double narrowStripeX(const Cell& cell, const ClearanceField& field) {
-    const double r = field.radius();
+    const double r = field.inset();
     const double mid = 0.5 * (cell.x0 + cell.x1);
     const double a = std::min(cell.x1 - r, mid), b = std::max(cell.x0 + r, mid);
     double bestX = mid, best = -1;
@@ -85,7 +85,7 @@ double narrowStripeX(const Cell& cell, const ClearanceField& field) {
 }
 
 std::vector<ClearRange> clearRanges(const Cell& cell, const ClearanceField& field) {
-    const double r = field.radius();
+    const double r = field.inset();
     const double step = 0.25 * r;
     // Stripes lie at least W/2 inside the cell's ends; closer to an end, the slice sees
     // the geometry across it (an obstacle starting there splits the clear span), which

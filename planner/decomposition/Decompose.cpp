@@ -173,6 +173,10 @@ Decomposition decompose(const Plan& plan, const DecompositionOptions& options) {
     const double w = options.coverageWidth;
     Decomposition out;
     out.coverageWidth = w;
+    const double robot = options.robotDiameter == 0.0 ? w : options.robotDiameter;
+    if (!(robot > 0.0) || robot > w * (1 + 1e-12))
+        throw InputError("the robot diameter must be positive and at most the coverage width");
+    out.clearanceRadius = 0.5 * robot;
     const BoundingBox bounds = plan.bounds();
     out.frame = Frame({bounds.minX, bounds.minY}, options.stripeAngleDeg);
     const double extent = std::max({1.0, bounds.width(), bounds.height()});
@@ -251,7 +255,7 @@ Decomposition decompose(const Plan& plan, const DecompositionOptions& options) {
 
     // Split where the clear region changes (narrow passages, spans stacked in y), cut
     // transition strips and create the final cells.
-    const ClearanceField field(out.freeSpace, 0.5 * w);
+    const ClearanceField field = clearanceField(out);
     std::vector<std::vector<Piece>> pieces(raw.size());
     // Where a cell meets another room along the sweep (a doorway), the slice connectivity
     // of the whole free space changes at the doorway's ends: split there, as a
@@ -376,6 +380,10 @@ Decomposition decompose(const Plan& plan, const DecompositionOptions& options) {
 
     detail::planStripeSpans(out);
     return out;
+}
+
+ClearanceField clearanceField(const Decomposition& dec) {
+    return ClearanceField(dec.freeSpace, dec.clearanceRadius, 0.5 * dec.coverageWidth);
 }
 
 } // namespace fc

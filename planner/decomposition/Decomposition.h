@@ -3,6 +3,7 @@
 // slice sweeps along +x, so a cell is an x-interval with a floor and a ceiling.
 #pragma once
 
+#include "geometry/Clearance.h"
 #include "geometry/Geometry.h"
 #include "model/Plan.h"
 
@@ -23,8 +24,10 @@ struct Cell {
     Polyline floor, ceiling;
     // x of each stripe (evenly spaced, first and last W/2 inside [x0, x1]).
     std::vector<double> stripes;
-    // Where the robot centre can run on each stripe (clear of walls by W/2 and inside the
-    // cell); an empty interval marks a stripe too narrow for the robot.
+    // Where the robot centre runs on each stripe: inside the cell, L/2 clear of walls and
+    // W/2 from the cell's floor and ceiling where the room allows (a single point down the
+    // middle of a gap narrower than W); an empty interval marks a stripe the robot cannot
+    // reach.
     std::vector<Interval> stripeSpans;
 
     double width() const { return x1 - x0; }
@@ -52,7 +55,7 @@ struct CriticalSlice {
     double y0 = 0.0, y1 = 0.0;
 };
 
-// A part of the free space the robot cannot sweep (narrower than W, or cut off).
+// A part of the free space the robot cannot sweep (narrower than the robot, or cut off).
 struct UnreachableArea {
     double area = 0.0;  // m^2
     Vec2 location;      // a representative point, world frame
@@ -62,6 +65,7 @@ struct UnreachableArea {
 struct Decomposition {
     Frame frame;
     double coverageWidth = 1.0;
+    double clearanceRadius = 0.5; // L/2: how far the robot centre keeps from walls
     std::vector<std::string> roomNames; // "Floor" when the plan has no rooms
     std::vector<Cell> cells;
     std::vector<Adjacency> adjacencies;
@@ -75,9 +79,14 @@ struct Decomposition {
 
 struct DecompositionOptions {
     double coverageWidth = 1.0;
+    double robotDiameter = 0.0; // L <= W (0: L = W); the robot centre keeps L/2 from walls
     double stripeAngleDeg = 90.0;
     bool transitionCells = true; // the paper's modification; off = classic BCD
 };
+
+// Where the robot centre may go in this decomposition (sweep frame): L/2 from walls,
+// stripes inset W/2 where the walls allow.
+ClearanceField clearanceField(const Decomposition& dec);
 
 // Decomposes a validated plan. Throws InputError for geometry it cannot handle.
 Decomposition decompose(const Plan& plan, const DecompositionOptions& options);

@@ -17,6 +17,17 @@ Interval spanAt(const Cell& cell, double x, const ClearanceField& field, double 
     for (const Interval& piece : field.clearPieces(x, lo, std::max(lo, hi), margin))
         if (best.empty() || piece.length() > best.length())
             best = piece;
+    // The disc only needs L/2; the stripe ends keep W/2 from the cell's floor and ceiling
+    // where the span allows, and a gap narrower than that is run down its middle.
+    const double shrink = field.inset() - field.radius();
+    if (!best.empty() && shrink > 0.0) {
+        if (best.length() > 2.0 * shrink) {
+            best.lo += shrink;
+            best.hi -= shrink;
+        } else {
+            best.lo = best.hi = 0.5 * (best.lo + best.hi);
+        }
+    }
     return best;
 }
 
@@ -26,7 +37,7 @@ Polyline traceBorder(const Cell& cell, double xa, double xb, bool top,
     if (reversed)
         std::swap(xa, xb);
     const double r = field.radius();
-    const double w = 2 * r;
+    const double w = 2 * field.inset();
     // Interior points keep a small extra margin so that chords between them (which cut a
     // convex offset arc) still keep the full clearance; the ends are the exact corners.
     const double margin = 0.5 * field.acceptance();
@@ -164,7 +175,7 @@ std::vector<double> evenStripes(double a, double b, double w) {
 void fitStripes(Cell& cell, const ClearanceField& field) {
     if (cell.stripes.empty())
         return;
-    const double w = 2 * field.radius();
+    const double w = 2 * field.inset();
     if (cell.stripes.size() == 1 && cell.width() < w) {
         cell.stripes[0] = narrowStripeX(cell, field);
         return;
@@ -198,7 +209,7 @@ void fitStripes(Cell& cell, const ClearanceField& field) {
 } // namespace
 
 void planStripeSpans(Decomposition& dec) {
-    const ClearanceField field(dec.freeSpace, 0.5 * dec.coverageWidth);
+    const ClearanceField field = clearanceField(dec);
     for (Cell& cell : dec.cells) {
         fitStripes(cell, field);
         cell.stripeSpans.clear();
@@ -210,7 +221,7 @@ void planStripeSpans(Decomposition& dec) {
             for (const Vec2& p : outline)
                 centre = centre + p * (1.0 / outline.size());
             dec.unreachable.push_back(
-                {cell.area(), dec.frame.toWorld(centre), "narrower than the coverage width W"});
+                {cell.area(), dec.frame.toWorld(centre), "too narrow for the robot"});
         }
     }
 }

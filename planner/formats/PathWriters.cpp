@@ -30,6 +30,8 @@ ordered_json metricsObject(const std::string& solver, const Metrics& m) {
     object["extra"] = rounded(m.extra, 4);
     object["turns"] = m.turns;
     object["coverage"] = rounded(m.coverage, 6);
+    object["uncovered_area"] = rounded(m.uncoveredArea, 4);
+    object["unreachable_area"] = rounded(m.unreachableArea, 4);
     object["time"] = rounded(m.time, 4);
     object["cells"] = m.cells;
     object["graph_cost"] = rounded(m.graphCost, 4);

@@ -144,6 +144,24 @@ Project readProject(const std::string& text) {
             throw InputError("sweep.automatic must be true or false");
         project.sweep.automatic = automatic->get<bool>();
     }
+    // Files written before per-room sweeps fixed their angle: without the key they keep it.
+    project.sweep.perRoom = false;
+    if (const json* perRoom = memberOf(sweep, "per_room")) {
+        if (!perRoom->is_boolean())
+            throw InputError("sweep.per_room must be true or false");
+        project.sweep.perRoom = perRoom->get<bool>();
+    }
+    if (const json* angles = memberOf(sweep, "room_angles")) {
+        if (!angles->is_object())
+            throw InputError("sweep.room_angles must map room names to angles in degrees");
+        for (const auto& [name, value] : angles->items()) {
+            if (!value.is_number() || !std::isfinite(value.get<double>()))
+                throw InputError("sweep.room_angles[\"" + name +
+                                 "\"] must be a finite number of degrees (got " +
+                                 formats::describeJsonValue(value) + ")");
+            project.sweep.roomAngles[name] = value.get<double>();
+        }
+    }
 
     if (const json* solver = memberOf(root, "solver")) {
         if (!solver->is_string())
@@ -190,7 +208,13 @@ std::string writeProject(const Project& project) {
                      {"coverage_width", robot.coverageWidth},
                      {"speed", robot.speed},
                      {"turn_time", robot.turnTime}};
-    root["sweep"] = {{"angle_deg", project.sweep.angleDeg}, {"automatic", project.sweep.automatic}};
+    ordered_json roomAngles = ordered_json::object();
+    for (const auto& [name, angle] : project.sweep.roomAngles)
+        roomAngles[name] = angle;
+    root["sweep"] = {{"angle_deg", project.sweep.angleDeg},
+                     {"automatic", project.sweep.automatic},
+                     {"per_room", project.sweep.perRoom},
+                     {"room_angles", std::move(roomAngles)}};
     root["solver"] = project.solver;
     root["selectedRooms"] = project.selectedRooms;
     root["start"] = pointOrNull(project.hasStart, project.start);

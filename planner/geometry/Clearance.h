@@ -1,5 +1,6 @@
-// Where the robot centre may be: at least r from every wall (r = W/2 in the planning
-// model). Answers the two questions the decomposition and graph ask: which part of a
+// Where the robot centre may be: at least r from every wall (r = L/2, the robot disc's
+// radius). Stripes prefer to keep a larger inset (W/2) from a cell's limits where the
+// walls allow (see detail::spanAt). Answers the two questions the decomposition and graph ask: which part of a
 // vertical line is clear, and a short collision-free path between two clear points.
 #pragma once
 
@@ -15,9 +16,12 @@ namespace fc {
 class ClearanceField {
 public:
     // rings: the free space (boundary and holes) in the frame used for queries.
-    ClearanceField(const std::vector<Ring>& rings, double radius);
+    // inset: how far stripes prefer to keep from a cell's floor and ceiling (W/2); never
+    // less than radius.
+    ClearanceField(const std::vector<Ring>& rings, double radius, double inset = 0.0);
 
     double radius() const { return radius_; }
+    double inset() const { return inset_; }
     const SegmentIndex& walls() const { return walls_; }
 
     // Clear pieces of the vertical segment x = const, y in [yLow, yHigh], bottom to top,
@@ -47,6 +51,7 @@ private:
 
     SegmentIndex walls_;
     double radius_;
+    double inset_;
     double tolerance_;
     double acceptance_;
     const std::vector<Vec2>& cornerPoints() const; // built on first use

@@ -21,7 +21,7 @@ struct StripeRun {
 class GraphBuilder {
 public:
     explicit GraphBuilder(const Decomposition& dec)
-        : dec_(dec), field_(dec.freeSpace, 0.5 * dec.coverageWidth) {}
+        : dec_(dec), field_(clearanceField(dec)) {}
 
     CornerGraph build() {
         graph_.cells.resize(dec_.cells.size());

@@ -287,12 +287,13 @@ Metrics computeMetrics(const MetricsInput& input) {
         }
     }
 
-    // Centre positions: the nearest blocked pixel centre lies up to half a pixel beyond the
-    // wall, so require W/2 plus half a pixel; otherwise gaps slightly narrower than W
-    // would count as passable.
+    // Centre positions of the robot disc (diameter L): the nearest blocked pixel centre
+    // lies up to half a pixel beyond the wall, so require L/2 plus half a pixel; otherwise
+    // gaps slightly narrower than L would count as passable.
     const std::vector<float> distance2 = squaredDistanceToBlocked(free, grid.cols, grid.rows);
     const double halfWidthPixels = 0.5 * width / resolution;
-    const double minDistance = halfWidthPixels + 0.5;
+    const double robotRadius = 0.5 * std::min(input.robot.robotDiameter, width);
+    const double minDistance = robotRadius / resolution + 0.5;
     const float minDistance2 = static_cast<float>(minDistance * minDistance - 1e-6);
     Mask centres(grid.size(), 0);
     for (size_t i = 0; i < centres.size(); ++i)
@@ -304,37 +305,52 @@ Metrics computeMetrics(const MetricsInput& input) {
     swept.sweep(segments);
     const PathWalk walk = walkPath(segments, grid, swept.firstArc(), width);
 
-    // Reachable: the centre components the path passes through (all of them if none).
-    const bool pathInRegion = std::any_of(walk.visitedPixels.begin(), walk.visitedPixels.end(),
-                                          [&](size_t pixel) { return centres[pixel] != 0; });
-    const Mask reachable =
-        pathInRegion ? floodFill(centres, grid.cols, grid.rows, walk.visitedPixels) : centres;
-    // The head (W x W around a centre pixel) reaches pixels whose centres lie within W/2
-    // minus the half pixel already granted to the centre region.
-    // (The centre region is half a pixel conservative, so the reach gets that half back.)
-    const int headRadius = std::max(0, static_cast<int>(std::ceil(halfWidthPixels - 1e-9)));
-    const Mask headReach = dilateSquare(reachable, grid.cols, grid.rows, headRadius);
+    // Sweepable: what a head of width W reaches from any centre position (a disc of radius
+    // W/2 around it), whether or not the path's start can get there: a part of the floor
+    // that the start cannot reach is uncovered, never silently left out. The centre region
+    // is half a pixel conservative, so the reach gets that half back.
+    Mask notCentre(grid.size(), 1);
+    for (size_t i = 0; i < grid.size(); ++i)
+        notCentre[i] = centres[i] ? 0 : 1;
+    const std::vector<float> toCentre2 = squaredDistanceToBlocked(notCentre, grid.cols, grid.rows);
+    const bool anyCentre = std::any_of(centres.begin(), centres.end(), [](auto c) { return c; });
+    const double reachPixels = halfWidthPixels + 0.5;
+    const float reach2 = static_cast<float>(reachPixels * reachPixels + 1e-6);
 
-    double sweepablePixels = 0.0, coveredPixels = 0.0; // counts
+    double requiredPixels = 0.0, sweepablePixels = 0.0, coveredPixels = 0.0; // counts
     const std::vector<float>& firstArc = swept.firstArc();
+    Mask headReach(grid.size(), 0);
     for (size_t i = 0; i < grid.size(); ++i) {
-        if (headReach[i] && free[i] && required[i]) {
+        if (!(free[i] && required[i]))
+            continue;
+        requiredPixels += 1.0;
+        headReach[i] = anyCentre && toCentre2[i] <= reach2;
+        if (headReach[i]) {
             sweepablePixels += 1.0;
             coveredPixels += firstArc[i] != kNeverSwept ? 1.0 : 0.0;
         }
     }
     const size_t missed = static_cast<size_t>(sweepablePixels - coveredPixels);
+    const size_t unreached = static_cast<size_t>(requiredPixels - sweepablePixels);
     const size_t stride = std::max<size_t>(1, missed / 20000 + 1);
-    size_t seen = 0;
-    for (int row = 0; row < grid.rows && missed > 0; ++row)
+    const size_t unreachedStride = std::max<size_t>(1, unreached / 20000 + 1);
+    size_t seen = 0, seenUnreached = 0;
+    for (int row = 0; row < grid.rows && (missed > 0 || unreached > 0); ++row)
         for (int col = 0; col < grid.cols; ++col) {
             const size_t i = grid.index(col, row);
-            if (headReach[i] && free[i] && required[i] && firstArc[i] == kNeverSwept &&
-                seen++ % stride == 0)
+            if (!(free[i] && required[i]))
+                continue;
+            if (headReach[i] && firstArc[i] == kNeverSwept && seen++ % stride == 0)
                 metrics.uncovered.push_back(decomposition->frame.toWorld(grid.centre(col, row)));
+            if (!headReach[i] && seenUnreached++ % unreachedStride == 0)
+                metrics.unreachable.push_back(
+                    decomposition->frame.toWorld(grid.centre(col, row)));
         }
+    metrics.requiredArea = requiredPixels * grid.pixelArea();
     metrics.sweepableArea = sweepablePixels * grid.pixelArea();
     metrics.coveredArea = coveredPixels * grid.pixelArea();
+    metrics.uncoveredArea = metrics.sweepableArea - metrics.coveredArea;
+    metrics.unreachableArea = metrics.requiredArea - metrics.sweepableArea;
     metrics.coverage = sweepablePixels > 0.0 ? coveredPixels / sweepablePixels : 0.0;
     metrics.ideal = metrics.sweepableArea / width;
     metrics.extra = metrics.length - metrics.ideal;

@@ -32,6 +32,9 @@ struct Metrics {
     // World-frame sample points of sweepable area the path never swept (coverage gaps),
     // thinned to at most about 20,000 points.
     std::vector<Vec2> uncovered;
+    // World-frame sample points of required free area no robot position can sweep
+    // (unreachable), thinned the same way.
+    std::vector<Vec2> unreachable;
 };
 
 struct MetricsInput {

@@ -3,6 +3,7 @@
 
 #include "geometry/Geometry.h"
 
+#include <map>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -43,10 +44,15 @@ struct RobotProfile {
     void validate() const;
 };
 
-// Sweep direction: stripes run along this angle in degrees (90 = vertical), or "auto".
+// Sweep direction. Per room (the default): each room's stripes follow its own walls (or its
+// entry in roomAngles). Fixed (perRoom and automatic false): one angle for the whole floor,
+// angleDeg (90 = vertical stripes, as in the paper). Auto: angles searched for the whole
+// floor, the shortest estimated time among plans that cover everything reachable.
 struct SweepOptions {
     double angleDeg = 90.0;
     bool automatic = false;
+    bool perRoom = true;
+    std::map<std::string, double> roomAngles; // per-room overrides, degrees, by room name
 };
 
 } // namespace fc

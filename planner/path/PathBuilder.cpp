@@ -87,7 +87,7 @@ CoveragePath finish(LocalPath& local, const ClearanceField& field, const Decompo
 
 CoveragePath buildCoveragePath(const Decomposition& dec, const CornerGraph& graph, const Walk& walk,
                                std::optional<Vec2> startPoint, std::optional<Vec2> endPoint) {
-    const ClearanceField field(dec.freeSpace, 0.5 * dec.coverageWidth);
+    const ClearanceField field = clearanceField(dec);
     if (walk.nodes.empty())
         return {};
     LocalPath local;
@@ -111,7 +111,7 @@ CoveragePath buildCoveragePath(const Decomposition& dec, const CornerGraph& grap
 
 CoveragePath buildCoveragePath(const Decomposition& dec, const DirectPath& direct,
                                std::optional<Vec2> startPoint, std::optional<Vec2> endPoint) {
-    const ClearanceField field(dec.freeSpace, 0.5 * dec.coverageWidth);
+    const ClearanceField field = clearanceField(dec);
     const Polyline& points = direct.path.points;
     if (points.empty())
         return {};

@@ -2,12 +2,14 @@
 
 #include "model/Validation.h"
 #include "path/PathBuilder.h"
+#include "pipeline/PerRoomSweep.h"
 #include "pipeline/SolverRegistry.h"
 #include "solvers/Baselines.h"
 
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <iomanip>
 #include <map>
 #include <queue>
 #include <sstream>
@@ -24,6 +26,7 @@ PreparedPlan preparePlan(const Plan& plan, const RobotProfile& robot, double str
         throw InputError("the sweep angle must be a finite number of degrees");
     DecompositionOptions options;
     options.coverageWidth = robot.coverageWidth;
+    options.robotDiameter = robot.robotDiameter;
     options.stripeAngleDeg = stripeAngleDeg;
     options.transitionCells = transitionCells;
     prepared.decomposition = decompose(prepared.plan, options);
@@ -167,32 +170,90 @@ Solution runSolver(const std::string& name, const PreparedPlan& prepared, const 
     throw InputError(msg.str());
 }
 
-std::vector<double> candidateAngles(const Plan& plan) {
-    // Wall length per direction (mod 180, whole degrees): the two longest families.
+std::vector<double> dominantWallAngles(const Plan& plan, int families) {
+    // Wall length per direction (mod 90, in tenths of a degree, so that a wall and its
+    // normal vote together), boundary, obstacles and rooms alike; each direction's score
+    // is the wall length within half a degree of it.
     std::map<int, double> byDirection;
-    const Ring& b = plan.boundary;
-    for (size_t i = 0; i < b.size(); ++i) {
-        const Vec2 d = b[(i + 1) % b.size()] - b[i];
-        double deg = std::atan2(d.y, d.x) * 180.0 / M_PI;
-        deg = std::fmod(deg + 360.0, 180.0);
-        byDirection[static_cast<int>(std::lround(deg)) % 180] += norm(d);
-    }
+    auto vote = [&](const Ring& ring) {
+        for (size_t i = 0; i < ring.size(); ++i) {
+            const Vec2 d = ring[(i + 1) % ring.size()] - ring[i];
+            if (!(norm(d) > 0.0))
+                continue;
+            double deg = std::fmod(std::atan2(d.y, d.x) * 180.0 / M_PI + 360.0, 90.0);
+            byDirection[static_cast<int>(std::lround(deg * 10.0)) % 900] += norm(d);
+        }
+    };
+    vote(plan.boundary);
+    for (const Ring& hole : plan.obstacles)
+        vote(hole);
+    for (const Room& room : plan.rooms)
+        vote(room.outline);
     std::vector<std::pair<double, int>> ranked;
-    for (const auto& [deg, len] : byDirection)
-        ranked.push_back({-len, deg});
+    for (const auto& [tenth, len] : byDirection) {
+        double score = 0.0;
+        for (int k = -5; k <= 5; ++k) {
+            auto it = byDirection.find((tenth + k + 900) % 900);
+            if (it != byDirection.end())
+                score += it->second;
+        }
+        ranked.push_back({-score, tenth});
+    }
     std::sort(ranked.begin(), ranked.end());
-    std::vector<double> out{90.0, 0.0};
-    for (size_t i = 0; i < ranked.size() && i < 2; ++i)
-        for (double a : {double(ranked[i].second), double((ranked[i].second + 90) % 180)})
-            if (std::none_of(out.begin(), out.end(),
-                             [a](double o) { return std::abs(o - a) < 1.0; }))
-                out.push_back(a);
+    std::vector<double> out;
+    for (const auto& [score, tenth] : ranked) {
+        if (static_cast<int>(out.size()) >= families)
+            break;
+        const double a = tenth / 10.0;
+        const bool near = std::any_of(out.begin(), out.end(), [a](double o) {
+            const double d = std::fmod(std::abs(o - a), 90.0);
+            return std::min(d, 90.0 - d) < 2.0;
+        });
+        if (!near)
+            out.push_back(a);
+    }
     return out;
+}
+
+std::vector<double> candidateAngles(const Plan& plan) {
+    // Stripes along and across the two dominant wall families, then 90 and 0 degrees.
+    std::vector<double> out;
+    auto add = [&](double a) {
+        a = std::fmod(std::fmod(a, 180.0) + 180.0, 180.0);
+        if (std::none_of(out.begin(), out.end(), [a](double o) {
+                const double d = std::abs(o - a);
+                return std::min(d, 180.0 - d) < 1.0;
+            }))
+            out.push_back(a);
+    };
+    for (double a : dominantWallAngles(plan, 2)) {
+        add(a + 90.0);
+        add(a);
+    }
+    add(90.0);
+    add(0.0);
+    return out;
+}
+
+Metrics measurePath(const PreparedPlan& prepared, const std::vector<std::string>& requiredRooms,
+                    const CoveragePath& path) {
+    const Decomposition& dec = prepared.decomposition;
+    MetricsInput in;
+    in.decomposition = &dec;
+    in.robot = prepared.robot;
+    in.path = path;
+    in.requiredRooms.assign(dec.roomNames.size(), requiredRooms.empty() ? 1 : 0);
+    for (const std::string& name : requiredRooms) {
+        auto it = std::find(dec.roomNames.begin(), dec.roomNames.end(), name);
+        if (it != dec.roomNames.end())
+            in.requiredRooms[static_cast<size_t>(it - dec.roomNames.begin())] = 1;
+    }
+    return computeMetrics(in);
 }
 
 namespace {
 
-PlanResult planAtAngle(const PlanRequest& request, double angle, const SolveControl& control) {
+PlanResult planOneAngle(const PlanRequest& request, double angle, const SolveControl& control) {
     const auto t0 = std::chrono::steady_clock::now();
     PlanResult result;
     result.stripeAngleDeg = angle;
@@ -206,42 +267,94 @@ PlanResult planAtAngle(const PlanRequest& request, double angle, const SolveCont
     const double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 
-    MetricsInput in;
-    in.decomposition = &result.prepared.decomposition;
-    in.robot = request.robot;
-    in.path = result.path;
-    in.requiredRooms.assign(result.prepared.decomposition.roomNames.size(), 0);
-    for (const GraphCell& c : result.prepared.graph.cells)
-        if (result.query.required[c.id])
-            in.requiredRooms[c.room] = 1;
-    result.metrics = computeMetrics(in);
+    // Every selected room counts, also cells the start could not reach (no silent loss).
+    std::vector<std::string> required = request.rooms;
+    if (required.empty())
+        required = result.prepared.decomposition.roomNames;
+    result.metrics = measurePath(result.prepared, required, result.path);
     result.metrics.graphCost = result.solution.graphCost;
     result.metrics.seconds = seconds;
     result.metrics.cells =
         static_cast<int>(std::count(result.query.required.begin(), result.query.required.end(), 1));
+    for (const std::string& loss : coverageLossWarnings(result.metrics))
+        result.warnings.push_back(loss);
     return result;
 }
 
 } // namespace
 
+bool betterPlanChoice(const Metrics& candidate, const Metrics& best) {
+    auto complete = [](const Metrics& m) {
+        return m.uncoveredArea <= kReportedLossFraction * m.requiredArea;
+    };
+    if (complete(candidate) != complete(best))
+        return complete(candidate);
+    if (!complete(candidate) &&
+        std::abs(candidate.uncoveredArea - best.uncoveredArea) > 1e-3 * best.requiredArea)
+        return candidate.uncoveredArea < best.uncoveredArea;
+    if (std::abs(candidate.time - best.time) > 1e-9 * std::max(1.0, best.time))
+        return candidate.time < best.time;
+    return candidate.length < best.length;
+}
+
+namespace {
+
+} // namespace
+
+std::vector<std::string> coverageLossWarnings(const Metrics& metrics) {
+    std::vector<std::string> out;
+    const double floor = metrics.requiredArea;
+    if (!(floor > 0.0))
+        return out;
+    auto describe = [&](double area, const char* what) {
+        if (area <= kReportedLossFraction * floor)
+            return;
+        std::ostringstream msg;
+        msg.setf(std::ios::fixed);
+        msg.precision(2);
+        msg << area << " m^2 (" << std::setprecision(1) << 100.0 * area / floor
+            << "% of the selected floor) " << what;
+        out.push_back(msg.str());
+    };
+    describe(metrics.uncoveredArea, "the robot could sweep but the path does not cover");
+    describe(metrics.unreachableArea, "the robot cannot reach (gaps narrower than the robot, "
+                                      "corners beyond its head)");
+    return out;
+}
+
+PlanResult planAtAngle(const PlanRequest& request, double angleDeg, const SolveControl& control) {
+    request.robot.validate();
+    return planOneAngle(request, angleDeg, control);
+}
+
 PlanResult planCoverage(const PlanRequest& request, const SolveControl& control) {
     request.robot.validate();
-    if (!request.sweep.automatic)
-        return planAtAngle(request, request.sweep.angleDeg, control);
+    if (!request.sweep.automatic && !request.sweep.perRoom)
+        return planOneAngle(request, request.sweep.angleDeg, control);
     // A solver bound to one graph (a trained model) plans at the angle it was trained at.
     if (std::optional<RegisteredSolver> registered = findRegisteredSolver(request.solver))
         if (registered->sweepAngle)
             if (std::optional<double> angle = registered->sweepAngle(request.modelPath))
-                return planAtAngle(request, *angle, control);
+                return planOneAngle(request, *angle, control);
+    if (!request.sweep.automatic)
+        return planPerRoom(request, control);
     const auto t0 = std::chrono::steady_clock::now();
     std::optional<PlanResult> best;
+    std::string firstError;
     for (double angle : candidateAngles(request.plan)) {
-        PlanResult r = planAtAngle(request, angle, control);
-        if (!best || r.metrics.length < best->metrics.length - 1e-9 ||
-            (std::abs(r.metrics.length - best->metrics.length) <= 1e-9 &&
-             r.metrics.turns < best->metrics.turns))
-            best = std::move(r);
+        try {
+            PlanResult r = planOneAngle(request, angle, control);
+            if (!best || betterPlanChoice(r.metrics, best->metrics))
+                best = std::move(r);
+        } catch (const InputError& e) {
+            // One angle may fail (e.g. the start cannot be joined at that angle) where
+            // another succeeds; only when every angle fails is the request bad.
+            if (firstError.empty())
+                firstError = e.what();
+        }
     }
+    if (!best)
+        throw InputError(firstError);
     best->metrics.seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     return std::move(*best);

@@ -40,14 +40,26 @@ struct PreparedPlan {
     CornerGraph graph;
 };
 
+// One group of rooms planned at one sweep angle (per-room sweeps plan several in turn).
+struct PlanPart {
+    double stripeAngleDeg = 90.0;
+    PreparedPlan prepared; // the whole floor at this angle
+    Query query;           // only this group's rooms are required
+    Solution solution;
+    CoveragePath path;            // world frame, from the previous part's end
+    std::vector<std::string> rooms; // decomposition room names this part covers
+};
+
 struct PlanResult {
-    PreparedPlan prepared;
+    PreparedPlan prepared; // of the first part
     Query query;
     Solution solution;
-    CoveragePath path;
-    Metrics metrics;
+    CoveragePath path; // the whole path, world frame
+    Metrics metrics;   // of the whole path over every required room
     std::vector<std::string> warnings;
     double stripeAngleDeg = 90.0;
+    // Set when rooms were swept at different angles (per-room); empty for one angle.
+    std::vector<PlanPart> parts;
 };
 
 // Validates (throws InputError) and builds decomposition and graph for one sweep angle.
@@ -66,9 +78,36 @@ std::vector<std::string> solverNames();
 Solution runSolver(const std::string& name, const PreparedPlan& prepared, const Query& query,
                    const std::string& modelPath = {}, const SolveControl& control = {});
 
-// Sweep angles tried by "auto": 0, 90 and the plan's dominant wall directions.
+// The plan's dominant wall directions in [0, 90) degrees, strongest first (walls of the
+// boundary, obstacles and rooms vote with their length; a wall and its normal are one
+// family), at most `families` of them.
+std::vector<double> dominantWallAngles(const Plan& plan, int families);
+
+// Sweep angles tried by "auto": along and across the two dominant wall families, 90, 0.
 std::vector<double> candidateAngles(const Plan& plan);
 
+// Losses above this fraction of the selected floor are reported (CLI stderr, GUI, --strict).
+inline constexpr double kReportedLossFraction = 0.005;
+
+// Whether `candidate` is the better of two plans of one request: a plan that covers
+// everything reachable (uncovered at most kReportedLossFraction of the floor) beats one
+// that does not; then the shorter estimated time, then the shorter path. A shorter path
+// never buys less coverage.
+bool betterPlanChoice(const Metrics& candidate, const Metrics& best);
+
+// One warning per kind of loss above kReportedLossFraction of the required area: area
+// the path misses (uncovered) and area no robot position can sweep (unreachable).
+std::vector<std::string> coverageLossWarnings(const Metrics& metrics);
+
+// Plans the request at one sweep angle for the whole floor.
+PlanResult planAtAngle(const PlanRequest& request, double angleDeg,
+                       const SolveControl& control = {});
+
+// The metrics of a path over the required rooms (by decomposition room name; empty: all).
+Metrics measurePath(const PreparedPlan& prepared, const std::vector<std::string>& requiredRooms,
+                    const CoveragePath& path);
+
+// Per-room (the default), auto or fixed sweep angle, as request.sweep says.
 PlanResult planCoverage(const PlanRequest& request, const SolveControl& control = {});
 
 } // namespace fc

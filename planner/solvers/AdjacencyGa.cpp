@@ -281,7 +281,7 @@ std::vector<CoverOption> coverOptions(const BaselineWorld& w, const ClearanceFie
 
 Solution solveAdjacencyGa(const BaselineQuery& query) {
     const BaselineWorld world = makeBaselineWorld(query, kName);
-    const ClearanceField field(world.decomposition.freeSpace, 0.5 * query.coverageWidth);
+    const ClearanceField field = clearanceField(world.decomposition);
     CellTransits transits(world);
     std::vector<int> cells;
     std::vector<std::vector<CoverOption>> options;

@@ -13,6 +13,7 @@ BaselineQuery makeBaselineQuery(const Plan& plan, const Decomposition& decomposi
     BaselineQuery out;
     out.plan = &plan;
     out.coverageWidth = decomposition.coverageWidth;
+    out.robotDiameter = 2.0 * decomposition.clearanceRadius;
     out.stripeAngleDeg = decomposition.frame.stripeAngleDeg();
     out.requiredRooms.assign(decomposition.roomNames.size(), 0);
     for (const GraphCell& c : graph.cells)
@@ -40,6 +41,7 @@ BaselineWorld makeBaselineWorld(const BaselineQuery& query, const char* solverNa
     BaselineWorld world;
     DecompositionOptions options;
     options.coverageWidth = query.coverageWidth;
+    options.robotDiameter = query.robotDiameter;
     options.stripeAngleDeg = query.stripeAngleDeg;
     options.transitionCells = false; // the papers' classic decomposition
     world.decomposition = decompose(*query.plan, options);

@@ -24,6 +24,7 @@ namespace fc {
 struct BaselineQuery {
     const Plan* plan = nullptr; // normalized and validated
     double coverageWidth = 1.0;
+    double robotDiameter = 0.0; // L (0: L = W)
     double stripeAngleDeg = 90.0;
     std::vector<char> requiredRooms; // per room of the decomposition
     Vec2 start;                      // sweep frame; the tour returns here

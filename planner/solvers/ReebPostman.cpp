@@ -278,7 +278,7 @@ Solution solveReebPostman(const BaselineQuery& query) {
     makeEulerian(reeb, tour);
     const std::vector<Step> circuit = eulerCircuit(reeb, tour, startNode);
 
-    const ClearanceField field(world.decomposition.freeSpace, 0.5 * query.coverageWidth);
+    const ClearanceField field = clearanceField(world.decomposition);
     TourBuilder path(world.start, field, world.graph, kName);
     std::vector<int> passes(world.decomposition.cells.size(), 0), passesMade(passes.size(), 0);
     for (const Step& s : circuit)

@@ -1,0 +1,304 @@
+#include "pipeline/PerRoomSweep.h"
+
+#include "path/PathBuilder.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <limits>
+
+namespace fc {
+namespace {
+
+// Plans the per-room search may try beyond the first (each plans the whole floor once).
+constexpr size_t kPerRoomSearchLimit = 4;
+
+double normalizedAngle(double deg) { return std::fmod(std::fmod(deg, 180.0) + 180.0, 180.0); }
+
+double angleDistance(double a, double b) {
+    const double d = std::abs(normalizedAngle(a) - normalizedAngle(b));
+    return std::min(d, 180.0 - d);
+}
+
+// Stripes along the longer extent of `outline` in the frame of wall family `family`
+// (degrees in [0, 90)): fewer, longer stripes and so fewer turns.
+double alongLongerExtent(const Ring& outline, double family) {
+    const double rad = family * M_PI / 180.0;
+    const Vec2 u{std::cos(rad), std::sin(rad)}, v{-std::sin(rad), std::cos(rad)};
+    double uMin = INFINITY, uMax = -INFINITY, vMin = INFINITY, vMax = -INFINITY;
+    for (const Vec2& p : outline) {
+        uMin = std::min(uMin, dot(p, u)), uMax = std::max(uMax, dot(p, u));
+        vMin = std::min(vMin, dot(p, v)), vMax = std::max(vMax, dot(p, v));
+    }
+    // A near-square room keeps the family's own direction, whichever way it is drawn.
+    const bool alongU = uMax - uMin >= (vMax - vMin) * (1.0 - 1e-6);
+    return normalizedAngle(alongU ? family : family + 90.0);
+}
+
+double angleFromWalls(const Plan& walls, const Ring& outline) {
+    const std::vector<double> families = dominantWallAngles(walls, 1);
+    return alongLongerExtent(outline, families.empty() ? 0.0 : families.front());
+}
+
+Vec2 centroidOf(const Ring& ring) {
+    double area = 0.0;
+    Vec2 sum;
+    for (size_t i = 0; i < ring.size(); ++i) {
+        const Vec2 a = ring[i], b = ring[(i + 1) % ring.size()];
+        const double c = cross(a, b);
+        area += c;
+        sum = sum + (a + b) * c;
+    }
+    if (std::abs(area) < 1e-12) {
+        Vec2 mean;
+        for (const Vec2& p : ring)
+            mean = mean + p * (1.0 / std::max<size_t>(1, ring.size()));
+        return mean;
+    }
+    return sum * (1.0 / (3.0 * area));
+}
+
+struct Group {
+    double angle = 90.0;
+    std::vector<std::string> rooms; // decomposition room names
+    Vec2 centre;                    // world frame
+    PreparedPlan prepared;
+};
+
+// Position of a node in the world frame.
+Vec2 worldOf(const PreparedPlan& prepared, int node) {
+    return prepared.decomposition.frame.toWorld(prepared.graph.nodes[node].position);
+}
+
+// The corner of a required cell of `group` nearest to `target` (world frame).
+Vec2 entryPoint(const Group& group, Vec2 target) {
+    const Decomposition& dec = group.prepared.decomposition;
+    const CornerGraph& g = group.prepared.graph;
+    double best = INFINITY;
+    Vec2 out = group.centre;
+    for (const GraphCell& cell : g.cells) {
+        const std::string& room = dec.roomNames[cell.room];
+        if (!cell.reachable ||
+            std::find(group.rooms.begin(), group.rooms.end(), room) == group.rooms.end())
+            continue;
+        for (int node : cell.nodes) {
+            const Vec2 p = worldOf(group.prepared, node);
+            if (distance(p, target) < best)
+                best = distance(p, target), out = p;
+        }
+    }
+    return out;
+}
+
+} // namespace
+
+std::map<std::string, double> roomSweepAngles(const Plan& plan, const SweepOptions& sweep) {
+    std::map<std::string, double> out;
+    out[""] = angleFromWalls(plan, plan.boundary);
+    for (const Room& room : plan.rooms) {
+        if (auto it = sweep.roomAngles.find(room.name); it != sweep.roomAngles.end()) {
+            out[room.name] = normalizedAngle(it->second);
+            continue;
+        }
+        Plan walls;
+        walls.boundary = room.outline;
+        for (const Ring& obstacle : plan.obstacles)
+            if (!obstacle.empty() && pointInRing(room.outline, obstacle.front()))
+                walls.obstacles.push_back(obstacle);
+        out[room.name] = angleFromWalls(walls, room.outline);
+    }
+    if (auto it = sweep.roomAngles.find("Floor"); it != sweep.roomAngles.end() && plan.rooms.empty())
+        out[""] = normalizedAngle(it->second);
+    return out;
+}
+
+double sweepAngleOfRoom(const std::map<std::string, double>& angles, const std::string& room) {
+    auto it = angles.find(room);
+    return it != angles.end() ? it->second : angles.at("");
+}
+
+namespace {
+
+// Plans the request with the given angle per room (see roomSweepAngles).
+PlanResult planWithRoomAngles(const PlanRequest& request,
+                              const std::map<std::string, double>& angles,
+                              const SolveControl& control) {
+    // The angles of the selected rooms; one angle is an ordinary plan.
+    std::vector<double> distinct;
+    auto addAngle = [&](double a) {
+        if (std::none_of(distinct.begin(), distinct.end(),
+                         [a](double d) { return angleDistance(a, d) < 0.5; }))
+            distinct.push_back(a);
+    };
+    if (request.rooms.empty()) {
+        for (const auto& entry : angles)
+            addAngle(entry.second);
+    } else {
+        for (const std::string& room : request.rooms)
+            addAngle(sweepAngleOfRoom(angles, room));
+    }
+    if (distinct.size() == 1)
+        return planAtAngle(request, distinct.front(), control);
+    const auto t0 = std::chrono::steady_clock::now();
+
+    // Each group decomposes the whole floor at its angle (other rooms' cells carry its
+    // transits) and requires only its own rooms.
+    std::vector<Group> groups;
+    for (double angle : distinct) {
+        Group group;
+        group.angle = angle;
+        group.prepared = preparePlan(request.plan, request.robot, angle, request.transitionCells);
+        double area = 0.0;
+        Vec2 weighted;
+        for (const std::string& name : group.prepared.decomposition.roomNames) {
+            const bool selected = request.rooms.empty() ||
+                                  std::find(request.rooms.begin(), request.rooms.end(), name) !=
+                                      request.rooms.end();
+            if (!selected || angleDistance(sweepAngleOfRoom(angles, name), angle) >= 0.5)
+                continue;
+            group.rooms.push_back(name);
+            for (const Room& room : request.plan.rooms)
+                if (room.name == name) {
+                    const double a = ringArea(room.outline);
+                    area += a;
+                    weighted = weighted + centroidOf(room.outline) * a;
+                }
+        }
+        group.centre = area > 0.0 ? weighted * (1.0 / area) : centroidOf(request.plan.boundary);
+        if (!group.rooms.empty())
+            groups.push_back(std::move(group));
+    }
+    if (groups.empty())
+        throw InputError("the selected rooms contain no area the robot can sweep");
+
+    // Order: the start's group first (else the largest), then the nearest remaining group.
+    std::vector<int> order;
+    {
+        int first = 0;
+        if (request.start) {
+            for (const Room& room : request.plan.rooms)
+                if (pointInRing(room.outline, *request.start))
+                    for (size_t g = 0; g < groups.size(); ++g)
+                        if (std::find(groups[g].rooms.begin(), groups[g].rooms.end(),
+                                      room.name) != groups[g].rooms.end())
+                            first = static_cast<int>(g);
+        } else {
+            first = static_cast<int>(std::max_element(groups.begin(), groups.end(),
+                                                      [](const Group& a, const Group& b) {
+                                                          return a.rooms.size() < b.rooms.size();
+                                                      }) -
+                                     groups.begin());
+        }
+        std::vector<char> used(groups.size(), 0);
+        order.push_back(first);
+        used[first] = 1;
+        while (order.size() < groups.size()) {
+            const Vec2 from = groups[order.back()].centre;
+            int next = -1;
+            for (size_t g = 0; g < groups.size(); ++g)
+                if (!used[g] && (next < 0 || distance(groups[g].centre, from) <
+                                                 distance(groups[next].centre, from)))
+                    next = static_cast<int>(g);
+            order.push_back(next);
+            used[next] = 1;
+        }
+    }
+
+    PlanResult result;
+    std::optional<Vec2> start = request.start, home = request.end;
+    std::vector<std::string> required;
+    for (size_t k = 0; k < order.size(); ++k) {
+        Group& group = groups[order[k]];
+        PlanPart part;
+        part.stripeAngleDeg = group.angle;
+        part.prepared = std::move(group.prepared);
+        part.rooms = group.rooms;
+        // Each part ends at the next group's nearest corner; the last one at the end point,
+        // or back where the first part started.
+        const std::optional<Vec2> end =
+            k + 1 < order.size() ? std::optional<Vec2>(entryPoint(groups[order[k + 1]], group.centre))
+                                 : home;
+        part.query = makeQuery(part.prepared, part.rooms, start, end, request.seed, result.warnings);
+        if (k == 0 && !home)
+            home = worldOf(part.prepared, part.query.startNode);
+        part.solution =
+            runSolver(request.solver, part.prepared, part.query, request.modelPath, control);
+        part.path = buildCoveragePath(part.prepared.decomposition, part.prepared.graph,
+                                      part.solution, start, end);
+        // The next part starts where this one ended.
+        start = part.path.empty() ? end : std::optional<Vec2>(part.path.points.back());
+        for (size_t i = 0; i < part.path.points.size(); ++i) {
+            const Vec2 p = part.path.points[i];
+            if (!result.path.points.empty()) {
+                if (i == 0 && distance(result.path.points.back(), p) < 1e-9)
+                    continue; // the parts meet here
+                result.path.kinds.push_back(i == 0 ? SegmentKind::Transit : part.path.kinds[i - 1]);
+            }
+            result.path.points.push_back(p);
+        }
+        result.metrics.graphCost += part.solution.graphCost;
+        result.metrics.cells += static_cast<int>(
+            std::count(part.query.required.begin(), part.query.required.end(), 1));
+        required.insert(required.end(), part.rooms.begin(), part.rooms.end());
+        result.parts.push_back(std::move(part));
+    }
+
+    const PlanPart& first = result.parts.front();
+    (void)t0;
+    result.prepared = first.prepared;
+    result.query = first.query;
+    result.solution = first.solution;
+    result.stripeAngleDeg = first.stripeAngleDeg;
+    const double graphCost = result.metrics.graphCost;
+    const int cells = result.metrics.cells;
+    result.metrics = measurePath(first.prepared, required, result.path);
+    result.metrics.graphCost = graphCost;
+    result.metrics.cells = cells;
+    result.metrics.seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    for (const std::string& loss : coverageLossWarnings(result.metrics))
+        result.warnings.push_back(loss);
+    return result;
+}
+
+} // namespace
+
+PlanResult planPerRoom(const PlanRequest& request, const SolveControl& control) {
+    request.robot.validate();
+    const auto t0 = std::chrono::steady_clock::now();
+    std::map<std::string, double> angles = roomSweepAngles(request.plan, request.sweep);
+    PlanResult best = planWithRoomAngles(request, angles, control);
+    // A short search: turn the stripes of one angle group (rooms without an override) by
+    // 90 degrees at a time, keeping what plans better (complete first, then faster). Walls
+    // decide the family; whether stripes run along or across it depends on the obstacles
+    // and doors, which only planning sees.
+    std::vector<double> tried;
+    for (size_t round = 0; round < 2 * angles.size() && round < kPerRoomSearchLimit; ++round) {
+        std::optional<double> flip;
+        for (const auto& [room, angle] : angles)
+            if (request.sweep.roomAngles.count(room) == 0 &&
+                std::none_of(tried.begin(), tried.end(),
+                             [a = angle](double t) { return angleDistance(a, t) < 0.5; })) {
+                flip = angle;
+                break;
+            }
+        if (!flip)
+            break;
+        tried.push_back(*flip);
+        std::map<std::string, double> turned = angles;
+        for (auto& [room, angle] : turned)
+            if (request.sweep.roomAngles.count(room) == 0 && angleDistance(angle, *flip) < 0.5)
+                angle = normalizedAngle(angle + 90.0);
+        tried.push_back(normalizedAngle(*flip + 90.0));
+        PlanResult candidate = planWithRoomAngles(request, turned, control);
+        if (betterPlanChoice(candidate.metrics, best.metrics)) {
+            best = std::move(candidate);
+            angles = std::move(turned);
+        }
+    }
+    best.metrics.seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    return best;
+}
+
+} // namespace fc

@@ -1,0 +1,30 @@
+// Per-room sweep directions (SPEC sect. 1): each room's stripes follow its own walls, so a
+// building drawn at any rotation, or a site of buildings at different rotations, is swept
+// along its walls rather than across them.
+#pragma once
+
+#include "pipeline/Planner.h"
+
+#include <map>
+#include <string>
+#include <vector>
+
+namespace fc {
+
+// The stripe angle of every room of the plan, degrees in [0, 180): its override in
+// sweep.roomAngles, or, from the room's own walls (its outline and the obstacles inside it),
+// the dominant wall family, stripes along the room's longer extent in that family's frame.
+// The entry under the empty name is for free space outside every room ("Floor" when the
+// plan has no rooms): the same rule over the whole floor.
+std::map<std::string, double> roomSweepAngles(const Plan& plan, const SweepOptions& sweep);
+
+// The angle a decomposition room name sweeps at (rooms the plan does not name, such as
+// "Floor" or "Unassigned 1", take the floor's entry).
+double sweepAngleOfRoom(const std::map<std::string, double>& angles, const std::string& room);
+
+// Plans each group of rooms that shares one angle in its own frame, in turn (the start's
+// group first, then the nearest group), joined by collision-free transits; metrics over the
+// whole path. With one angle this is planAtAngle.
+PlanResult planPerRoom(const PlanRequest& request, const SolveControl& control = {});
+
+} // namespace fc
