@@ -8,6 +8,7 @@
 #include <QCoreApplication>
 #include <QGraphicsItemGroup>
 #include <QGraphicsPathItem>
+#include <algorithm>
 
 namespace fc::ui {
 
@@ -131,7 +132,14 @@ void OverlayLayer::rebuild() {
         return;
     const auto result = controller_->result();
     const auto prepared = controller_->shownPlan();
-    if (prepared) {
+    if (result && !result->parts.empty()) {
+        // Per-room sweeps: each part's own cells and graph, at its own angle.
+        for (const PlanPart& part : result->parts) {
+            addCells(part.prepared, &part.rooms);
+            addGraph(part.prepared, &part.rooms);
+        }
+        addUnreachable(result->prepared);
+    } else if (prepared) {
         addCells(*prepared);
         addCriticalSlices(*prepared);
         addGraph(*prepared);
@@ -141,12 +149,22 @@ void OverlayLayer::rebuild() {
         addPath(*result);
 }
 
-void OverlayLayer::addCells(const PreparedPlan& prepared) {
+namespace {
+
+bool inRooms(const Decomposition& dec, int room, const std::vector<std::string>* rooms) {
+    return !rooms || std::find(rooms->begin(), rooms->end(), dec.roomNames[room]) != rooms->end();
+}
+
+} // namespace
+
+void OverlayLayer::addCells(const PreparedPlan& prepared, const std::vector<std::string>* rooms) {
     const Decomposition& dec = prepared.decomposition;
     auto* primary = groups_[static_cast<int>(OverlayKind::PrimaryCells)];
     auto* transition = groups_[static_cast<int>(OverlayKind::TransitionCells)];
     const QColor text = style::palette().color(QPalette::Text);
     for (const Cell& cell : dec.cells) {
+        if (!inRooms(dec, cell.room, rooms))
+            continue;
         QPainterPath path;
         addRing(path, dec.frame.toWorld(cell.outline()));
         if (cell.kind == CellKind::Primary) {
@@ -173,11 +191,17 @@ void OverlayLayer::addCriticalSlices(const PreparedPlan& prepared) {
                 overlayStyle(OverlayKind::CriticalSlices).pen);
 }
 
-void OverlayLayer::addGraph(const PreparedPlan& prepared) {
-    const Frame& frame = prepared.decomposition.frame;
+void OverlayLayer::addGraph(const PreparedPlan& prepared, const std::vector<std::string>* rooms) {
+    const Decomposition& dec = prepared.decomposition;
+    const Frame& frame = dec.frame;
     const CornerGraph& graph = prepared.graph;
+    auto nodeShown = [&](int node) {
+        return inRooms(dec, graph.cells[graph.nodes[node].cell].room, rooms);
+    };
     QPainterPath coverage, contour, inter, nodes;
     for (const GraphEdge& edge : graph.edges) {
+        if (!nodeShown(edge.u) && !nodeShown(edge.v))
+            continue;
         switch (edge.kind) {
         case EdgeKind::Coverage: // the pair's corners, not the whole stripe pattern
             addPolyline(coverage, frame.toWorld(Polyline{graph.nodes[edge.u].position,
@@ -193,7 +217,8 @@ void OverlayLayer::addGraph(const PreparedPlan& prepared) {
     }
     const double radius = 0.08 * prepared.robot.coverageWidth;
     for (const GraphNode& node : graph.nodes)
-        nodes.addEllipse(toQt(frame.toWorld(node.position)), radius, radius);
+        if (nodeShown(node.id))
+            nodes.addEllipse(toQt(frame.toWorld(node.position)), radius, radius);
     addPathItem(groups_[static_cast<int>(OverlayKind::CoverageEdges)], coverage,
                 overlayStyle(OverlayKind::CoverageEdges).pen);
     addPathItem(groups_[static_cast<int>(OverlayKind::ContourEdges)], contour,

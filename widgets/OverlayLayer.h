@@ -64,9 +64,10 @@ public slots:
 
 private:
     QGraphicsItemGroup* freshGroup(OverlayKind kind, double zValue);
-    void addCells(const PreparedPlan& prepared);
+    // rooms: only the cells of these rooms (one part of a per-room plan); null: all.
+    void addCells(const PreparedPlan& prepared, const std::vector<std::string>* rooms = nullptr);
     void addCriticalSlices(const PreparedPlan& prepared);
-    void addGraph(const PreparedPlan& prepared);
+    void addGraph(const PreparedPlan& prepared, const std::vector<std::string>* rooms = nullptr);
     void addUnreachable(const PreparedPlan& prepared);
     void addPath(const PlanResult& result);
 

@@ -2,11 +2,14 @@
 
 #include "Conversions.h"
 #include "Document.h"
+#include "pipeline/PerRoomSweep.h"
 
 #include <QEventLoop>
 #include <QFutureWatcher>
 #include <QTimer>
 #include <QtConcurrent>
+#include <algorithm>
+#include <map>
 
 namespace fc::ui {
 
@@ -112,8 +115,18 @@ void PlanningController::startPrepare() {
     }
     // "auto" picks its angle while planning; until then the overlays use its first
     // candidate (stripes across the dominant walls).
-    const double angle =
+    double angle =
         project.sweep.automatic ? candidateAngles(project.plan).front() : project.sweep.angleDeg;
+    if (project.sweep.perRoom && !project.sweep.automatic) {
+        // Per room: the preview shows the angle most rooms sweep at; the plan shows each
+        // room's own cells.
+        std::map<double, int> votes;
+        for (const auto& [room, a] : roomSweepAngles(project.plan, project.sweep))
+            ++votes[a];
+        angle = std::max_element(votes.begin(), votes.end(), [](const auto& x, const auto& y) {
+                    return x.second < y.second;
+                })->first;
+    }
     runInBackground<PreparedPlan>(
         [project, angle, latest = latestPrepare_, generation]() {
             if (*latest != generation) // edited again while this waited for a thread

@@ -3,17 +3,20 @@
 #include "Conversions.h"
 #include "Document.h"
 #include "PlanningController.h"
+#include "pipeline/PerRoomSweep.h"
 
 #include <QCheckBox>
 #include <QComboBox>
 #include <QDoubleSpinBox>
 #include <QFormLayout>
 #include <QGroupBox>
+#include <QHeaderView>
 #include <QLabel>
 #include <QListWidget>
 #include <QPushButton>
 #include <QScrollArea>
 #include <QSignalBlocker>
+#include <QTableWidget>
 #include <QVBoxLayout>
 
 namespace fc::ui {
@@ -97,15 +100,32 @@ QWidget* PlanningDock::createSweepGroup() {
     auto* group = new QGroupBox(tr("Sweep"));
     auto* form = new QFormLayout(group);
     angle_ = spinBox(0, 180, 5, tr("°"), 1);
-    autoAngle_ = new QCheckBox(tr("Auto (shortest path)"));
+    sweepMode_ = new QComboBox;
+    sweepMode_->addItem(tr("Per room, along its walls"));
+    sweepMode_->addItem(tr("Auto: fastest full coverage"));
+    sweepMode_->addItem(tr("One angle for the floor"));
+    sweepMode_->setToolTip(
+        tr("Per room: each room's stripes follow its own walls (set a room's angle below to "
+           "override it). Auto: tries several angles for the whole floor and keeps the fastest "
+           "plan that covers everything the robot can reach. One angle: the stripe angle "
+           "below for every room."));
+    roomAngles_ = new QTableWidget(0, 2);
+    roomAngles_->setHorizontalHeaderLabels({tr("Room"), tr("Angle")});
+    roomAngles_->horizontalHeader()->setStretchLastSection(true);
+    roomAngles_->verticalHeader()->hide();
+    roomAngles_->setMaximumHeight(140);
+    roomAngles_->setToolTip(tr("Type an angle in degrees to fix a room's stripes; clear it to "
+                               "follow the room's walls again."));
     solver_ = new QComboBox;
     for (const std::string& name : solverNames())
         solver_->addItem(fromStd(name));
+    form->addRow(tr("Sweep"), sweepMode_);
     form->addRow(tr("Stripe angle"), angle_);
-    form->addRow(QString(), autoAngle_);
+    form->addRow(roomAngles_);
     form->addRow(tr("Solver"), solver_);
     connect(angle_, &QDoubleSpinBox::valueChanged, this, &PlanningDock::commitSweep);
-    connect(autoAngle_, &QCheckBox::toggled, this, &PlanningDock::commitSweep);
+    connect(sweepMode_, &QComboBox::currentIndexChanged, this, &PlanningDock::commitSweep);
+    connect(roomAngles_, &QTableWidget::itemChanged, this, &PlanningDock::roomAngleEdited);
     connect(solver_, &QComboBox::currentTextChanged, this, [this](const QString& name) {
         if (document_ && fromStd(document_->project().solver) != name)
             document_->setSolver(name);
@@ -117,10 +137,11 @@ QWidget* PlanningDock::createMetricsGroup() {
     auto* group = new QGroupBox(tr("Metrics"));
     auto* form = new QFormLayout(group);
     const std::pair<const char*, QString> rows[] = {
-        {"length", tr("Length")},      {"extra", tr("Extra distance")},  {"turns", tr("Turns")},
-        {"coverage", tr("Coverage")},  {"uncovered", tr("Uncovered")},
-        {"unreachable", tr("Unreachable")}, {"time", tr("Estimated time")},   {"cells", tr("Cells")},
-        {"angle", tr("Stripe angle")}, {"seconds", tr("Planning time")},
+        {"length", tr("Length")},       {"extra", tr("Extra distance")},
+        {"turns", tr("Turns")},         {"coverage", tr("Coverage")},
+        {"uncovered", tr("Uncovered")}, {"unreachable", tr("Unreachable")},
+        {"time", tr("Estimated time")}, {"cells", tr("Cells")},
+        {"angle", tr("Stripe angle")},  {"seconds", tr("Planning time")},
     };
     for (const auto& [key, label] : rows) {
         auto* value = new QLabel(QStringLiteral("–"));
@@ -184,9 +205,65 @@ void PlanningDock::refreshSweep() {
         return;
     const SweepOptions& sweep = document_->project().sweep;
     setValueQuietly(angle_, sweep.angleDeg);
-    const QSignalBlocker blocker(autoAngle_);
-    autoAngle_->setChecked(sweep.automatic);
-    angle_->setEnabled(!sweep.automatic);
+    const QSignalBlocker blocker(sweepMode_);
+    sweepMode_->setCurrentIndex(sweep.automatic ? 1 : sweep.perRoom ? 0 : 2);
+    angle_->setEnabled(!sweep.automatic && !sweep.perRoom);
+    refreshRoomAngles();
+}
+
+void PlanningDock::refreshRoomAngles() {
+    // Rows are updated in place when the rooms are the same in number: this runs inside
+    // itemChanged of the cell the user edits, which must not be deleted under Qt's feet.
+    const QSignalBlocker blocker(roomAngles_);
+    const std::vector<Room> rooms =
+        document_ ? document_->project().plan.rooms : std::vector<Room>{};
+    if (roomAngles_->rowCount() != static_cast<int>(rooms.size())) {
+        roomAngles_->setRowCount(0);
+        for (size_t i = 0; i < rooms.size(); ++i) {
+            roomAngles_->insertRow(static_cast<int>(i));
+            auto* name = new QTableWidgetItem;
+            name->setFlags(name->flags() & ~Qt::ItemIsEditable);
+            roomAngles_->setItem(static_cast<int>(i), 0, name);
+            roomAngles_->setItem(static_cast<int>(i), 1, new QTableWidgetItem);
+        }
+    }
+    if (!document_)
+        return;
+    const Project& project = document_->project();
+    roomAngles_->setEnabled(project.sweep.perRoom && !project.sweep.automatic);
+    const std::map<std::string, double> angles = roomSweepAngles(project.plan, project.sweep);
+    const QLocale locale;
+    for (size_t i = 0; i < rooms.size(); ++i) {
+        const std::string& room = rooms[i].name;
+        const QString degrees = locale.toString(angles.at(room), 'f', 1);
+        roomAngles_->item(static_cast<int>(i), 0)->setText(fromStd(room));
+        QTableWidgetItem* angle = roomAngles_->item(static_cast<int>(i), 1);
+        // An empty cell follows the room's walls; its tooltip says at which angle.
+        angle->setText(project.sweep.roomAngles.count(room) ? degrees : QString());
+        angle->setToolTip(tr("From the walls: %1°").arg(degrees));
+        angle->setData(Qt::UserRole, fromStd(room));
+    }
+}
+
+void PlanningDock::roomAngleEdited(QTableWidgetItem* item) {
+    if (!document_ || item->column() != 1)
+        return;
+    SweepOptions sweep = document_->project().sweep;
+    const std::string room = item->data(Qt::UserRole).toString().toStdString();
+    const QString text = item->text().trimmed();
+    bool ok = true;
+    const double value = QLocale().toDouble(text, &ok);
+    if (text.isEmpty()) {
+        sweep.roomAngles.erase(room);
+    } else if (ok && std::isfinite(value)) {
+        sweep.roomAngles[room] = value;
+    } else {
+        status_->setStyleSheet(QStringLiteral("color: #d03030"));
+        status_->setText(tr("\"%1\" is not an angle in degrees.").arg(text));
+        refreshRoomAngles();
+        return;
+    }
+    document_->setSweep(sweep);
 }
 
 void PlanningDock::refreshSolver() {
@@ -220,6 +297,7 @@ void PlanningDock::refreshRooms() {
         item->setFlags(flags);
         item->setCheckState(document_->isRoomSelected(names[i]) ? Qt::Checked : Qt::Unchecked);
     }
+    refreshRoomAngles();
 }
 
 void PlanningDock::roomItemChanged(QListWidgetItem* item) {
@@ -249,10 +327,11 @@ void PlanningDock::commitRobot() {
 void PlanningDock::commitSweep() {
     if (!document_)
         return;
-    SweepOptions sweep;
+    SweepOptions sweep = document_->project().sweep; // keeps the per-room overrides
     sweep.angleDeg = angle_->value();
-    sweep.automatic = autoAngle_->isChecked();
-    angle_->setEnabled(!sweep.automatic);
+    sweep.automatic = sweepMode_->currentIndex() == 1;
+    sweep.perRoom = sweepMode_->currentIndex() == 0;
+    angle_->setEnabled(sweepMode_->currentIndex() == 2);
     document_->setSweep(sweep);
 }
 

@@ -1,4 +1,5 @@
-// The planning panel: robot profile, sweep angle (or auto), solver, the rooms to plan,
+// The planning panel: robot profile, sweep (per room, auto or fixed; per-room overrides),
+// solver, the rooms to plan,
 // the Plan button and the metrics of the last plan (SPEC sect. 6).
 #pragma once
 
@@ -12,6 +13,8 @@ class QLabel;
 class QListWidget;
 class QListWidgetItem;
 class QPushButton;
+class QTableWidget;
+class QTableWidgetItem;
 class QVBoxLayout;
 
 namespace fc::ui {
@@ -31,7 +34,9 @@ public:
     QListWidget* roomList() const { return rooms_; }
     QDoubleSpinBox* widthBox() const { return width_; }
     QComboBox* solverBox() const { return solver_; }
-    QCheckBox* autoAngleBox() const { return autoAngle_; }
+    // Sweep mode: 0 per room (each room along its own walls), 1 auto, 2 one fixed angle.
+    QComboBox* sweepModeBox() const { return sweepMode_; }
+    QTableWidget* roomAngleTable() const { return roomAngles_; }
     // The metric labels by key: length, extra, turns, coverage, time (tests).
     QString metricText(const QString& key) const;
     // Adds a section (e.g. the path preview) below the metrics.
@@ -49,6 +54,8 @@ private:
     void refreshStatus();
     void commitRobot();
     void commitSweep();
+    void refreshRoomAngles();
+    void roomAngleEdited(QTableWidgetItem* item);
     void roomItemChanged(QListWidgetItem* item);
 
     QPointer<Document> document_;
@@ -59,7 +66,8 @@ private:
     QDoubleSpinBox* speed_;
     QDoubleSpinBox* turnTime_;
     QDoubleSpinBox* angle_;
-    QCheckBox* autoAngle_;
+    QComboBox* sweepMode_;
+    QTableWidget* roomAngles_;
     QComboBox* solver_;
     QListWidget* rooms_;
     QPushButton* planButton_;

@@ -69,21 +69,12 @@ Exit codes: 0 success, 2 bad input (one line on stderr), 3 coverage loss with --
 
 } // namespace
 
-const std::vector<std::string> kPlanOptions{"--width",
-                                            "--robot-diameter",
-                                            "--cleaning-diameter",
-                                            "--speed",
-                                            "--turn-time",
-                                            "--angle",
-                                            "--rooms",
-                                            "--start",
-                                            "--end",
-                                            "--solver",
-                                            "--model",
-                                            "--seed",
-                                            "--out",
-                                            "--strict",
-                                            "--no-transition-cells"};
+const std::vector<std::string> kPlanOptions{
+    "--width",  "--robot-diameter", "--cleaning-diameter",
+    "--speed",  "--turn-time",      "--angle",
+    "--rooms",  "--start",          "--end",
+    "--solver", "--model",          "--seed",
+    "--out",    "--strict",         "--no-transition-cells"};
 
 // A request from the project file's settings, overridden by command-line options.
 PlanRequest requestFrom(const Project& project, const Arguments& args) {
@@ -301,7 +292,7 @@ int run(int argc, char** argv) {
     const std::string command = argv[1];
     try {
         const Arguments args(argc, argv, 2,
-                             {"--json", "--no-transition-cells", "--help", "--resume"});
+                             {"--json", "--no-transition-cells", "--help", "--resume", "--strict"});
         if (args.has("--help")) {
             std::cout << kUsage;
             return 0;

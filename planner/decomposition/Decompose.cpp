@@ -14,24 +14,29 @@ namespace {
 using detail::SlabSweep;
 using detail::Trapezoid;
 
-// Snaps x's closer than eps onto one value so that near-vertical edges of rotated
-// rectilinear plans become exactly vertical and shared slices are bit-identical.
-void snapXs(std::vector<Ring*>& rings, double eps) {
-    std::vector<double> xs;
+// Snaps coordinates (x, or y with `alongY`) closer than eps onto one value, rounded to a
+// dyadic grid of about eps, so that near-vertical and near-horizontal edges of rotated
+// rectilinear plans become exactly axis-parallel, shared slices are bit-identical, and a
+// plan drawn at any rotation decomposes as the same plan drawn axis-parallel.
+void snapCoordinates(std::vector<Ring*>& rings, double eps, bool alongY) {
+    auto coord = [alongY](Vec2& p) -> double& { return alongY ? p.y : p.x; };
+    std::vector<double> values;
     for (Ring* r : rings)
-        for (const Vec2& p : *r)
-            xs.push_back(p.x);
-    std::sort(xs.begin(), xs.end());
-    std::vector<double> rep(xs.size());
-    double start = xs.empty() ? 0 : xs[0];
-    for (size_t i = 0; i < xs.size(); ++i) {
-        if (xs[i] - start > eps)
-            start = xs[i];
-        rep[i] = start;
+        for (Vec2& p : *r)
+            values.push_back(coord(p));
+    std::sort(values.begin(), values.end());
+    const double grid = std::exp2(std::floor(std::log2(eps)));
+    std::vector<double> rep(values.size());
+    double start = values.empty() ? 0 : values[0];
+    for (size_t i = 0; i < values.size(); ++i) {
+        if (values[i] - start > eps)
+            start = values[i];
+        rep[i] = std::round(start / grid) * grid;
     }
     for (Ring* r : rings)
         for (Vec2& p : *r)
-            p.x = rep[std::lower_bound(xs.begin(), xs.end(), p.x) - xs.begin()];
+            coord(p) =
+                rep[std::lower_bound(values.begin(), values.end(), coord(p)) - values.begin()];
 }
 
 void orient(Ring& ring, bool counterClockwise) {
@@ -179,6 +184,10 @@ Decomposition decompose(const Plan& plan, const DecompositionOptions& options) {
     out.clearanceRadius = 0.5 * robot;
     const BoundingBox bounds = plan.bounds();
     out.frame = Frame({bounds.minX, bounds.minY}, options.stripeAngleDeg);
+    // The local origin at the corner of the plan's box in the sweep frame, so that the same
+    // plan at another rotation or position gets the same local coordinates.
+    const BoundingBox local = boundsOf(out.frame.toLocal(plan.boundary));
+    out.frame = Frame(out.frame.toWorld({local.minX, local.minY}), options.stripeAngleDeg);
     const double extent = std::max({1.0, bounds.width(), bounds.height()});
 
     Ring boundary = out.frame.toLocal(plan.boundary);
@@ -195,7 +204,8 @@ Decomposition decompose(const Plan& plan, const DecompositionOptions& options) {
         all.push_back(&h);
     for (Ring& r : rooms)
         all.push_back(&r);
-    snapXs(all, 1e-9 * extent);
+    snapCoordinates(all, 1e-9 * extent, false);
+    snapCoordinates(all, 1e-9 * extent, true);
 
     out.freeSpace.push_back(boundary);
     out.freeSpace.insert(out.freeSpace.end(), holes.begin(), holes.end());

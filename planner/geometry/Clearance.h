@@ -1,7 +1,7 @@
 // Where the robot centre may be: at least r from every wall (r = L/2, the robot disc's
 // radius). Stripes prefer to keep a larger inset (W/2) from a cell's limits where the
-// walls allow (see detail::spanAt). Answers the two questions the decomposition and graph ask: which part of a
-// vertical line is clear, and a short collision-free path between two clear points.
+// walls allow (see detail::spanAt). Answers the two questions the decomposition and graph ask:
+// which part of a vertical line is clear, and a short collision-free path between two clear points.
 #pragma once
 
 #include "geometry/SegmentIndex.h"

@@ -343,8 +343,7 @@ Metrics computeMetrics(const MetricsInput& input) {
             if (headReach[i] && firstArc[i] == kNeverSwept && seen++ % stride == 0)
                 metrics.uncovered.push_back(decomposition->frame.toWorld(grid.centre(col, row)));
             if (!headReach[i] && seenUnreached++ % unreachedStride == 0)
-                metrics.unreachable.push_back(
-                    decomposition->frame.toWorld(grid.centre(col, row)));
+                metrics.unreachable.push_back(decomposition->frame.toWorld(grid.centre(col, row)));
         }
     metrics.requiredArea = requiredPixels * grid.pixelArea();
     metrics.sweepableArea = sweepablePixels * grid.pixelArea();

@@ -13,7 +13,9 @@ namespace {
 // Plans the per-room search may try beyond the first (each plans the whole floor once).
 constexpr size_t kPerRoomSearchLimit = 4;
 
-double normalizedAngle(double deg) { return std::fmod(std::fmod(deg, 180.0) + 180.0, 180.0); }
+double normalizedAngle(double deg) {
+    return std::fmod(std::fmod(deg, 180.0) + 180.0, 180.0);
+}
 
 double angleDistance(double a, double b) {
     const double d = std::abs(normalizedAngle(a) - normalizedAngle(b));
@@ -107,7 +109,8 @@ std::map<std::string, double> roomSweepAngles(const Plan& plan, const SweepOptio
                 walls.obstacles.push_back(obstacle);
         out[room.name] = angleFromWalls(walls, room.outline);
     }
-    if (auto it = sweep.roomAngles.find("Floor"); it != sweep.roomAngles.end() && plan.rooms.empty())
+    if (auto it = sweep.roomAngles.find("Floor");
+        it != sweep.roomAngles.end() && plan.rooms.empty())
         out[""] = normalizedAngle(it->second);
     return out;
 }
@@ -151,9 +154,9 @@ PlanResult planWithRoomAngles(const PlanRequest& request,
         double area = 0.0;
         Vec2 weighted;
         for (const std::string& name : group.prepared.decomposition.roomNames) {
-            const bool selected = request.rooms.empty() ||
-                                  std::find(request.rooms.begin(), request.rooms.end(), name) !=
-                                      request.rooms.end();
+            const bool selected =
+                request.rooms.empty() ||
+                std::find(request.rooms.begin(), request.rooms.end(), name) != request.rooms.end();
             if (!selected || angleDistance(sweepAngleOfRoom(angles, name), angle) >= 0.5)
                 continue;
             group.rooms.push_back(name);
@@ -179,8 +182,8 @@ PlanResult planWithRoomAngles(const PlanRequest& request,
             for (const Room& room : request.plan.rooms)
                 if (pointInRing(room.outline, *request.start))
                     for (size_t g = 0; g < groups.size(); ++g)
-                        if (std::find(groups[g].rooms.begin(), groups[g].rooms.end(),
-                                      room.name) != groups[g].rooms.end())
+                        if (std::find(groups[g].rooms.begin(), groups[g].rooms.end(), room.name) !=
+                            groups[g].rooms.end())
                             first = static_cast<int>(g);
         } else {
             first = static_cast<int>(std::max_element(groups.begin(), groups.end(),
@@ -216,9 +219,11 @@ PlanResult planWithRoomAngles(const PlanRequest& request,
         // Each part ends at the next group's nearest corner; the last one at the end point,
         // or back where the first part started.
         const std::optional<Vec2> end =
-            k + 1 < order.size() ? std::optional<Vec2>(entryPoint(groups[order[k + 1]], group.centre))
-                                 : home;
-        part.query = makeQuery(part.prepared, part.rooms, start, end, request.seed, result.warnings);
+            k + 1 < order.size()
+                ? std::optional<Vec2>(entryPoint(groups[order[k + 1]], group.centre))
+                : home;
+        part.query =
+            makeQuery(part.prepared, part.rooms, start, end, request.seed, result.warnings);
         if (k == 0 && !home)
             home = worldOf(part.prepared, part.query.startNode);
         part.solution =
@@ -237,8 +242,8 @@ PlanResult planWithRoomAngles(const PlanRequest& request,
             result.path.points.push_back(p);
         }
         result.metrics.graphCost += part.solution.graphCost;
-        result.metrics.cells += static_cast<int>(
-            std::count(part.query.required.begin(), part.query.required.end(), 1));
+        result.metrics.cells +=
+            static_cast<int>(std::count(part.query.required.begin(), part.query.required.end(), 1));
         required.insert(required.end(), part.rooms.begin(), part.rooms.end());
         result.parts.push_back(std::move(part));
     }

@@ -297,9 +297,7 @@ bool betterPlanChoice(const Metrics& candidate, const Metrics& best) {
     return candidate.length < best.length;
 }
 
-namespace {
-
-} // namespace
+namespace {} // namespace
 
 std::vector<std::string> coverageLossWarnings(const Metrics& metrics) {
     std::vector<std::string> out;

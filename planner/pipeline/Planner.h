@@ -46,7 +46,7 @@ struct PlanPart {
     PreparedPlan prepared; // the whole floor at this angle
     Query query;           // only this group's rooms are required
     Solution solution;
-    CoveragePath path;            // world frame, from the previous part's end
+    CoveragePath path;              // world frame, from the previous part's end
     std::vector<std::string> rooms; // decomposition room names this part covers
 };
 

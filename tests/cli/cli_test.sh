@@ -45,7 +45,8 @@ metrics_ok() { # the last CLI JSON line has every SPEC key and coverage >= 0.99
 import json, sys
 line = open(sys.argv[1]).read().strip().splitlines()[-1]
 m = json.loads(line)
-keys = ["solver","length","ideal","extra","turns","coverage","time","cells","graph_cost","seconds"]
+keys = ["solver","length","ideal","extra","turns","coverage","uncovered_area","unreachable_area",
+        "time","cells","graph_cost","seconds"]
 assert list(m.keys())[:len(keys)] == keys, m.keys()
 assert m["coverage"] >= 0.99, m
 PY
@@ -82,6 +83,28 @@ check "metrics slanted" metrics_ok
 a=$("$cli" plan "$plans/office.geojson" --seed 7 --out "$work/a.csv" | python3 -c "import json,sys; d=json.load(sys.stdin); print(d['graph_cost'])")
 b=$("$cli" plan "$plans/office.geojson" --seed 7 --out "$work/b.csv" | python3 -c "import json,sys; d=json.load(sys.stdin); print(d['graph_cost'])")
 check "deterministic per seed" test "$a" = "$b"
+
+# Issue 13: a 0.9 m door (W = 1 m, L = 0.6 m) is passed; a 0.5 m door is not, and the
+# loss is said on stderr; --strict turns it into exit code 3 (the path is still written).
+check "0.9 m door: both rooms" cli plan "$data/door-0.9m.geojson" --start 1,1 --strict
+check "metrics 0.9 m door" metrics_ok
+"$cli" plan "$data/door-0.5m.geojson" --start 1,1 --out "$work/narrow.geojson" >"$work/out" 2>"$work/err"
+rc=$?
+if [ "$rc" -eq 0 ] && grep -q "does not cover" "$work/err" && [ -s "$work/narrow.geojson" ]; then
+  passed=$((passed + 1))
+else
+  failed=$((failed + 1)); echo "FAIL: 0.5 m door warns (exit $rc)"; head -3 "$work/err"
+fi
+"$cli" plan "$data/door-0.5m.geojson" --start 1,1 --strict --out "$work/strict.geojson" >"$work/out" 2>"$work/err"
+rc=$?
+if [ "$rc" -eq 3 ] && grep -q -- "--strict" "$work/err" && [ -s "$work/strict.geojson" ]; then
+  passed=$((passed + 1))
+else
+  failed=$((failed + 1)); echo "FAIL: --strict exits 3 on a loss (exit $rc)"; head -3 "$work/err"
+fi
+check "per-room angle" cli plan "$plans/office.geojson" --angle per-room
+check "metrics per-room" metrics_ok
+
 check "same path per seed" cmp -s "$work/a.csv" "$work/b.csv"
 
 # Graph export.

@@ -225,7 +225,7 @@ void CanvasTest::previewDrivesRobotAlongPath() {
     preview->setProgress(1.0);
     QCOMPARE(preview->progress(), 1.0);
     // An edit makes the path stale: the preview stops and its controls are disabled.
-    window->document()->setSweep({0.0, false});
+    window->document()->setSweep(fc::SweepOptions{0.0, false, false, {}});
     QVERIFY(!preview->hasPath());
     QVERIFY(!bar->isEnabled());
 }

@@ -47,7 +47,7 @@ void WindowTest::initTestCase() {
 void WindowTest::autoAngleIsOneOfTheCandidates() {
     auto window = makeWindow();
     QVERIFY(window->openFile(QStringLiteral(FC_PLANS_DIR "/simple-diamond.geojson")));
-    window->planningDock()->autoAngleBox()->setChecked(true);
+    window->planningDock()->sweepModeBox()->setCurrentIndex(1); // auto
     QVERIFY(window->document()->project().sweep.automatic);
     QVERIFY(window->planningController()->planAndWait());
     const double angle = window->planningController()->result()->stripeAngleDeg;
@@ -57,7 +57,7 @@ void WindowTest::autoAngleIsOneOfTheCandidates() {
                 ->metricText(QStringLiteral("angle"))
                 .startsWith(QLocale().toString(angle, 'f', 1)));
     window->document()->undoStack()->undo();
-    QVERIFY(!window->planningDock()->autoAngleBox()->isChecked());
+    QCOMPARE(window->planningDock()->sweepModeBox()->currentIndex(), 0); // per room again
 }
 
 void WindowTest::savedFileAppearsInRecentFiles() {
@@ -106,7 +106,7 @@ void WindowTest::undoInterleavesGeometryAndSettings() {
     robot.coverageWidth = 0.8;
     QVERIFY(document->setRobot(robot));
     QVERIFY(document->addPolygon(PolygonRole::Obstacle, {{2, 2}, {3, 2}, {3, 3}, {2, 3}}));
-    QVERIFY(document->setSweep({0.0, false}));
+    QVERIFY(document->setSweep(fc::SweepOptions{0.0, false, false, {}}));
     QUndoStack* stack = document->undoStack();
     stack->undo(); // sweep
     QCOMPARE(document->plan().obstacles.size(), obstacles + 1);

@@ -210,15 +210,33 @@ TEST(Metrics, OverlapOverManyShortSegmentsIsOnePiece) {
     EXPECT_NEAR(distance(m.overlaps[0].a, m.overlaps[0].b), 4.5, 0.2);
 }
 
-TEST(Metrics, NarrowDeadEndCorridorIsNotSweepable) {
+TEST(Metrics, DeadEndCorridorNarrowerThanTheRobotIsUnreachable) {
+    // 0.5 m wide: the robot disc (L = 0.6 m) cannot enter it.
     Decomposition d = rooms(0, 0, 10, 6);
-    d.freeSpace = {{{0, 0}, {10, 0}, {10, 2.7}, {13, 2.7}, {13, 3.3}, {10, 3.3}, {10, 6}, {0, 6}}};
-    d.cells.push_back(rectangleCell(1, 0, 10, 2.7, 13, 3.3, 1.0));
+    d.freeSpace = {
+        {{0, 0}, {10, 0}, {10, 2.75}, {13, 2.75}, {13, 3.25}, {10, 3.25}, {10, 6}, {0, 6}}};
+    d.cells.push_back(rectangleCell(1, 0, 10, 2.75, 13, 3.25, 1.0));
     const Metrics m = computeMetrics(inputFor(d, boustrophedon(0, 10, 0, 6)));
     EXPECT_EQ(m.cells, 2);
     EXPECT_GT(m.sweepableArea, 59.4);
-    EXPECT_LT(m.sweepableArea, 60.2); // the 1.8 m^2 corridor is out, bar its mouth
+    EXPECT_LT(m.sweepableArea, 60.4); // the 1.5 m^2 corridor is out, bar its mouth
+    EXPECT_NEAR(m.unreachableArea, m.requiredArea - m.sweepableArea, 1e-9);
+    EXPECT_GT(m.unreachableArea, 1.0);
     EXPECT_GT(m.coverage, 0.99);
+    EXPECT_FALSE(m.unreachable.empty());
+}
+
+TEST(Metrics, DeadEndCorridorTheRobotFitsIntoIsSweepableAndMissed) {
+    // 0.8 m wide: narrower than the swath, wider than the robot; a path that stays in the
+    // room leaves it uncovered, and says so (no silent loss).
+    Decomposition d = rooms(0, 0, 10, 6);
+    d.freeSpace = {{{0, 0}, {10, 0}, {10, 2.6}, {13, 2.6}, {13, 3.4}, {10, 3.4}, {10, 6}, {0, 6}}};
+    d.cells.push_back(rectangleCell(1, 0, 10, 2.6, 13, 3.4, 1.0));
+    const Metrics m = computeMetrics(inputFor(d, boustrophedon(0, 10, 0, 6)));
+    EXPECT_NEAR(m.sweepableArea, 62.4, 0.3);
+    EXPECT_NEAR(m.uncoveredArea, 2.4, 0.3);
+    EXPECT_LT(m.unreachableArea, 0.3);
+    EXPECT_LT(m.coverage, 0.97);
 }
 
 TEST(Metrics, OnlyRequiredRoomsCount) {

@@ -85,9 +85,9 @@ TEST(PathIO, MetricsLineHasTheSpecKeysInOrder) {
     std::vector<std::string> keys;
     for (const auto& item : object.items())
         keys.push_back(item.key());
-    const std::vector<std::string> expected = {"solver",     "length",   "ideal", "extra",
-                                               "turns",      "coverage", "time",  "cells",
-                                               "graph_cost", "seconds"};
+    const std::vector<std::string> expected = {
+        "solver",         "length",           "ideal", "extra", "turns",      "coverage",
+        "uncovered_area", "unreachable_area", "time",  "cells", "graph_cost", "seconds"};
     EXPECT_EQ(keys, expected);
     EXPECT_EQ(object["solver"], "exact");
     EXPECT_DOUBLE_EQ(object["length"].get<double>(), 14.1235);

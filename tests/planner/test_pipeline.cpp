@@ -28,20 +28,19 @@ PlanRequest requestFor(const Plan& plan, const std::string& solver) {
     return r;
 }
 
-// Every segment of the path keeps the robot centre W/2 (up to the contour sampling
-// tolerance) and so the robot body L/2 away from every wall.
+// Every segment of the path keeps the robot centre L/2 (up to the contour sampling
+// tolerance) away from every wall: the robot is a disc of diameter L.
 void expectCollisionFree(const PlanResult& r, const std::string& what) {
     const Decomposition& d = r.prepared.decomposition;
     const SegmentIndex walls(d.freeSpace);
-    const double w = r.prepared.robot.coverageWidth;
+    const double l = r.prepared.robot.robotDiameter;
     double worst = INFINITY;
     for (size_t i = 1; i < r.path.points.size(); ++i) {
         const Vec2 a = d.frame.toLocal(r.path.points[i - 1]);
         const Vec2 b = d.frame.toLocal(r.path.points[i]);
         worst = std::min(worst, walls.segmentClearance(a, b));
     }
-    EXPECT_GE(worst, 0.5 * w - 2e-3 * w) << what;
-    EXPECT_GE(worst, 0.5 * r.prepared.robot.robotDiameter) << what;
+    EXPECT_GE(worst, 0.5 * l - 2e-3 * l) << what;
 }
 
 struct Case {
@@ -165,6 +164,7 @@ TEST(Pipeline, LargeCoordinatesPlanLikeSmallOnes) {
 
 TEST(Pipeline, SlantedSweepAndGeneratedFloors) {
     PlanRequest r = requestFor(samplePlan("simple-diamond"), "heuristic");
+    r.sweep.perRoom = false;
     r.sweep.angleDeg = 30;
     const PlanResult slanted = planCoverage(r);
     expectCollisionFree(slanted, "diamond at 30 degrees");
@@ -198,6 +198,7 @@ TEST(Pipeline, CurvedWallsOfManySegments) {
     p.obstacles = {pillar};
     for (double angle : {90.0, 20.0}) {
         PlanRequest r = requestFor(p, "heuristic");
+        r.sweep.perRoom = false;
         r.sweep.angleDeg = angle;
         const PlanResult res = planCoverage(r);
         expectCollisionFree(res, "curved walls");

@@ -243,6 +243,7 @@ TEST(DqnSolver, PlansThroughThePipelineWithTheModelsAngle) {
     EXPECT_GE(result.metrics.coverage, 0.99);
 
     request.sweep.automatic = false;
+    request.sweep.perRoom = false;
     request.sweep.angleDeg = 90.0; // another graph: refused with the model named
     try {
         planCoverage(request);

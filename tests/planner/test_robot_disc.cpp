@@ -1,0 +1,194 @@
+// Issue 13: the robot is a disc of diameter L (doors and gaps at least L wide are driven and
+// swept), coverage is measured over every selected room (no silent loss), and each room
+// sweeps along its own walls so that a plan drawn at any rotation plans the same.
+#include "formats/PlanIO.h"
+#include "geometry/SegmentIndex.h"
+#include "pipeline/PerRoomSweep.h"
+#include "pipeline/Planner.h"
+
+#include <cmath>
+#include <gtest/gtest.h>
+
+using namespace fc;
+
+namespace {
+
+Ring box(double x0, double y0, double x1, double y1) {
+    return {{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}};
+}
+
+Ring rotated(const Ring& ring, double deg, Vec2 offset = {}) {
+    const double c = std::cos(deg * M_PI / 180.0), s = std::sin(deg * M_PI / 180.0);
+    Ring out;
+    for (const Vec2& p : ring)
+        out.push_back(Vec2{c * p.x - s * p.y, s * p.x + c * p.y} + offset);
+    return out;
+}
+
+Plan rotatedPlan(const Plan& plan, double deg, Vec2 offset = {}) {
+    Plan out = plan;
+    out.boundary = rotated(plan.boundary, deg, offset);
+    for (Ring& hole : out.obstacles)
+        hole = rotated(hole, deg, offset);
+    for (Room& room : out.rooms)
+        room.outline = rotated(room.outline, deg, offset);
+    return out;
+}
+
+Plan samplePlan(const std::string& name) {
+    return loadProjectFile(std::string(FC_PLANS_DIR) + "/" + name + ".geojson").plan;
+}
+
+PlanRequest requestFor(const Plan& plan) {
+    PlanRequest r;
+    r.plan = plan;
+    r.robot.robotDiameter = 0.6;
+    r.robot.coverageWidth = 1.0;
+    r.robot.cleaningDiameter = 1.0;
+    return r;
+}
+
+double worstClearance(const PlanResult& r) {
+    const Decomposition& d = r.prepared.decomposition;
+    const SegmentIndex walls(d.freeSpace);
+    double worst = INFINITY;
+    for (size_t i = 1; i < r.path.points.size(); ++i)
+        worst = std::min(worst, walls.segmentClearance(d.frame.toLocal(r.path.points[i - 1]),
+                                                       d.frame.toLocal(r.path.points[i])));
+    return worst;
+}
+
+// Two 6 x 5 m rooms side by side, a 0.2 m wall between them with a door `door` wide.
+Plan twoRoomsWithDoor(double door) {
+    const double y0 = 2.0, y1 = 2.0 + door;
+    Plan plan;
+    plan.boundary = {{0, 0},    {6, 0},   {6, y0},   {6.2, y0}, {6.2, 0}, {12.2, 0},
+                     {12.2, 5}, {6.2, 5}, {6.2, y1}, {6, y1},   {6, 5},   {0, 5}};
+    plan.rooms.push_back({"West", box(0, 0, 6.1, 5)});
+    plan.rooms.push_back({"East", box(6.1, 0, 12.2, 5)});
+    return plan;
+}
+
+} // namespace
+
+TEST(RobotDisc, NinetyCentimetreDoorIsPassedAndBothRoomsArePlanned) {
+    PlanRequest request = requestFor(twoRoomsWithDoor(0.9));
+    request.start = Vec2{1, 1};
+    const PlanResult r = planCoverage(request);
+    for (const std::string& w : r.warnings)
+        ADD_FAILURE() << "unexpected warning: " << w;
+    EXPECT_GE(r.metrics.coverage, 0.995);
+    EXPECT_LT(r.metrics.uncoveredArea, 0.005 * r.metrics.requiredArea);
+    // Both rooms hold required cells: the east room was reached through the door.
+    int east = 0;
+    for (const GraphCell& c : r.prepared.graph.cells)
+        east += r.query.required[c.id] && r.prepared.decomposition.roomNames[c.room] == "East";
+    EXPECT_GT(east, 0);
+    EXPECT_GE(worstClearance(r), 0.3 - 2e-3);
+}
+
+TEST(RobotDisc, DoorNarrowerThanTheRobotLeavesTheRoomUncoveredAndSaysSo) {
+    PlanRequest request = requestFor(twoRoomsWithDoor(0.5));
+    request.start = Vec2{1, 1};
+    const PlanResult r = planCoverage(request);
+    // The east room (about 30 m^2) is sweepable but cannot be reached from the start.
+    EXPECT_GT(r.metrics.uncoveredArea, 25.0);
+    EXPECT_LT(r.metrics.coverage, 0.6);
+    ASSERT_FALSE(coverageLossWarnings(r.metrics).empty());
+    bool named = false;
+    for (const std::string& w : r.warnings)
+        named |= w.find("does not cover") != std::string::npos;
+    EXPECT_TRUE(named);
+}
+
+TEST(RobotDisc, GapBesideABedNarrowerThanTheSwathIsSwept) {
+    // A 10 x 6 m room with a 2 x 4 m bed 0.8 m from the west wall: the robot (0.6 m) fits
+    // into the gap, the swath (1 m) does not; the gap must be covered all the same.
+    Plan plan;
+    plan.boundary = box(0, 0, 10, 6);
+    plan.obstacles.push_back(box(0.8, 1, 2.8, 5));
+    PlanRequest request = requestFor(plan);
+    request.sweep.perRoom = false;
+    for (double angle : {0.0, 90.0}) {
+        request.sweep.angleDeg = angle;
+        const PlanResult r = planCoverage(request);
+        EXPECT_GE(r.metrics.coverage, 0.995) << angle;
+        EXPECT_LT(r.metrics.unreachableArea, 0.005 * r.metrics.requiredArea) << angle;
+        EXPECT_GE(worstClearance(r), 0.3 - 2e-3) << angle;
+    }
+}
+
+TEST(RobotDisc, PassageNarrowerThanTheRobotIsUnreachableAndMeasured) {
+    // A 0.4 m wide, 3 m deep pocket off a 6 x 6 room: no position of a 0.6 m disc sweeps
+    // its far end.
+    Plan plan;
+    plan.boundary = {{0, 0}, {6, 0}, {6, 6}, {3.2, 6}, {3.2, 9}, {2.8, 9}, {2.8, 6}, {0, 6}};
+    const PlanResult r = planCoverage(requestFor(plan));
+    // The disc's centre stops 0.3 m short of the pocket; its head reaches 0.5 m beyond.
+    EXPECT_GT(r.metrics.unreachableArea, 0.4 * 2.0);
+    EXPECT_LT(r.metrics.unreachableArea, 0.4 * 3.0 + 0.1);
+    EXPECT_NEAR(r.metrics.requiredArea, 36 + 1.2, 0.1);
+    EXPECT_NEAR(r.metrics.requiredArea, r.metrics.sweepableArea + r.metrics.unreachableArea, 1e-6);
+    ASSERT_EQ(r.metrics.unreachable.empty(), false);
+}
+
+TEST(RobotDisc, AutoNeverTradesCoverageForTime) {
+    Metrics complete, faster;
+    complete.requiredArea = faster.requiredArea = 100.0;
+    complete.time = 500, faster.time = 300;
+    complete.uncoveredArea = 0.1;
+    faster.uncoveredArea = 3.0; // 3% of the floor missed
+    EXPECT_TRUE(betterPlanChoice(complete, faster));
+    EXPECT_FALSE(betterPlanChoice(faster, complete));
+    faster.uncoveredArea = 0.2; // both complete: the faster wins
+    EXPECT_TRUE(betterPlanChoice(faster, complete));
+}
+
+TEST(PerRoomSweep, RoomsFollowTheirOwnWallsAtAnyRotation) {
+    const Plan office = samplePlan("office");
+    const auto upright = roomSweepAngles(office, {});
+    const auto turned = roomSweepAngles(rotatedPlan(office, 17.0), {});
+    ASSERT_EQ(upright.size(), turned.size());
+    for (const auto& [room, angle] : upright) {
+        const double expected = std::fmod(angle + 17.0, 180.0);
+        EXPECT_NEAR(turned.at(room), expected, 0.11) << room;
+    }
+    // Rooms of one building mostly share a family; the corridor runs across the offices.
+    EXPECT_NEAR(std::fmod(std::abs(upright.at("Corridor") - upright.at("N01")), 180.0), 90.0, 0.11);
+}
+
+TEST(PerRoomSweep, OverrideFixesOneRoomsAngle) {
+    SweepOptions sweep;
+    sweep.roomAngles["N01"] = 45.0;
+    const auto angles = roomSweepAngles(samplePlan("office"), sweep);
+    EXPECT_DOUBLE_EQ(angles.at("N01"), 45.0);
+    PlanRequest request = requestFor(samplePlan("office"));
+    request.sweep = sweep;
+    request.rooms = {"N01", "N02"};
+    const PlanResult r = planCoverage(request);
+    ASSERT_EQ(r.parts.size(), 2u);
+    bool at45 = false;
+    for (const PlanPart& part : r.parts)
+        at45 |= std::abs(part.stripeAngleDeg - 45.0) < 1e-9 &&
+                part.rooms == std::vector<std::string>{"N01"};
+    EXPECT_TRUE(at45);
+    EXPECT_GE(r.metrics.coverage, 0.99);
+    EXPECT_GE(worstClearance(r), 0.3 - 2e-3);
+}
+
+class RotatedSamplePlans : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(RotatedSamplePlans, PlanWithinOnePercentOfTheUprightPlan) {
+    const Plan plan = samplePlan(GetParam());
+    const PlanResult upright = planCoverage(requestFor(plan));
+    for (double deg : {17.0, 121.3}) {
+        const PlanResult r = planCoverage(requestFor(rotatedPlan(plan, deg, {500000, 5400000})));
+        EXPECT_NEAR(r.metrics.length, upright.metrics.length, 0.01 * upright.metrics.length) << deg;
+        EXPECT_NEAR(r.metrics.turns, upright.metrics.turns, 0.01 * upright.metrics.turns + 0.5)
+            << deg;
+        EXPECT_GE(r.metrics.coverage, upright.metrics.coverage - 0.002) << deg;
+    }
+}
+
+INSTANTIATE_TEST_SUITE_P(Issue13, RotatedSamplePlans,
+                         ::testing::Values("simple", "room-obstacle", "room-notches"));
