@@ -13,13 +13,22 @@
 //                starts);
 //   sweepable  = required ∩ dilate(centres, W/2) (round buffer);
 //   swath      = the path's stroke with a head of width W held across the direction of
-//                travel: Boost's buffer of the linestring by W/2 with end_flat and join_miter
-//                (mitre limit 2 W, as the planner's metrics bevel longer mitres), plus a W x W/2
-//                square cap beyond each end of the path (Boost has no square end strategy:
-//                end_flat stops at the end point, end_round would add half discs);
+//                travel: per segment the W-wide rectangle with flat ends (Boost's buffer of
+//                that segment with end_flat), at each turn the mitre wedge on the outer side
+//                (join_miter; bevelled beyond a mitre limit of 2 W, as the planner's metrics
+//                do), and a W x W/2 square cap beyond each end of the path (Boost has no
+//                square end strategy: end_flat stops at the end point, end_round would add
+//                half discs; SPEC's "square path ends" means the W/2 square caps);
 //   covered    = swath ∩ sweepable (area outside the sweepable region does not count);
 //   uncovered  = sweepable - covered; unreachable = area(required) - sweepable.
 //
+// Areas: the regions (free, required, sweepable) are Boost.Geometry polygons (difference,
+// union, intersection, round buffers), measured with bg::area. The swath ∩ sweepable area
+// is measured by a scanline over those polygons and the swath's convex pieces, rows 5 mm
+// apart, each row cut exactly (see PathChecker.cpp for why not Boost's union of the
+// pieces: it fails on real paths), and scaled so that the rows' measure of the sweepable
+// region equals its exact area. Accuracy on the unit tests: 1e-9 m^2 on axis-parallel
+// swaths, 0.05 % on rotated random walks.
 // Circles are approximated by kPointsPerCircle-gons. All computation happens in a frame
 // shifted to the first vertex of the outer ring, so UTM-sized coordinates (5e6 m) keep
 // their precision; inputs and reported points are in the caller's coordinates.
@@ -53,9 +62,9 @@ constexpr double kMitreLimit = 4.0;
 
 struct Clearance {
     double minimum = std::numeric_limits<double>::infinity(); // path to nearest wall, m
-    bool inside = true;       // every waypoint inside the free space or on its boundary
-    std::size_t segment = 0;  // index of the path segment closest to a wall
-    XY nearestWallPoint{};    // a point of that wall near the closest approach
+    bool inside = true;            // every waypoint inside the free space or on its boundary
+    std::size_t segment = 0;       // index of the path segment closest to a wall
+    XY nearestWallPoint{};         // a point of that wall near the closest approach
     std::size_t outsideVertex = 0; // first waypoint outside the free space, when !inside
 };
 
@@ -95,7 +104,7 @@ struct Report {
 };
 
 // Everything above in one pass (the regions are computed once).
-Report checkPath(const FreeSpace& free, const std::vector<RingXY>& required,
-                 const PolylineXY& path, double robotDiameter, double coverageWidth);
+Report checkPath(const FreeSpace& free, const std::vector<RingXY>& required, const PolylineXY& path,
+                 double robotDiameter, double coverageWidth);
 
 } // namespace fccheck

@@ -215,17 +215,15 @@ bool drawSlantedRooms(Rng& rng, const fc::RobotProfile& robot, Plan& plan, std::
     const double reach = 4.0 * (rx + ry);
     auto strip = [&](double from, double to, double halfWidth) {
         Ring r;
-        for (const Vec2& p : {centre + dir * from - normal * halfWidth,
-                              centre + dir * to - normal * halfWidth,
-                              centre + dir * to + normal * halfWidth,
-                              centre + dir * from + normal * halfWidth})
+        for (const Vec2& p :
+             {centre + dir * from - normal * halfWidth, centre + dir * to - normal * halfWidth,
+              centre + dir * to + normal * halfWidth, centre + dir * from + normal * halfWidth})
             r.push_back(p);
         return toPolygon(r);
     };
     // The chord of the hull along the wall line: where the door can go.
-    bg::model::linestring<BPoint> line{
-        BPoint((centre - dir * reach).x, (centre - dir * reach).y),
-        BPoint((centre + dir * reach).x, (centre + dir * reach).y)};
+    bg::model::linestring<BPoint> line{BPoint((centre - dir * reach).x, (centre - dir * reach).y),
+                                       BPoint((centre + dir * reach).x, (centre + dir * reach).y)};
     bg::model::multi_linestring<bg::model::linestring<BPoint>> chord;
     bg::intersection(line, hull, chord);
     if (chord.size() != 1 || chord.front().size() < 2)
@@ -259,9 +257,8 @@ bool drawSlantedRooms(Rng& rng, const fc::RobotProfile& robot, Plan& plan, std::
         return false;
     if (rng.chance(0.6)) {
         const BPolygon room = toPolygon(plan.boundary);
-        for (Ring& r : placeObstacles(rng, room, 1, [&](Vec2 c) {
-                 return convexBlob(rng, c, rng.uniform(0.4, 1.2));
-             }))
+        for (Ring& r : placeObstacles(
+                 rng, room, 1, [&](Vec2 c) { return convexBlob(rng, c, rng.uniform(0.4, 1.2)); }))
             plan.obstacles.push_back(r);
     }
     std::ostringstream s;
@@ -285,20 +282,18 @@ bool drawStarRoom(Rng& rng, Plan& plan, std::string& what) {
     if (!bg::is_valid(room))
         return false;
     const int blobs = rng.integer(1, 3), pillars = rng.integer(1, 3);
-    for (Ring& r : placeObstacles(rng, room, blobs, [&](Vec2 c) {
-             return convexBlob(rng, c, rng.uniform(0.4, 1.2));
-         }))
+    for (Ring& r : placeObstacles(
+             rng, room, blobs, [&](Vec2 c) { return convexBlob(rng, c, rng.uniform(0.4, 1.2)); }))
         plan.obstacles.push_back(r);
     BPolygon withHoles = room;
     for (const Ring& o : plan.obstacles)
         withHoles.inners().push_back(toPolygon(o).outer());
     bg::correct(withHoles);
-    for (Ring& r : placeObstacles(rng, withHoles, pillars, [&](Vec2 c) {
-             return roundPillar(rng, c);
-         }))
+    for (Ring& r :
+         placeObstacles(rng, withHoles, pillars, [&](Vec2 c) { return roundPillar(rng, c); }))
         plan.obstacles.push_back(r);
-    what = std::to_string(n) + "-point star, " + std::to_string(plan.obstacles.size()) +
-           " obstacles";
+    what =
+        std::to_string(n) + "-point star, " + std::to_string(plan.obstacles.size()) + " obstacles";
     return true;
 }
 

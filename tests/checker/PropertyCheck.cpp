@@ -39,11 +39,11 @@ std::string Outcome::summary() const {
                   "uncovered %.2f, unreachable %.2f), planner coverage %.2f%% "
                   "uncovered %.2f unreachable %.2f m^2; clearance %.4f m%s; length %.1f m, "
                   "%d turns, %.2f s (+%.2f s check), %zu warnings",
-                  100.0 * check.coverage, check.coveredArea, check.sweepableArea,
-                  check.floorArea, check.uncoveredArea, check.unreachableArea,
-                  100.0 * metrics.coverage, metrics.uncoveredArea, metrics.unreachableArea,
-                  check.clearance.minimum, check.clearance.inside ? "" : " (waypoint outside)",
-                  metrics.length, metrics.turns, seconds, checkSeconds, warnings.size());
+                  100.0 * check.coverage, check.coveredArea, check.sweepableArea, check.floorArea,
+                  check.uncoveredArea, check.unreachableArea, 100.0 * metrics.coverage,
+                  metrics.uncoveredArea, metrics.unreachableArea, check.clearance.minimum,
+                  check.clearance.inside ? "" : " (waypoint outside)", metrics.length,
+                  metrics.turns, seconds, checkSeconds, warnings.size());
     return buf;
 }
 
@@ -78,8 +78,8 @@ Outcome planAndCheck(const fc::PlanRequest& request) {
     out.warnings = result.warnings;
     const auto t1 = Clock::now();
     const double L = request.robot.robotDiameter, W = request.robot.coverageWidth;
-    out.check = fccheck::checkPath(freeSpaceOf(request.plan), {}, polylineOf(result.path.points),
-                                   L, W);
+    out.check =
+        fccheck::checkPath(freeSpaceOf(request.plan), {}, polylineOf(result.path.points), L, W);
     out.checkSeconds = std::chrono::duration<double>(Clock::now() - t1).count();
     out.collisionFree = out.check.collisionFree;
     out.covers = out.check.coverage >= kRequiredCoverage;

@@ -1,6 +1,5 @@
 // The random plan generator: valid, deterministic per seed, the hard features it promises.
 #include "PlanGenerator.h"
-
 #include "model/Validation.h"
 
 #include <cmath>
