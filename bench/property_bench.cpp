@@ -161,8 +161,11 @@ int main(int argc, char** argv) {
         if (picked.empty())
             std::printf("- none\n");
         for (const Result* r : picked)
-            std::printf("- `%s` seed %llu: %s: %s\n", familyName(r->plan.family),
-                        static_cast<unsigned long long>(r->plan.seed), r->plan.description.c_str(),
+            std::printf("- %s: %s\n",
+                        r->generatorError.empty() ? r->plan.description.c_str()
+                                                  : (std::string(familyName(r->plan.family)) +
+                                                     " seed " + std::to_string(r->plan.seed))
+                                                        .c_str(),
                         r->generatorError.empty() ? r->outcome.summary().c_str()
                                                   : r->generatorError.c_str());
         std::printf("\n");
