@@ -56,7 +56,7 @@ bool capsuleSpan(Vec2 a, Vec2 b, double x, double r, double& lo, double& hi) {
 
 ClearanceField::ClearanceField(const std::vector<Ring>& rings, double radius, double inset)
     : walls_(rings), radius_(radius), inset_(std::max(radius, inset)),
-      tolerance_(1e-7 * std::max(1.0, radius)), acceptance_(3e-3 * radius), rings_(rings) {
+      tolerance_(1e-7 * std::max(1.0, radius)), acceptance_(1.5e-3 * radius), rings_(rings) {
     for (const Ring& ring : rings)
         for (const Vec2& p : ring)
             extent_.add(p);

@@ -505,7 +505,9 @@ double sweepableArea(const FreeSpace& free, const std::vector<RingXY>& required,
 
 double coveredArea(const PolylineXY& path, double coverageWidth, const FreeSpace& free,
                    const std::vector<RingXY>& required, double robotDiameter) {
-    const XY* start = path.empty() ? nullptr : &path.front();
+    // Every part the disc can sweep counts, also one the start cannot reach: SPEC sect. 6
+    // measures coverage over all the required rooms, so such a part is uncovered, not excused.
+    const XY* start = nullptr;
     const Regions r = regionsFor(free, required, robotDiameter, coverageWidth, start);
     return coveredIn(r.sweepable, path, coverageWidth, r.shift);
 }

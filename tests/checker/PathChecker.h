@@ -8,9 +8,8 @@
 // Model (SPEC sect. 1 and 6):
 //   free       = outer ring minus the holes;
 //   required   = free ∩ union(required rings) (no rings: the whole free space);
-//   centres    = erode(free, L/2) (negative round buffer), only the connected part that holds
-//                the path's first point (the rest cannot be reached from where the robot
-//                starts);
+//   centres    = erode(free, L/2) (negative round buffer), every connected part (checkPath;
+//                a part the start cannot reach is uncovered, not excused);
 //   sweepable  = required ∩ dilate(centres, W/2) (round buffer);
 //   swath      = the path's stroke with a head of width W held across the direction of
 //                travel: per segment the W-wide rectangle with flat ends (Boost's buffer of
