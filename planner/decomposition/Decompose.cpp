@@ -39,6 +39,20 @@ void snapCoordinates(std::vector<Ring*>& rings, double eps, bool alongY) {
                 rep[std::lower_bound(values.begin(), values.end(), coord(p)) - values.begin()];
 }
 
+// Area times centroid of a ring, whatever its orientation (its first moment of area).
+Vec2 centroidMoment(const Ring& ring) {
+    Vec2 sum;
+    double twiceArea = 0.0;
+    for (size_t i = 0; i < ring.size(); ++i) {
+        const Vec2 a = ring[i], b = ring[(i + 1) % ring.size()];
+        const double c = cross(a, b);
+        twiceArea += c;
+        sum = sum + (a + b) * c;
+    }
+    // sum / 6 is area * centroid with the ring's signed area; make it the absolute one.
+    return sum * ((twiceArea < 0 ? -1.0 : 1.0) / 6.0);
+}
+
 void orient(Ring& ring, bool counterClockwise) {
     if ((signedArea(ring) > 0) != counterClockwise)
         std::reverse(ring.begin(), ring.end());
@@ -186,8 +200,32 @@ Decomposition decompose(const Plan& plan, const DecompositionOptions& options) {
     out.frame = Frame({bounds.minX, bounds.minY}, options.stripeAngleDeg);
     // The local origin at the corner of the plan's box in the sweep frame, so that the same
     // plan at another rotation or position gets the same local coordinates.
+    // Stripes at a and a + 180 degrees are one family; the slice sweeps from the side the
+    // free space's centroid is nearer to, so that a plan turned by 180 degrees (or drawn
+    // at any rotation) gets the same cells in the same order.
+    double angle = options.stripeAngleDeg;
+    {
+        const Ring local = out.frame.toLocal(plan.boundary);
+        const BoundingBox box = boundsOf(local);
+        Vec2 moment = centroidMoment(local);
+        double area = std::abs(signedArea(local));
+        for (const Ring& hole : plan.obstacles) {
+            const Ring h = out.frame.toLocal(hole);
+            moment = moment - centroidMoment(h);
+            area -= std::abs(signedArea(h));
+        }
+        if (area > 0.0) {
+            const Vec2 c = moment * (1.0 / area);
+            const double tol = 1e-6 * std::max({1.0, box.width(), box.height()});
+            const double dx = (c.x - box.minX) - (box.maxX - c.x);
+            const double dy = (c.y - box.minY) - (box.maxY - c.y);
+            if (dx > tol || (std::abs(dx) <= tol && dy > tol))
+                angle += 180.0;
+        }
+    }
+    out.frame = Frame({bounds.minX, bounds.minY}, angle);
     const BoundingBox local = boundsOf(out.frame.toLocal(plan.boundary));
-    out.frame = Frame(out.frame.toWorld({local.minX, local.minY}), options.stripeAngleDeg);
+    out.frame = Frame(out.frame.toWorld({local.minX, local.minY}), angle);
     const double extent = std::max({1.0, bounds.width(), bounds.height()});
 
     Ring boundary = out.frame.toLocal(plan.boundary);

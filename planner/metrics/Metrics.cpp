@@ -53,7 +53,7 @@ Vec2 leftNormal(Vec2 direction) {
 
 double chooseResolution(const MetricsInput& input, const BoundingBox& bounds) {
     const double width = input.robot.coverageWidth;
-    double resolution = input.resolution > 0.0 ? input.resolution : width / 10.0;
+    double resolution = input.resolution > 0.0 ? input.resolution : width / 20.0;
     auto pixelCount = [&](double res) {
         const double margin = width + 2.0 * res;
         return std::ceil((bounds.width() + 2.0 * margin) / res) *

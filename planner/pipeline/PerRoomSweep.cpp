@@ -12,6 +12,8 @@ namespace {
 
 // Plans the per-room search may try beyond the first (each plans the whole floor once).
 constexpr size_t kPerRoomSearchLimit = 4;
+// Distances closer than this (m) are ties: a rotated plan must choose as the upright one.
+constexpr double kTieTolerance = 1e-6;
 
 double normalizedAngle(double deg) {
     return std::fmod(std::fmod(deg, 180.0) + 180.0, 180.0);
@@ -84,8 +86,9 @@ Vec2 entryPoint(const Group& group, Vec2 target) {
             std::find(group.rooms.begin(), group.rooms.end(), room) == group.rooms.end())
             continue;
         for (int node : cell.nodes) {
+            // Ties (corners equally far) go to the first, whatever the plan's rotation.
             const Vec2 p = worldOf(group.prepared, node);
-            if (distance(p, target) < best)
+            if (distance(p, target) < best - kTieTolerance)
                 best = distance(p, target), out = p;
         }
     }
@@ -199,8 +202,9 @@ PlanResult planWithRoomAngles(const PlanRequest& request,
             const Vec2 from = groups[order.back()].centre;
             int next = -1;
             for (size_t g = 0; g < groups.size(); ++g)
-                if (!used[g] && (next < 0 || distance(groups[g].centre, from) <
-                                                 distance(groups[next].centre, from)))
+                if (!used[g] &&
+                    (next < 0 || distance(groups[g].centre, from) <
+                                     distance(groups[next].centre, from) - kTieTolerance))
                     next = static_cast<int>(g);
             order.push_back(next);
             used[next] = 1;

@@ -63,6 +63,42 @@ std::vector<int> componentOf(const CornerGraph& g) {
 
 } // namespace
 
+int defaultStartNode(const PreparedPlan& prepared, const std::vector<char>& required) {
+    // The corner of a required cell farthest from the centre of the required area: a corner
+    // of the floor, as a person would start, and the same corner whatever the plan's
+    // rotation or sweep frame (equally far corners are mirror images, which plan alike).
+    const Decomposition& dec = prepared.decomposition;
+    const CornerGraph& g = prepared.graph;
+    double area = 0.0;
+    Vec2 centre;
+    for (const GraphCell& c : g.cells) {
+        if (!required[c.id])
+            continue;
+        const Ring outline = dec.cells[c.id].outline();
+        const double a = ringArea(outline);
+        Vec2 mean;
+        for (const Vec2& p : outline)
+            mean = mean + p * (1.0 / outline.size());
+        centre = centre + mean * a;
+        area += a;
+    }
+    if (area > 0.0)
+        centre = centre * (1.0 / area);
+    int best = -1;
+    double farthest = -1.0;
+    const double tie = 1e-6 * std::max(1.0, std::sqrt(area));
+    for (const GraphCell& c : g.cells) {
+        if (!required[c.id])
+            continue;
+        for (int node : c.nodes) {
+            const double d = distance(g.nodes[node].position, centre);
+            if (d > farthest + tie)
+                farthest = d, best = node;
+        }
+    }
+    return best;
+}
+
 Query makeQuery(const PreparedPlan& prepared, const std::vector<std::string>& rooms,
                 std::optional<Vec2> start, std::optional<Vec2> end, std::uint64_t seed,
                 std::vector<std::string>& warnings) {
@@ -92,12 +128,7 @@ Query makeQuery(const PreparedPlan& prepared, const std::vector<std::string>& ro
     if (start) {
         q.startNode = nearestNode(g, dec.frame.toLocal(*start));
     } else {
-        // Default: the lower-left corner of the leftmost required cell.
-        int best = -1;
-        for (const GraphCell& c : g.cells)
-            if (q.required[c.id] && (best < 0 || dec.cells[c.id].x0 < dec.cells[best].x0))
-                best = c.id;
-        q.startNode = g.cells[best].nodes.front();
+        q.startNode = defaultStartNode(prepared, q.required);
     }
     q.endNode = end ? nearestNode(g, dec.frame.toLocal(*end)) : q.startNode;
 
@@ -175,6 +206,7 @@ std::vector<double> dominantWallAngles(const Plan& plan, int families) {
     // normal vote together), boundary, obstacles and rooms alike; each direction's score
     // is the wall length within half a degree of it.
     std::map<int, double> byDirection;
+    std::vector<std::pair<double, double>> walls; // direction mod 90, length
     auto vote = [&](const Ring& ring) {
         for (size_t i = 0; i < ring.size(); ++i) {
             const Vec2 d = ring[(i + 1) % ring.size()] - ring[i];
@@ -182,7 +214,22 @@ std::vector<double> dominantWallAngles(const Plan& plan, int families) {
                 continue;
             double deg = std::fmod(std::atan2(d.y, d.x) * 180.0 / M_PI + 360.0, 90.0);
             byDirection[static_cast<int>(std::lround(deg * 10.0)) % 900] += norm(d);
+            walls.push_back({deg, norm(d)});
         }
+    };
+    // The exact direction of a family: the length-weighted mean of the walls within half a
+    // degree of its bin (a plan drawn at 219.6843 degrees sweeps at that angle, not 219.7).
+    auto refined = [&](double bin) {
+        double sum = 0.0, weight = 0.0;
+        for (const auto& [deg, length] : walls) {
+            double delta = std::fmod(deg - bin + 135.0, 90.0) - 45.0; // in [-45, 45)
+            if (delta < -45.0)
+                delta += 90.0;
+            if (std::abs(delta) <= 0.55)
+                sum += delta * length, weight += length;
+        }
+        const double a = weight > 0.0 ? bin + sum / weight : bin;
+        return std::fmod(a + 90.0, 90.0);
     };
     vote(plan.boundary);
     for (const Ring& hole : plan.obstacles)
@@ -204,7 +251,7 @@ std::vector<double> dominantWallAngles(const Plan& plan, int families) {
     for (const auto& [score, tenth] : ranked) {
         if (static_cast<int>(out.size()) >= families)
             break;
-        const double a = tenth / 10.0;
+        const double a = refined(tenth / 10.0);
         const bool near = std::any_of(out.begin(), out.end(), [a](double o) {
             const double d = std::fmod(std::abs(o - a), 90.0);
             return std::min(d, 90.0 - d) < 2.0;

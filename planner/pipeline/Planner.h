@@ -22,8 +22,8 @@ struct PlanRequest {
     SweepOptions sweep;
     std::string solver = "heuristic";
     std::vector<std::string> rooms; // names; empty = every room
-    std::optional<Vec2> start, end; // world frame; default start: a corner of the first
-                                    // required cell; default end: the start
+    std::optional<Vec2> start, end; // world frame; default start: defaultStartNode;
+                                    // default end: the start
     std::uint64_t seed = 1;
     std::string modelPath; // for learnt solvers
     bool transitionCells = true;
@@ -65,6 +65,10 @@ struct PlanResult {
 // Validates (throws InputError) and builds decomposition and graph for one sweep angle.
 PreparedPlan preparePlan(const Plan& plan, const RobotProfile& robot, double stripeAngleDeg,
                          bool transitionCells = true);
+
+// The start corner when none is given: the corner of a required cell farthest from the
+// centre of the required area (the same corner at any rotation of the plan).
+int defaultStartNode(const PreparedPlan& prepared, const std::vector<char>& required);
 
 // Required cells from room names, start/end snapped to the nearest corners. Cells that
 // cannot be reached from the start are left out with a warning. Throws InputError for
