@@ -311,12 +311,10 @@ double TourBound::at(std::uint64_t uncovered, int terminal) {
     return shrunk(best);
 }
 
-namespace {
-
 // Large queries: Mehlhorn's construction. A search from every task corner at once (each
 // node labelled by its nearest task) yields, through the edges joining two labels, a
 // graph whose minimum spanning tree is one of the complete task distance graph.
-double sparseTreeBound(const TransitGraph& transit, TransitSearch& search) {
+double spanningTreeBound(const TransitGraph& transit, TransitSearch& search) {
     const Problem& problem = *transit.problem;
     const CornerGraph& graph = *problem.graph;
     const int tasks = problem.taskCount();
@@ -394,8 +392,6 @@ double sparseTreeBound(const TransitGraph& transit, TransitSearch& search) {
     return shrunk(tree + leaves);
 }
 
-} // namespace
-
 double provenLowerBound(const TransitGraph& transit, TransitSearch& search, double upper) {
     if (TourBound::affordable(*transit.problem)) {
         const int tasks = transit.problem->taskCount();
@@ -403,7 +399,7 @@ double provenLowerBound(const TransitGraph& transit, TransitSearch& search, doub
         const int iterations = tasks <= 200 ? 400 : tasks <= 600 ? 100 : 30;
         return TourBound(transit, search, upper, iterations).root();
     }
-    return sparseTreeBound(transit, search);
+    return spanningTreeBound(transit, search);
 }
 
 } // namespace fc::solver_detail

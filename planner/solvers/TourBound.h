@@ -89,7 +89,12 @@ private:
 };
 
 // A proven lower bound on the graph cost of any walk answering the query; cheap on any
-// size. `upper` is the cost of a known walk (or +inf).
+// size. `upper` is the cost of a known walk (or +inf). Uses TourBound where affordable, else
+// spanningTreeBound.
 double provenLowerBound(const TransitGraph& transit, TransitSearch& search, double upper);
+
+// The unpenalised spanning-tree bound for any size, without all-pairs distances: one search
+// from every task corner at once (Mehlhorn's construction).
+double spanningTreeBound(const TransitGraph& transit, TransitSearch& search);
 
 } // namespace fc::solver_detail
