@@ -216,6 +216,7 @@ PlanResult planAtAngle(const PlanRequest& request, double angle, const SolveCont
             in.requiredRooms[c.room] = 1;
     result.metrics = computeMetrics(in);
     result.metrics.graphCost = result.solution.graphCost;
+    result.metrics.lowerBound = result.solution.lowerBound;
     result.metrics.seconds = seconds;
     result.metrics.cells =
         static_cast<int>(std::count(result.query.required.begin(), result.query.required.end(), 1));
