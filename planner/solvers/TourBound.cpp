@@ -19,11 +19,6 @@ EdgePrices transitMinimumPrices(const TransitGraph& transit) {
     return prices;
 }
 
-// Side of a corner: 0 left/bottom, 1 right/top.
-int sideOf(CornerKind kind) {
-    return kind == CornerKind::LB || kind == CornerKind::LT || kind == CornerKind::Bottom ? 0 : 1;
-}
-
 // Cheapest way to shrink bounds against rounding in the distance sums.
 double shrunk(double bound) {
     return bound > 0.0 ? bound * (1.0 - 1e-9) : bound - 1e-9;
@@ -55,8 +50,8 @@ TourBound::TourBound(const TransitGraph& transit, TransitSearch& search, double 
             addTerminal(option.entry);
     computeDistances(transit, search);
     buildPorts(problem);
-    pi_.assign(portTarget_.size(), 0.0);
-    root_ = shrunk(lagrangian(pi_, nullptr));
+    pi_.assign(portTerminals_.size(), 0.0);
+    root_ = shrunk(lagrangian(pi_, nullptr, nullptr));
     optimisePenalties(upper, subgradientIterations);
     if (tasks_ <= 63) // at() takes task sets as 64-bit masks
         tabulate();
@@ -77,34 +72,24 @@ void TourBound::computeDistances(const TransitGraph& transit, TransitSearch& sea
 }
 
 void TourBound::buildPorts(const Problem& problem) {
-    const CornerGraph& graph = *problem.graph;
+    // One port per corner; a cover option uses its entry and its exit port once each.
+    std::vector<int> portOfTerminal(terminalCount(), -1);
     taskPorts_.assign(tasks_, {});
-    for (int task = 0; task < tasks_; ++task) {
-        std::vector<int> sides[2];
-        bool crossing = true;
+    taskOptions_.assign(tasks_, {});
+    for (int task = 0; task < tasks_; ++task)
         for (const CoverOption& option : problem.options[task]) {
-            const int a = sideOf(graph.nodes[option.entry].corner);
-            const int b = sideOf(graph.nodes[option.exit].corner);
-            crossing = crossing && a != b && option.entry != option.exit;
-            const int terminal = terminalOfNode_[option.entry];
-            std::vector<int>& side = sides[a];
-            if (std::find(side.begin(), side.end(), terminal) == side.end())
-                side.push_back(terminal);
-        }
-        if (crossing && !sides[0].empty() && !sides[1].empty()) {
-            for (int s = 0; s < 2; ++s) {
-                taskPorts_[task].push_back(static_cast<int>(portTerminals_.size()));
-                portTerminals_.push_back(sides[s]);
-                portTarget_.push_back(1);
+            int ends[2] = {option.entry, option.exit};
+            for (int& end : ends) {
+                const int terminal = terminalOfNode_[end];
+                if (portOfTerminal[terminal] < 0) {
+                    portOfTerminal[terminal] = static_cast<int>(portTerminals_.size());
+                    portTerminals_.push_back({terminal});
+                    taskPorts_[task].push_back(portOfTerminal[terminal]);
+                }
+                end = portOfTerminal[terminal];
             }
-        } else { // entered and left anywhere: one port carrying both transits
-            std::vector<int> all = sides[0];
-            all.insert(all.end(), sides[1].begin(), sides[1].end());
-            taskPorts_[task].push_back(static_cast<int>(portTerminals_.size()));
-            portTerminals_.push_back(all);
-            portTarget_.push_back(2);
+            taskOptions_[task].push_back({ends[0], ends[1]});
         }
-    }
     const int ports = static_cast<int>(portTerminals_.size());
     portDistance_.assign(ports, std::vector<double>(ports, kInfinity));
     fromTerminal_.assign(terminalCount(), std::vector<double>(ports, kInfinity));
@@ -121,7 +106,16 @@ void TourBound::buildPorts(const Problem& problem) {
                 portDistance_[p][q] = std::min(portDistance_[p][q], fromTerminal_[b][p]);
 }
 
-double TourBound::lagrangian(const std::vector<double>& pi, std::vector<int>* degree) const {
+std::pair<int, int> TourBound::heaviestOption(int task, const std::vector<double>& pi) const {
+    std::pair<int, int> best = taskOptions_[task].front();
+    for (const std::pair<int, int>& option : taskOptions_[task])
+        if (pi[option.first] + pi[option.second] > pi[best.first] + pi[best.second])
+            best = option;
+    return best;
+}
+
+double TourBound::lagrangian(const std::vector<double>& pi, std::vector<int>* degree,
+                             std::vector<int>* target) const {
     const int start = 0; // terminal of the start node
     if (tasks_ == 0)
         return toEnd_[start];
@@ -195,8 +189,16 @@ double TourBound::lagrangian(const std::vector<double>& pi, std::vector<int>* de
         ++(*degree)[endPort];
     }
     total += bestStart + bestEnd;
-    for (std::size_t p = 0; p < pi.size(); ++p)
-        total -= portTarget_[p] * pi[p];
+    if (target)
+        target->assign(pi.size(), 0);
+    for (int i = 0; i < tasks_; ++i) {
+        const auto [p, q] = heaviestOption(i, pi);
+        total -= pi[p] + pi[q];
+        if (target) {
+            ++(*target)[p];
+            ++(*target)[q];
+        }
+    }
     return total;
 }
 
@@ -204,12 +206,12 @@ void TourBound::optimisePenalties(double upper, int iterations) {
     if (tasks_ < 2 || iterations <= 0 || !(root_ < kInfinity))
         return;
     std::vector<double> pi = pi_;
-    std::vector<int> degree;
+    std::vector<int> degree, target;
     double lambda = 2.0;
     int sinceBest = 0;
     // Without a known walk, steps are sized on the tree itself.
     for (int it = 0; it < iterations; ++it) {
-        const double value = lagrangian(pi, &degree);
+        const double value = lagrangian(pi, &degree, &target);
         if (shrunk(value) > root_) {
             root_ = shrunk(value);
             pi_ = pi;
@@ -222,14 +224,14 @@ void TourBound::optimisePenalties(double upper, int iterations) {
         }
         double norm = 0.0;
         for (std::size_t p = 0; p < pi.size(); ++p)
-            norm += double(degree[p] - portTarget_[p]) * double(degree[p] - portTarget_[p]);
+            norm += double(degree[p] - target[p]) * double(degree[p] - target[p]);
         if (norm == 0.0)
             break; // the tree is a walk: the bound is tight for this relaxation
         const double gap = upper < kInfinity ? std::max(upper - value, 1e-3 * std::abs(upper))
                                              : 0.05 * std::abs(value) + 1.0;
         const double step = lambda * gap / norm;
         for (std::size_t p = 0; p < pi.size(); ++p)
-            pi[p] += step * (degree[p] - portTarget_[p]);
+            pi[p] += step * (degree[p] - target[p]);
     }
 }
 
@@ -243,8 +245,9 @@ void TourBound::tabulate() {
         leafEnd_[k].assign(tasks_, kInfinity);
         offset_[k].assign(tasks_, 0.0);
         for (int i = 0; i < tasks_; ++i) {
+            const auto [heavyP, heavyQ] = heaviestOption(i, pi);
+            offset_[k][i] = -(pi[heavyP] + pi[heavyQ]);
             for (int p : taskPorts_[i]) {
-                offset_[k][i] -= portTarget_[p] * pi[p];
                 leafEnd_[k][i] = std::min(leafEnd_[k][i], portToEnd_[p] + pi[p]);
                 for (int t = 0; t < terminals; ++t) {
                     double& leaf = leafFrom_[k][static_cast<std::size_t>(t) * tasks_ + i];

@@ -8,18 +8,19 @@
 // sum of D over its k + 1 transits, and these transits form a spanning tree of {x, tasks,
 // end} in which x and end are leaves: a minimum spanning tree bounds the walk from below.
 //
-// The bound is strengthened as in Held and Karp: each cell is entered on one side (left or
-// right for a primary cell, bottom or top for a transition cell) and left on the other, so
-// each side ("port") carries exactly one transit. A penalty pi per port added to every
-// transit that uses it, minus the penalties once, leaves the walk's cost unchanged and keeps
-// the tree a lower bound for any pi; subgradient steps on pi at the root raise it. The
-// penalties found at the root stay valid for every sub-problem (any pi is valid).
+// The bound is strengthened as in Held and Karp: each cell is entered at the entry corner of
+// one cover option and left at its exit corner, so those two corners carry one transit each
+// and the others none. A penalty pi per corner added to every transit that uses it, minus,
+// per cell, the largest penalty sum of an option's two corners, keeps the tree a lower
+// bound for any pi; subgradient steps on pi at the root raise it. The penalties found at the
+// root stay valid for every sub-problem (any pi is valid).
 #pragma once
 
 #include "solvers/FlatHashMap.h"
 #include "solvers/TransitSearch.h"
 
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 namespace fc::solver_detail {
@@ -54,7 +55,10 @@ private:
     void computeDistances(const TransitGraph& transit, TransitSearch& search);
     void buildPorts(const Problem& problem);
     // Tree over {x, tasks, end} with x and end as leaves under penalties pi; fills degrees.
-    double lagrangian(const std::vector<double>& pi, std::vector<int>* degree) const;
+    // target: transits each port carries in the option that maximises its penalties.
+    double lagrangian(const std::vector<double>& pi, std::vector<int>* degree,
+                      std::vector<int>* target) const;
+    std::pair<int, int> heaviestOption(int task, const std::vector<double>& pi) const;
     void optimisePenalties(double upper, int iterations);
     void tabulate(); // per-task-pair and leaf weights under the root penalties and under none
 
@@ -65,11 +69,11 @@ private:
     std::vector<std::vector<double>> terminalDistance_; // terminal -> terminal
     std::vector<double> toEnd_;                         // terminal -> end node
 
-    std::vector<std::vector<int>> portTerminals_;   // port -> its corners (terminals)
-    std::vector<int> portTarget_;                   // transits per port: 1, or 2 for one-port tasks
-    std::vector<std::vector<int>> taskPorts_;       // task -> its one or two ports
-    std::vector<std::vector<double>> portDistance_; // port -> port
-    std::vector<std::vector<double>> fromTerminal_; // terminal -> port
+    std::vector<std::vector<int>> portTerminals_;               // port -> its corners (terminals)
+    std::vector<std::vector<int>> taskPorts_;                   // task -> its ports (corners)
+    std::vector<std::vector<std::pair<int, int>>> taskOptions_; // task -> (entry, exit) ports
+    std::vector<std::vector<double>> portDistance_;             // port -> port
+    std::vector<std::vector<double>> fromTerminal_;             // terminal -> port
     std::vector<double> portToEnd_;
 
     std::vector<double> pi_; // root penalties per port
