@@ -185,11 +185,9 @@ Solution solveExact(const CornerGraph& graph, const Query& query, const ExactOpt
     reportProgress(control, 1.0);
 
     if (goal < 0 && outOfBudget) {
-        // The optimum is at least the smallest key still queued (stale keys only lower it).
-        double queued = upper;
-        for (const HeapItem& item : heap)
-            queued = std::min(queued, item.key);
-        lowerBound = std::min(std::max(lowerBound, queued), incumbent.graphCost);
+        // The optimum is at least the last key popped: every key queued is at least as
+        // large, and so is every state the budget left out (children of that state).
+        lowerBound = std::min(lowerBound, incumbent.graphCost);
         if (!options.bestOnBudget)
             throw SolverError("exact solver: " + std::to_string(tasks) +
                               " required cells: no proof of optimality within its budget (" +
