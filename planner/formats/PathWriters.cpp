@@ -36,6 +36,10 @@ ordered_json metricsObject(const std::string& solver, const Metrics& m) {
     object["cells"] = m.cells;
     object["graph_cost"] = rounded(m.graphCost, 4);
     object["seconds"] = rounded(m.seconds, 6);
+    if (m.lowerBound > 0.0) { // proven by the solver: graph_cost is within `gap` of optimal
+        object["lower_bound"] = rounded(m.lowerBound, 4);
+        object["gap"] = rounded(m.graphCost / m.lowerBound - 1.0, 6);
+    }
     return object;
 }
 

@@ -11,15 +11,16 @@
 namespace fc {
 
 struct Metrics {
-    double length = 0.0;    // m
-    double ideal = 0.0;     // sweepable area of the required rooms / W, m
-    double extra = 0.0;     // length - ideal, m
-    int turns = 0;          // heading changes >= 45 degrees
-    double coverage = 0.0;  // 0..1
-    double time = 0.0;      // s = length / speed + turns * turn time
-    int cells = 0;          // required cells
-    double graphCost = 0.0; // from the solver's walk
-    double seconds = 0.0;   // planning time
+    double length = 0.0;      // m
+    double ideal = 0.0;       // sweepable area of the required rooms / W, m
+    double extra = 0.0;       // length - ideal, m
+    int turns = 0;            // heading changes >= 45 degrees
+    double coverage = 0.0;    // 0..1
+    double time = 0.0;        // s = length / speed + turns * turn time
+    int cells = 0;            // required cells
+    double graphCost = 0.0;   // from the solver's walk
+    double lowerBound = -1.0; // proven bound on graphCost, < 0 unknown
+    double seconds = 0.0;     // planning time
     // Areas over the free space of the required rooms (all of it, not only the cells that
     // were planned): required = sweepable + unreachable, sweepable = covered + uncovered.
     double requiredArea = 0.0;     // m^2, free area of the required rooms

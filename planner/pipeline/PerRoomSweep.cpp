@@ -212,6 +212,7 @@ PlanResult planWithRoomAngles(const PlanRequest& request,
     }
 
     PlanResult result;
+    double lowerBound = 0.0;
     std::optional<Vec2> start = request.start, home = request.end;
     std::vector<std::string> required;
     for (size_t k = 0; k < order.size(); ++k) {
@@ -246,6 +247,10 @@ PlanResult planWithRoomAngles(const PlanRequest& request,
             result.path.points.push_back(p);
         }
         result.metrics.graphCost += part.solution.graphCost;
+        // The parts' bounds add up: each bounds its own part of the walk.
+        lowerBound = lowerBound >= 0.0 && part.solution.lowerBound >= 0.0
+                         ? lowerBound + part.solution.lowerBound
+                         : -1.0;
         result.metrics.cells +=
             static_cast<int>(std::count(part.query.required.begin(), part.query.required.end(), 1));
         required.insert(required.end(), part.rooms.begin(), part.rooms.end());
@@ -262,6 +267,7 @@ PlanResult planWithRoomAngles(const PlanRequest& request,
     const int cells = result.metrics.cells;
     result.metrics = measurePath(first.prepared, required, result.path);
     result.metrics.graphCost = graphCost;
+    result.metrics.lowerBound = lowerBound;
     result.metrics.cells = cells;
     result.metrics.seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();

@@ -320,6 +320,7 @@ PlanResult planOneAngle(const PlanRequest& request, double angle, const SolveCon
         required = result.prepared.decomposition.roomNames;
     result.metrics = measurePath(result.prepared, required, result.path);
     result.metrics.graphCost = result.solution.graphCost;
+    result.metrics.lowerBound = result.solution.lowerBound;
     result.metrics.seconds = seconds;
     result.metrics.cells =
         static_cast<int>(std::count(result.query.required.begin(), result.query.required.end(), 1));

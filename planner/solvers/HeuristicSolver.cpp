@@ -8,6 +8,7 @@
 #include "solvers/ProxyDistances.h"
 #include "solvers/Solver.h"
 #include "solvers/SolverCommon.h"
+#include "solvers/TourBound.h"
 #include "solvers/TourSearch.h"
 #include "solvers/TransitSearch.h"
 
@@ -56,8 +57,12 @@ Solution solveHeuristic(const CornerGraph& graph, const Query& query, const Solv
     const TransitGraph transit(problem);
     TransitSearch search(transit);
     OrderEvaluator evaluator(transit, search);
-    if (tasks == 0)
-        return finishSolution(graph, query, kName, evaluator.walk({}));
+    if (tasks == 0) {
+        Solution solution = finishSolution(graph, query, kName, evaluator.walk({}));
+        solution.lowerBound = solution.graphCost; // the cheapest transit to the end
+        solution.provenOptimal = true;
+        return solution;
+    }
 
     reportProgress(control, 0.0);
     const bool small = tasks <= kSmallInstance;
@@ -107,6 +112,9 @@ Solution solveHeuristic(const CornerGraph& graph, const Query& query, const Solv
         best = tasksOf(problem, solveGreedy(graph, query).cellOrder);
     }
     Solution solution = finishSolution(graph, query, kName, evaluator.walk(best));
+    solution.lowerBound =
+        std::min(provenLowerBound(transit, search, solution.graphCost), solution.graphCost);
+    solution.provenOptimal = !(solution.lowerBound < solution.graphCost);
     reportProgress(control, 1.0);
     return solution;
 }

@@ -41,6 +41,11 @@ struct Solution {
     // Set by solvers that plan the path themselves instead of a walk (walk stays empty,
     // graphCost 0: they do not walk the corner graph).
     std::optional<DirectPath> directPath;
+    // A proven lower bound on the graph cost of every walk answering the query (negative when
+    // unknown); graphCost / lowerBound - 1 is a true optimality gap. provenOptimal: the walk
+    // is optimal (then lowerBound == graphCost).
+    double lowerBound = -1.0;
+    bool provenOptimal = false;
 };
 
 struct WalkEvaluation {
@@ -66,8 +71,13 @@ struct SolveControl {
 };
 
 struct ExactOptions {
-    std::size_t maxStates = 40'000'000; // (covered set x node) states explored at most
-    int maxRequiredCells = 22;
+    // (covered set x corner) states stored at most (about 40 bytes each); when the search
+    // needs more it stops: it refuses, or with bestOnBudget answers the best walk known
+    // (the heuristic's) with the proven lower bound reached so far.
+    std::size_t maxStates = 25'000'000;
+    int maxRequiredCells = 40; // at most 48 (task sets are 48-bit masks)
+    bool bestOnBudget = false;
+    double timeLimitSeconds = 0.0; // > 0: also stops (as for maxStates) after this long
 };
 
 Solution solveExact(const CornerGraph& graph, const Query& query, const ExactOptions& options = {},

@@ -9,6 +9,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <gtest/gtest.h>
+#include <iterator>
 #include <nlohmann/json.hpp>
 #include <sstream>
 #include <string>
@@ -95,6 +96,16 @@ TEST(PathIO, MetricsLineHasTheSpecKeysInOrder) {
     EXPECT_EQ(object["cells"], 5);
     EXPECT_NEAR(object["coverage"].get<double>(), 0.998765, 1e-12);
     EXPECT_NE(line.find("\"length\":14.1235"), std::string::npos) << line;
+}
+
+TEST(PathIO, MetricsLineShowsAProvenLowerBoundAndGap) {
+    Metrics metrics = exportInfo().metrics;
+    metrics.graphCost = 110.0;
+    metrics.lowerBound = 100.0;
+    const auto object = nlohmann::ordered_json::parse(metricsJsonLine("heuristic", metrics));
+    EXPECT_DOUBLE_EQ(object["lower_bound"].get<double>(), 100.0);
+    EXPECT_NEAR(object["gap"].get<double>(), 0.1, 1e-9);
+    EXPECT_EQ(std::prev(object.end()).key(), "gap"); // after the SPEC keys
 }
 
 TEST(PathIO, CsvHasHeaderOneRowPerWaypointAndHeadings) {

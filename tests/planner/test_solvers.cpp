@@ -3,8 +3,12 @@
 #include "TestGraphs.h"
 #include "formats/PlanIO.h"
 #include "pipeline/Planner.h"
+#include "solvers/FlatHashMap.h"
 #include "solvers/OrderEvaluator.h"
 #include "solvers/Solver.h"
+#include "solvers/SolverCommon.h"
+#include "solvers/TourBound.h"
+#include "solvers/TransitSearch.h"
 
 #include <algorithm>
 #include <chrono>
@@ -14,6 +18,7 @@
 #include <limits>
 #include <queue>
 #include <random>
+#include <tuple>
 
 using namespace fc;
 
@@ -195,6 +200,96 @@ double bruteForceCost(const CornerGraph& g, const Query& q) {
     return best;
 }
 
+// The exact solver as it was before it moved to (covered set x corner) states: A* over
+// (covered set x every node), one edge at a time, with a max-over-cells bound and the greedy
+// walk as incumbent. Kept as an independent reference for the optimum (cost only).
+double nodeLevelOptimum(const CornerGraph& graph, const Query& query) {
+    using namespace fc::solver_detail;
+    const Problem problem = makeProblem(graph, query, "reference");
+    const int tasks = problem.taskCount();
+    const double upper = solveGreedy(graph, query).graphCost * (1.0 + 1e-12) + 1e-9;
+    const TransitGraph transit(problem);
+    TransitSearch search(transit);
+    EdgePrices prices;
+    prices.uncovered.resize(graph.edges.size());
+    for (const GraphEdge& edge : graph.edges) {
+        const bool task = edge.cell >= 0 && problem.taskOfCell[edge.cell] >= 0;
+        prices.uncovered[edge.id] = task ? edgeCost(edge, false) : edgeCost(edge, true);
+    }
+    prices.covered = prices.uncovered;
+    const std::vector<char> anyCoverage = transit.initialCoverage();
+    auto distances = [&](const std::vector<NodeCost>& sources) {
+        search.run(prices, anyCoverage, sources, {});
+        std::vector<double> result(transit.nodeCount());
+        for (int n = 0; n < transit.nodeCount(); ++n)
+            result[n] = search.cost(n);
+        return result;
+    };
+    const std::vector<double> toEnd = distances({{problem.endNode, 0.0}});
+    std::vector<std::vector<double>> toTask;
+    std::vector<double> taskToEnd;
+    for (int task = 0; task < tasks; ++task) {
+        std::vector<NodeCost> corners;
+        double least = kInf;
+        for (const CoverOption& option : problem.options[task]) {
+            corners.push_back({option.entry, 0.0});
+            least = std::min(least, toEnd[option.entry]);
+        }
+        toTask.push_back(distances(corners));
+        taskToEnd.push_back(least);
+    }
+    auto estimate = [&](std::uint64_t uncovered, int node) {
+        double bound = toEnd[node];
+        for (int task = 0; task < tasks; ++task)
+            if ((uncovered >> task) & 1)
+                bound = std::max(bound, toTask[task][node] + taskToEnd[task]);
+        return bound;
+    };
+    std::vector<int> taskOfEdge(graph.edges.size(), -1);
+    for (const GraphEdge& edge : graph.edges)
+        if (edge.cell >= 0)
+            taskOfEdge[edge.id] = problem.taskOfCell[edge.cell];
+    const std::uint64_t all = (std::uint64_t{1} << tasks) - 1;
+    const std::uint64_t nodes = graph.nodes.size();
+    FlatHashMap<double> best(1024);
+    using Item = std::tuple<double, double, std::uint64_t>; // key, cost, state
+    std::priority_queue<Item, std::vector<Item>, std::greater<Item>> heap;
+    auto reach = [&](std::uint64_t covered, int node, double cost) {
+        const double key = cost + estimate(all & ~covered, node);
+        if (!(key <= upper))
+            return;
+        const std::uint64_t state = covered * nodes + static_cast<std::uint64_t>(node);
+        const auto [slot, added] = best.emplace(state, cost);
+        if (!added && cost >= *slot)
+            return;
+        *slot = cost;
+        heap.push({key, cost, state});
+    };
+    reach(0, problem.startNode, 0.0);
+    while (!heap.empty()) {
+        const auto [key, cost, state] = heap.top();
+        heap.pop();
+        if (cost > *best.find(state))
+            continue;
+        const std::uint64_t covered = state / nodes;
+        const int node = static_cast<int>(state % nodes);
+        if (covered == all && node == problem.endNode)
+            return cost;
+        for (int i = transit.adjacencyOffset[node]; i < transit.adjacencyOffset[node + 1]; ++i) {
+            const int e = transit.adjacencyEdge[i];
+            const int task = taskOfEdge[e];
+            const bool uncovered = task >= 0 && !((covered >> task) & 1);
+            if (uncovered && graph.edges[e].kind == EdgeKind::Coverage)
+                reach(covered | (std::uint64_t{1} << task), transit.adjacencyNode[i], cost);
+            else
+                reach(covered, transit.adjacencyNode[i],
+                      cost + (uncovered ? transit.truePrices.uncovered[e]
+                                        : transit.truePrices.covered[e]));
+        }
+    }
+    return solveGreedy(graph, query).graphCost; // only through rounding: greedy is optimal
+}
+
 void expectValid(const CornerGraph& g, const Query& q, const Solution& s) {
     const WalkEvaluation ev = evaluateWalk(g, q, s.walk);
     EXPECT_TRUE(ev.connected) << s.solver;
@@ -301,18 +396,101 @@ TEST(GreedySolver, ValidAndNeverBelowExact) {
 }
 
 TEST(ExactSolver, RefusesAboveItsLimits) {
-    const Instance inst = randomInstance(7, 30, 1.0, 30);
+    const Instance inst = randomInstance(7, 45, 1.0, 45);
     try {
         solveExact(inst.graph, inst.query);
         FAIL() << "expected a refusal";
     } catch (const SolverError& e) {
-        EXPECT_NE(std::string(e.what()).find("30 required cells"), std::string::npos);
+        EXPECT_NE(std::string(e.what()).find("45 required cells"), std::string::npos);
         EXPECT_NE(std::string(e.what()).find("--solver heuristic"), std::string::npos);
     }
-    const Instance small = randomInstance(8, 6, 1.0, 6);
+    const Instance small = randomInstance(8, 10, 1.0, 10);
     ExactOptions tight;
-    tight.maxStates = 100;
-    EXPECT_THROW(solveExact(small.graph, small.query, tight), SolverError);
+    tight.maxStates = 2;
+    try {
+        solveExact(small.graph, small.query, tight);
+        FAIL() << "expected a refusal";
+    } catch (const SolverError& e) {
+        EXPECT_NE(std::string(e.what()).find("no proof of optimality"), std::string::npos)
+            << e.what();
+    }
+    // With bestOnBudget it answers the best walk known and a proven bound instead.
+    tight.bestOnBudget = true;
+    const Solution answered = solveExact(small.graph, small.query, tight);
+    expectValid(small.graph, small.query, answered);
+    const double optimum = solveExact(small.graph, small.query).graphCost;
+    EXPECT_GT(answered.lowerBound, 0.0);
+    EXPECT_LE(answered.lowerBound, optimum + 1e-9);
+    EXPECT_GE(answered.graphCost, optimum - 1e-9);
+    EXPECT_EQ(answered.provenOptimal, answered.lowerBound >= answered.graphCost);
+}
+
+TEST(ExactSolver, SameOptimumAsTheNodeLevelSearchUpToTwelveCells) {
+    for (unsigned seed = 500; seed < 530; ++seed) {
+        const int cells = 4 + static_cast<int>(seed % 9); // 4..12
+        const Instance inst = randomInstance(seed, cells, 0.9, 12);
+        const Solution exact = solveExact(inst.graph, inst.query);
+        expectValid(inst.graph, inst.query, exact);
+        const double reference = nodeLevelOptimum(inst.graph, inst.query);
+        EXPECT_NEAR(exact.graphCost, reference, 1e-9 * (1.0 + reference)) << "seed " << seed;
+        EXPECT_TRUE(exact.provenOptimal);
+        EXPECT_EQ(exact.lowerBound, exact.graphCost);
+    }
+}
+
+TEST(LowerBounds, NeverAboveTheOptimum) {
+    using namespace fc::solver_detail;
+    for (unsigned seed = 600; seed < 640; ++seed) {
+        const Instance inst = randomInstance(seed, 3 + seed % 6, 0.8, 6);
+        const double optimum = bruteForceCost(inst.graph, inst.query);
+        const Solution heuristic = solveHeuristic(inst.graph, inst.query);
+        EXPECT_LE(heuristic.lowerBound, optimum + 1e-9) << "seed " << seed;
+        EXPECT_GE(heuristic.lowerBound, 0.0) << "seed " << seed;
+        EXPECT_EQ(heuristic.provenOptimal, heuristic.lowerBound >= heuristic.graphCost);
+        const Problem problem = makeProblem(inst.graph, inst.query, "test");
+        const TransitGraph transit(problem);
+        TransitSearch search(transit);
+        const double tree = spanningTreeBound(transit, search);
+        EXPECT_LE(tree, optimum + 1e-9) << "seed " << seed;
+        // The penalised tree is at least the plain one.
+        EXPECT_GE(TourBound(transit, search, heuristic.graphCost).root(), tree - 1e-6)
+            << "seed " << seed;
+    }
+}
+
+TEST(LowerBounds, LargeFloorGetsABoundQuickly) {
+    const Instance inst = randomInstance(34, 600, 0.95, 100000);
+    const Solution heuristic = solveHeuristic(inst.graph, inst.query);
+    EXPECT_GT(heuristic.lowerBound, 0.0);
+    EXPECT_LE(heuristic.lowerBound, heuristic.graphCost);
+    using namespace fc::solver_detail;
+    const Problem problem = makeProblem(inst.graph, inst.query, "test");
+    const TransitGraph transit(problem);
+    TransitSearch search(transit);
+    EXPECT_LE(spanningTreeBound(transit, search), heuristic.lowerBound + 1e-6);
+}
+
+TEST(ExactSolver, ProvesTwentySixCellsOfTheWard) {
+    // 26 required cells (rooms S01, N01, S02 and part of N02): optimality proven in a few
+    // seconds (floorcover-exact-bench times it, and larger office queries).
+    const Project project = loadProjectFile(std::string(FC_PLANS_DIR) + "/ward.geojson");
+    RobotProfile robot;
+    robot.robotDiameter = 0.6;
+    robot.coverageWidth = 1.0;
+    robot.cleaningDiameter = 1.0;
+    const PreparedPlan prepared = preparePlan(project.plan, robot, 90.0);
+    std::vector<std::string> warnings;
+    Query query =
+        makeQuery(prepared, {"S01", "N01", "S02", "N02"}, std::nullopt, std::nullopt, 1, warnings);
+    int kept = 0;
+    for (char& required : query.required)
+        if (required && ++kept > 26)
+            required = 0;
+    ASSERT_EQ(std::count(query.required.begin(), query.required.end(), 1), 26);
+    const Solution exact = solveExact(prepared.graph, query);
+    expectValid(prepared.graph, query, exact);
+    EXPECT_TRUE(exact.provenOptimal);
+    EXPECT_LE(exact.graphCost, solveHeuristic(prepared.graph, query).graphCost + 1e-9);
 }
 
 TEST(ExactSolver, RunsFastOnTwelveCells) {
