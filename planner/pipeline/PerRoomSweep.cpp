@@ -5,13 +5,19 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <exception>
+#include <future>
 #include <limits>
 
 namespace fc {
 namespace {
 
-// Plans the per-room search may try beyond the first (each plans the whole floor once).
+// Angle groups the per-room search turns (each try plans the whole floor once), and the
+// largest floor (in rooms) it searches at all; larger floors plan once.
 constexpr size_t kPerRoomSearchLimit = 4;
+constexpr size_t kPerRoomSearchMaxRooms = 60;
+// Screened candidates planned again with the requested solver (besides the family plan).
+constexpr size_t kPerRoomReplans = 2;
 // Distances closer than this (m) are ties: a rotated plan must choose as the upright one.
 constexpr double kTieTolerance = 1e-6;
 
@@ -281,39 +287,109 @@ PlanResult planWithRoomAngles(const PlanRequest& request,
 PlanResult planPerRoom(const PlanRequest& request, const SolveControl& control) {
     request.robot.validate();
     const auto t0 = std::chrono::steady_clock::now();
-    std::map<std::string, double> angles = roomSweepAngles(request.plan, request.sweep);
-    PlanResult best = planWithRoomAngles(request, angles, control);
-    // A short search: turn the stripes of one angle group (rooms without an override) by
-    // 90 degrees at a time, keeping what plans better (complete first, then faster). Walls
-    // decide the family; whether stripes run along or across it depends on the obstacles
-    // and doors, which only planning sees.
-    std::vector<double> tried;
-    for (size_t round = 0; round < 2 * angles.size() && round < kPerRoomSearchLimit; ++round) {
-        std::optional<double> flip;
-        for (const auto& [room, angle] : angles)
-            if (request.sweep.roomAngles.count(room) == 0 &&
-                std::none_of(tried.begin(), tried.end(),
-                             [a = angle](double t) { return angleDistance(a, t) < 0.5; })) {
-                flip = angle;
-                break;
-            }
-        if (!flip)
-            break;
-        tried.push_back(*flip);
-        std::map<std::string, double> turned = angles;
+    const std::map<std::string, double> walls = roomSweepAngles(request.plan, request.sweep);
+    auto free = [&](const std::string& room) { return request.sweep.roomAngles.count(room) == 0; };
+
+    // The groups of the rooms' own angles, the one with the most rooms first.
+    std::vector<std::pair<double, int>> groups; // angle, rooms
+    for (const auto& entry : walls) {
+        auto it = std::find_if(groups.begin(), groups.end(), [&](const auto& g) {
+            return angleDistance(g.first, entry.second) < 0.5;
+        });
+        if (it == groups.end())
+            groups.push_back({entry.second, 1});
+        else
+            ++it->second;
+    }
+    std::stable_sort(groups.begin(), groups.end(),
+                     [](const auto& a, const auto& b) { return a.second > b.second; });
+
+    // First the building's family swept as one: every room of the main group's wall family
+    // (along or across it) at the main group's angle. Sweeping a family in two passes
+    // crosses the building twice (offices, then their corridors), so this is often best.
+    std::map<std::string, double> family = walls;
+    for (auto& [room, angle] : family) {
+        const double d = angleDistance(angle, groups.front().first);
+        if (free(room) && (d < 0.5 || std::abs(d - 90.0) < 0.5))
+            angle = groups.front().first;
+    }
+    // Large floors plan the family alone; small ones search (below).
+    if (request.plan.rooms.size() > kPerRoomSearchMaxRooms) {
+        PlanResult best = planWithRoomAngles(request, family, control);
+        best.metrics.seconds =
+            std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+        return best;
+    }
+
+    // Then, on floors small enough to plan a few times over, each room along its own walls,
+    // and each group of those turned by 90 degrees, keeping what plans better (complete
+    // first, then faster): walls decide the family; whether stripes run along or across it
+    // depends on obstacles and doors, which only planning sees.
+    // Candidates are screened with the greedy solver (fast, and it ranks sweep directions
+    // as the others do); the best is planned with the requested solver.
+    PlanRequest screening = request;
+    screening.solver = "greedy";
+    struct Screened {
+        std::map<std::string, double> angles;
+        Metrics metrics;
+    };
+    std::vector<Screened> screened;
+    auto screen = [&](const std::map<std::string, double>& candidate) {
+        for (const Screened& previous : screened) {
+            bool same = true;
+            for (const auto& [room, angle] : candidate)
+                same = same && angleDistance(angle, previous.angles.at(room)) < 0.5;
+            if (same)
+                return;
+        }
+        screened.push_back({candidate, planWithRoomAngles(screening, candidate, control).metrics});
+    };
+    screen(family);
+    screen(walls);
+    for (size_t g = 0; g < groups.size() && g < kPerRoomSearchLimit; ++g) {
+        std::map<std::string, double> turned = walls;
         for (auto& [room, angle] : turned)
-            if (request.sweep.roomAngles.count(room) == 0 && angleDistance(angle, *flip) < 0.5)
+            if (free(room) && angleDistance(walls.at(room), groups[g].first) < 0.5)
                 angle = normalizedAngle(angle + 90.0);
-        tried.push_back(normalizedAngle(*flip + 90.0));
-        PlanResult candidate = planWithRoomAngles(request, turned, control);
-        if (betterPlanChoice(candidate.metrics, best.metrics)) {
-            best = std::move(candidate);
-            angles = std::move(turned);
+        screen(turned);
+    }
+    std::stable_sort(screened.begin(), screened.end(), [](const Screened& a, const Screened& b) {
+        return betterPlanChoice(a.metrics, b.metrics);
+    });
+    // The family and the best screened candidates, planned with the requested solver side
+    // by side (each plan is independent; only cancellation is shared, and it is atomic).
+    std::vector<std::map<std::string, double>> finalists{family};
+    for (size_t i = 0; i < screened.size() && finalists.size() <= kPerRoomReplans; ++i) {
+        bool isFamily = true;
+        for (const auto& [room, angle] : screened[i].angles)
+            isFamily = isFamily && angleDistance(angle, family.at(room)) < 0.5;
+        if (!isFamily)
+            finalists.push_back(screened[i].angles);
+    }
+    SolveControl quiet;
+    quiet.cancelled = control.cancelled;
+    std::vector<std::future<PlanResult>> plans;
+    for (const auto& finalist : finalists)
+        plans.push_back(std::async(std::launch::async, [&request, finalist, quiet]() {
+            return planWithRoomAngles(request, finalist, quiet);
+        }));
+    std::optional<PlanResult> best;
+    std::exception_ptr failure;
+    for (auto& plan : plans) { // in order, so that ties go to the family plan
+        try {
+            PlanResult result = plan.get();
+            if (!best || betterPlanChoice(result.metrics, best->metrics))
+                best = std::move(result);
+        } catch (...) {
+            if (!failure)
+                failure = std::current_exception();
         }
     }
-    best.metrics.seconds =
+    if (!best)
+        std::rethrow_exception(failure);
+    best->metrics.seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    return best;
+    return std::move(*best);
 }
 
 } // namespace fc
