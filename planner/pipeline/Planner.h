@@ -111,6 +111,12 @@ PlanResult planAtAngle(const PlanRequest& request, double angleDeg,
 Metrics measurePath(const PreparedPlan& prepared, const std::vector<std::string>& requiredRooms,
                     const CoveragePath& path);
 
+// Wall touch-ups (path/CoverageRepair.h) for the floor `metrics` found unswept, within this
+// many coverage widths of the path; path and metrics are replaced when coverage improves.
+inline constexpr double kTouchUpReachInWidths = 4.0;
+void touchUpCoverage(const PreparedPlan& prepared, const std::vector<std::string>& requiredRooms,
+                     CoveragePath& path, Metrics& metrics);
+
 // Per-room (the default), auto or fixed sweep angle, as request.sweep says.
 PlanResult planCoverage(const PlanRequest& request, const SolveControl& control = {});
 

@@ -1,0 +1,184 @@
+#include "path/CoverageRepair.h"
+
+#include "geometry/Clearance.h"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <optional>
+#include <utility>
+
+namespace fc {
+namespace {
+
+// Groups of missed points handled at most (each costs a few clearance queries).
+constexpr size_t kMaxGaps = 4000;
+
+using CellKey = std::pair<long long, long long>;
+
+CellKey keyOf(Vec2 p, double size) {
+    return {static_cast<long long>(std::floor(p.x / size)),
+            static_cast<long long>(std::floor(p.y / size))};
+}
+
+// A stroke of the head: centre c, along u, half length h; it sweeps |along| <= h, |across|
+// <= W/2 around c.
+struct Stroke {
+    Vec2 c, u;
+    double h = 0.0;
+};
+
+bool sweeps(const Stroke& s, Vec2 p, double halfWidth) {
+    const Vec2 d = p - s.c;
+    return std::abs(dot(d, s.u)) <= s.h + 1e-9 && std::abs(cross(s.u, d)) <= halfWidth;
+}
+
+// The clear centre nearest to t from which a head of width W reaches t (t itself when the
+// robot fits there); nullopt when there is none within W/2.
+std::optional<Vec2> centreFor(const ClearanceField& field, Vec2 t, double w) {
+    if (field.isClear(t))
+        return t;
+    for (int ring = 1; ring <= 9; ++ring) {
+        const double rho = 0.05 * w * ring;
+        for (int k = 0; k < 32; ++k) {
+            const double a = 2.0 * M_PI * k / 32.0;
+            const Vec2 c = t + Vec2{std::cos(a), std::sin(a)} * rho;
+            if (field.isClear(c))
+                return c;
+        }
+    }
+    return std::nullopt;
+}
+
+} // namespace
+
+CoverageRepairStats repairCoverage(const Decomposition& dec, CoveragePath& path,
+                                   const std::vector<Vec2>& missed, double maxDetour) {
+    CoverageRepairStats stats;
+    if (missed.empty() || path.points.size() < 2)
+        return stats;
+    const ClearanceField field = clearanceField(dec);
+    const double w = dec.coverageWidth;
+    std::vector<Vec2> local;
+    local.reserve(path.points.size());
+    for (const Vec2& p : path.points)
+        local.push_back(dec.frame.toLocal(p));
+
+    // Missed points grouped on a W/3 grid; each group's point nearest its mean is the target.
+    std::map<CellKey, std::vector<Vec2>> groups;
+    for (const Vec2& p : missed) {
+        const Vec2 q = dec.frame.toLocal(p);
+        groups[keyOf(q, w / 3.0)].push_back(q);
+    }
+    // Path vertices on a grid, to find where to leave the path.
+    const double bucket = std::max(w, maxDetour / 2.0);
+    std::map<CellKey, std::vector<int>> vertices;
+    for (size_t i = 0; i < local.size(); ++i)
+        vertices[keyOf(local[i], bucket)].push_back(static_cast<int>(i));
+
+    std::vector<Stroke> strokes;
+    std::map<int, std::vector<Polyline>> detours; // by the path vertex they leave from
+    for (const auto& [key, points] : groups) {
+        if (static_cast<size_t>(stats.gaps) >= kMaxGaps)
+            break;
+        ++stats.gaps;
+        Vec2 mean;
+        for (const Vec2& p : points)
+            mean = mean + p * (1.0 / points.size());
+        Vec2 target = points.front();
+        for (const Vec2& p : points)
+            if (distance(p, mean) < distance(target, mean))
+                target = p;
+        if (std::any_of(strokes.begin(), strokes.end(),
+                        [&](const Stroke& s) { return sweeps(s, target, 0.5 * w); }))
+            continue;
+        const std::optional<Vec2> centre = centreFor(field, target, w);
+        if (!centre)
+            continue;
+        // Along the wall: across the line from the centre to the target.
+        const Vec2 toTarget = target - *centre;
+        const double reach = norm(toTarget);
+        Vec2 u = reach > 1e-9 ? Vec2{-toTarget.y / reach, toTarget.x / reach} : Vec2{1, 0};
+        // Only a stroke along the wall reaches a target off the centre; a centre on the
+        // target may stroke either way.
+        std::vector<Vec2> directions{u};
+        if (reach <= 1e-9)
+            directions.push_back({-u.y, u.x});
+        std::optional<Stroke> stroke;
+        for (double h : {0.25 * w, 0.125 * w, 0.05 * w}) {
+            for (const Vec2& dir : directions) {
+                if (field.segmentIsClear(*centre - dir * h, *centre + dir * h)) {
+                    stroke = Stroke{*centre, dir, h};
+                    break;
+                }
+            }
+            if (stroke)
+                break;
+        }
+        if (!stroke || !sweeps(*stroke, target, 0.5 * w))
+            continue;
+        const Vec2 a = stroke->c - stroke->u * stroke->h, b = stroke->c + stroke->u * stroke->h;
+
+        // Leave from the nearest path vertex that a short clear route joins to the stroke.
+        std::vector<std::pair<double, int>> near;
+        const CellKey home = keyOf(a, bucket);
+        for (long long dx = -1; dx <= 1; ++dx)
+            for (long long dy = -1; dy <= 1; ++dy) {
+                auto it = vertices.find({home.first + dx, home.second + dy});
+                if (it == vertices.end())
+                    continue;
+                for (int i : it->second)
+                    if (distance(local[i], a) <= maxDetour)
+                        near.push_back({distance(local[i], a), i});
+            }
+        std::sort(near.begin(), near.end());
+        Polyline route;
+        int from = -1;
+        for (size_t k = 0; k < near.size() && k < 6 && route.empty(); ++k) {
+            const Vec2 v = local[near[k].second];
+            if (field.segmentIsClear(v, a))
+                route = {v, a};
+            else
+                route = field.findPath(v, a, {}, maxDetour);
+            if (!route.empty() && polylineLength(route) > maxDetour)
+                route.clear();
+            if (!route.empty())
+                from = near[k].second;
+        }
+        if (route.empty())
+            continue;
+        Polyline detour(route.begin() + 1, route.end()); // from the vertex to a
+        detour.push_back(b);
+        detour.push_back(a);
+        detour.insert(detour.end(), route.rbegin() + 1, route.rend()); // back to the vertex
+        stats.added += 2.0 * polylineLength(route) + 2.0 * distance(a, b);
+        ++stats.touchUps;
+        strokes.push_back(*stroke);
+        detours[from].push_back(std::move(detour));
+    }
+    if (detours.empty())
+        return stats;
+
+    CoveragePath out;
+    auto add = [&out](Vec2 p, SegmentKind kind) {
+        if (!out.points.empty()) {
+            if (distance(out.points.back(), p) < 1e-9)
+                return;
+            out.kinds.push_back(kind);
+        }
+        out.points.push_back(p);
+    };
+    for (size_t i = 0; i < local.size(); ++i) {
+        add(path.points[i], i == 0 ? SegmentKind::Transit : path.kinds[i - 1]);
+        if (auto it = detours.find(static_cast<int>(i)); it != detours.end())
+            for (const Polyline& detour : it->second) {
+                for (size_t j = 0; j + 1 < detour.size(); ++j)
+                    add(dec.frame.toWorld(detour[j]), SegmentKind::Contour);
+                add(path.points[i], SegmentKind::Contour); // back on the path, exactly
+            }
+    }
+    path = std::move(out);
+    return stats;
+}
+
+} // namespace fc

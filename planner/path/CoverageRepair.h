@@ -1,0 +1,27 @@
+// Wall touch-ups (SPEC sect. 6, issue 13 item 4): where the stripes and their seals leave
+// sweepable floor unswept (wedges under slanted walls, around round pillars, in star-shaped
+// rooms), the robot leaves its path for a short stroke along the wall, as a robot vacuum's
+// edge mode does, and comes back the same way.
+#pragma once
+
+#include "decomposition/Decomposition.h"
+#include "path/CoveragePath.h"
+
+#include <vector>
+
+namespace fc {
+
+struct CoverageRepairStats {
+    int gaps = 0;       // groups of missed floor found
+    int touchUps = 0;   // strokes added
+    double added = 0.0; // path length added, m
+};
+
+// Adds a touch-up for each group of `missed` points (world frame, e.g. Metrics::uncovered)
+// that a clear stroke within `maxDetour` of the path can sweep. Every added piece keeps the
+// robot L/2 from walls. The path stays a valid world-frame path; its metrics must be
+// computed again.
+CoverageRepairStats repairCoverage(const Decomposition& dec, CoveragePath& path,
+                                   const std::vector<Vec2>& missed, double maxDetour);
+
+} // namespace fc
