@@ -109,8 +109,8 @@ QWidget* PlanningDock::createSweepGroup() {
            "override it). Auto: tries several angles for the whole floor and keeps the fastest "
            "plan that covers everything the robot can reach. One angle: the stripe angle "
            "below for every room."));
-    roomAngles_ = new QTableWidget(0, 2);
-    roomAngles_->setHorizontalHeaderLabels({tr("Room"), tr("Angle")});
+    roomAngles_ = new QTableWidget(0, 3);
+    roomAngles_->setHorizontalHeaderLabels({tr("Room"), tr("From walls"), tr("Fixed")});
     roomAngles_->horizontalHeader()->setStretchLastSection(true);
     roomAngles_->verticalHeader()->hide();
     roomAngles_->setMaximumHeight(140);
@@ -221,32 +221,38 @@ void PlanningDock::refreshRoomAngles() {
         roomAngles_->setRowCount(0);
         for (size_t i = 0; i < rooms.size(); ++i) {
             roomAngles_->insertRow(static_cast<int>(i));
-            auto* name = new QTableWidgetItem;
-            name->setFlags(name->flags() & ~Qt::ItemIsEditable);
-            roomAngles_->setItem(static_cast<int>(i), 0, name);
-            roomAngles_->setItem(static_cast<int>(i), 1, new QTableWidgetItem);
+            for (int column : {0, 1}) {
+                auto* readOnly = new QTableWidgetItem;
+                readOnly->setFlags(readOnly->flags() & ~Qt::ItemIsEditable);
+                roomAngles_->setItem(static_cast<int>(i), column, readOnly);
+            }
+            roomAngles_->setItem(static_cast<int>(i), 2, new QTableWidgetItem);
         }
     }
     if (!document_)
         return;
     const Project& project = document_->project();
     roomAngles_->setEnabled(project.sweep.perRoom && !project.sweep.automatic);
-    const std::map<std::string, double> angles = roomSweepAngles(project.plan, project.sweep);
+    SweepOptions wallsOnly = project.sweep;
+    wallsOnly.roomAngles.clear();
+    const std::map<std::string, double> walls = roomSweepAngles(project.plan, wallsOnly);
     const QLocale locale;
     for (size_t i = 0; i < rooms.size(); ++i) {
         const std::string& room = rooms[i].name;
-        const QString degrees = locale.toString(angles.at(room), 'f', 1);
-        roomAngles_->item(static_cast<int>(i), 0)->setText(fromStd(room));
-        QTableWidgetItem* angle = roomAngles_->item(static_cast<int>(i), 1);
-        // An empty cell follows the room's walls; its tooltip says at which angle.
-        angle->setText(project.sweep.roomAngles.count(room) ? degrees : QString());
-        angle->setToolTip(tr("From the walls: %1°").arg(degrees));
-        angle->setData(Qt::UserRole, fromStd(room));
+        const int row = static_cast<int>(i);
+        roomAngles_->item(row, 0)->setText(fromStd(room));
+        roomAngles_->item(row, 1)->setText(tr("%1°").arg(locale.toString(walls.at(room), 'f', 1)));
+        // An empty "Fixed" cell follows the room's walls.
+        QTableWidgetItem* fixed = roomAngles_->item(row, 2);
+        auto it = project.sweep.roomAngles.find(room);
+        fixed->setText(it != project.sweep.roomAngles.end() ? locale.toString(it->second, 'f', 1)
+                                                            : QString());
+        fixed->setData(Qt::UserRole, fromStd(room));
     }
 }
 
 void PlanningDock::roomAngleEdited(QTableWidgetItem* item) {
-    if (!document_ || item->column() != 1)
+    if (!document_ || item->column() != 2)
         return;
     SweepOptions sweep = document_->project().sweep;
     const std::string room = item->data(Qt::UserRole).toString().toStdString();

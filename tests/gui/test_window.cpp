@@ -1,4 +1,4 @@
-// Window-level behaviour: the automatic sweep angle, recent files, preferences.
+// Window-level behaviour: the sweep modes and per-room angles, recent files, preferences.
 #include "EditorFixture.h"
 #include "PlanScene.h"
 #include "PlanningController.h"
@@ -14,6 +14,7 @@
 #include <QMenuBar>
 #include <QMimeData>
 #include <QStandardPaths>
+#include <QTableWidget>
 #include <QTemporaryDir>
 #include <QUndoStack>
 
@@ -29,6 +30,8 @@ private:
 private slots:
     void initTestCase();
     void autoAngleIsOneOfTheCandidates();
+    void perRoomAnglesFollowWallsAndOverridesAreUndoable();
+    void lossesShowInTheMetricsPanel();
     void savedFileAppearsInRecentFiles();
     void preferencesStoreTheLanguage();
     void newDocumentStartsWithTheBoundaryTool();
@@ -58,6 +61,50 @@ void WindowTest::autoAngleIsOneOfTheCandidates() {
                 .startsWith(QLocale().toString(angle, 'f', 1)));
     window->document()->undoStack()->undo();
     QCOMPARE(window->planningDock()->sweepModeBox()->currentIndex(), 0); // per room again
+}
+
+void WindowTest::perRoomAnglesFollowWallsAndOverridesAreUndoable() {
+    auto window = makeWindow();
+    QVERIFY(window->openFile(QStringLiteral(FC_PLANS_DIR "/office.geojson")));
+    PlanningDock* dock = window->planningDock();
+    QCOMPARE(dock->sweepModeBox()->currentIndex(), 0); // per room is the default
+    QTableWidget* table = dock->roomAngleTable();
+    QCOMPARE(table->rowCount(), 13);
+    int corridor = -1;
+    for (int row = 0; row < table->rowCount(); ++row)
+        if (table->item(row, 0)->text() == QStringLiteral("Corridor"))
+            corridor = row;
+    QVERIFY(corridor >= 0);
+    // The corridor runs across the offices: its walls give it the other direction.
+    QVERIFY(table->item(corridor, 1)->text() != table->item(0, 1)->text());
+    QVERIFY(table->item(corridor, 2)->text().isEmpty());
+    table->item(corridor, 2)->setText(QLocale().toString(45.0, 'f', 1));
+    QCOMPARE(window->document()->project().sweep.roomAngles.at("Corridor"), 45.0);
+    QVERIFY(window->planningController()->planAndWait());
+    const auto result = window->planningController()->result();
+    bool at45 = false;
+    for (const fc::PlanPart& part : result->parts)
+        at45 |= std::abs(part.stripeAngleDeg - 45.0) < 1e-9;
+    QVERIFY(at45);
+    window->document()->undoStack()->undo();
+    QVERIFY(window->document()->project().sweep.roomAngles.empty());
+    QVERIFY(table->item(corridor, 2)->text().isEmpty());
+    // A word that is not an angle is refused and says so.
+    table->item(corridor, 2)->setText(QStringLiteral("north"));
+    QVERIFY(window->document()->project().sweep.roomAngles.empty());
+}
+
+void WindowTest::lossesShowInTheMetricsPanel() {
+    auto window = makeWindow();
+    QVERIFY(window->openFile(QStringLiteral(FC_TEST_DATA_DIR "/door-0.5m.geojson")));
+    window->document()->setStart(fc::Vec2{1, 1});
+    QVERIFY(window->planningController()->planAndWait());
+    // The east room lies behind a door narrower than the robot: half the floor uncovered.
+    const QString uncovered = window->planningDock()->metricText(QStringLiteral("uncovered"));
+    QVERIFY2(uncovered.contains(QStringLiteral("m²")), qPrintable(uncovered));
+    const auto result = window->planningController()->result();
+    QVERIFY(result->metrics.uncoveredArea > 25.0);
+    QVERIFY(!result->warnings.empty());
 }
 
 void WindowTest::savedFileAppearsInRecentFiles() {
