@@ -997,10 +997,6 @@ Abdeckungspfadplanung für Reinigungs- und Desinfektionsroboter.</translation>
         <translation>°</translation>
     </message>
     <message>
-        <source>Auto (shortest path)</source>
-        <translation>Automatisch (kürzester Pfad)</translation>
-    </message>
-    <message>
         <source>Stripe angle</source>
         <translation>Bahnwinkel</translation>
     </message>
@@ -1067,6 +1063,54 @@ Abdeckungspfadplanung für Reinigungs- und Desinfektionsroboter.</translation>
     <message>
         <source>Draw the boundary of the floor to see cells and plan a path.</source>
         <translation>Zeichnen Sie die Außenwand der Fläche, um Zellen zu sehen und einen Pfad zu planen.</translation>
+    </message>
+    <message>
+        <source>Per room, along its walls</source>
+        <translation>Je Raum, entlang seiner Wände</translation>
+    </message>
+    <message>
+        <source>Auto: fastest full coverage</source>
+        <translation>Automatisch: schnellste volle Abdeckung</translation>
+    </message>
+    <message>
+        <source>One angle for the floor</source>
+        <translation>Ein Winkel für die ganze Etage</translation>
+    </message>
+    <message>
+        <source>Per room: each room&apos;s stripes follow its own walls (set a room&apos;s angle below to override it). Auto: tries several angles for the whole floor and keeps the fastest plan that covers everything the robot can reach. One angle: the stripe angle below for every room.</source>
+        <translation>Je Raum: die Bahnen jedes Raums folgen seinen eigenen Wänden (unten lässt sich der Winkel eines Raums festlegen). Automatisch: probiert mehrere Winkel für die ganze Etage und behält den schnellsten Plan, der alles abdeckt, was der Roboter erreichen kann. Ein Winkel: der Bahnwinkel unten für jeden Raum.</translation>
+    </message>
+    <message>
+        <source>Room</source>
+        <translation>Raum</translation>
+    </message>
+    <message>
+        <source>From walls</source>
+        <translation>Aus den Wänden</translation>
+    </message>
+    <message>
+        <source>Fixed</source>
+        <translation>Festgelegt</translation>
+    </message>
+    <message>
+        <source>Type an angle in degrees to fix a room&apos;s stripes; clear it to follow the room&apos;s walls again.</source>
+        <translation>Einen Winkel in Grad eingeben, um die Bahnen eines Raums festzulegen; leeren, um wieder den Wänden des Raums zu folgen.</translation>
+    </message>
+    <message>
+        <source>Uncovered</source>
+        <translation>Nicht abgedeckt</translation>
+    </message>
+    <message>
+        <source>Unreachable</source>
+        <translation>Unerreichbar</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; is not an angle in degrees.</source>
+        <translation>„%1“ ist kein Winkel in Grad.</translation>
+    </message>
+    <message>
+        <source>%1 m² (%2 %)</source>
+        <translation>%1 m² (%2 %)</translation>
     </message>
 </context>
 <context>

@@ -997,10 +997,6 @@ Planification de trajets de couverture pour robots de nettoyage et de désinfect
         <translation>°</translation>
     </message>
     <message>
-        <source>Auto (shortest path)</source>
-        <translation>Automatique (trajet le plus court)</translation>
-    </message>
-    <message>
         <source>Stripe angle</source>
         <translation>Angle des bandes</translation>
     </message>
@@ -1067,6 +1063,54 @@ Planification de trajets de couverture pour robots de nettoyage et de désinfect
     <message>
         <source>Draw the boundary of the floor to see cells and plan a path.</source>
         <translation>Dessinez le contour de la surface pour voir les cellules et planifier un trajet.</translation>
+    </message>
+    <message>
+        <source>Per room, along its walls</source>
+        <translation>Par pièce, le long de ses murs</translation>
+    </message>
+    <message>
+        <source>Auto: fastest full coverage</source>
+        <translation>Auto : couverture complète la plus rapide</translation>
+    </message>
+    <message>
+        <source>One angle for the floor</source>
+        <translation>Un angle pour tout l’étage</translation>
+    </message>
+    <message>
+        <source>Per room: each room&apos;s stripes follow its own walls (set a room&apos;s angle below to override it). Auto: tries several angles for the whole floor and keeps the fastest plan that covers everything the robot can reach. One angle: the stripe angle below for every room.</source>
+        <translation>Par pièce : les bandes de chaque pièce suivent ses propres murs (fixez ci-dessous l’angle d’une pièce pour l’imposer). Auto : essaie plusieurs angles pour tout l’étage et garde le plan le plus rapide qui couvre tout ce que le robot peut atteindre. Un angle : l’angle des bandes ci-dessous pour chaque pièce.</translation>
+    </message>
+    <message>
+        <source>Room</source>
+        <translation>Pièce</translation>
+    </message>
+    <message>
+        <source>From walls</source>
+        <translation>Selon les murs</translation>
+    </message>
+    <message>
+        <source>Fixed</source>
+        <translation>Imposé</translation>
+    </message>
+    <message>
+        <source>Type an angle in degrees to fix a room&apos;s stripes; clear it to follow the room&apos;s walls again.</source>
+        <translation>Saisissez un angle en degrés pour imposer les bandes d’une pièce ; effacez-le pour suivre à nouveau ses murs.</translation>
+    </message>
+    <message>
+        <source>Uncovered</source>
+        <translation>Non couvert</translation>
+    </message>
+    <message>
+        <source>Unreachable</source>
+        <translation>Inaccessible</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; is not an angle in degrees.</source>
+        <translation>« %1 » n’est pas un angle en degrés.</translation>
+    </message>
+    <message>
+        <source>%1 m² (%2 %)</source>
+        <translation>%1 m² (%2 %)</translation>
     </message>
 </context>
 <context>
