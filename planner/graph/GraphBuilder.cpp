@@ -2,6 +2,7 @@
 // cell, two per transition cell, coverage pairs by stripe parity, contour-following edges
 // and inter-cell edges with collision-free geometry.
 #include "decomposition/StripePlanner.h"
+#include "graph/ComponentBridges.h"
 #include "graph/CornerGraph.h"
 
 #include <algorithm>
@@ -20,8 +21,7 @@ struct StripeRun {
 
 class GraphBuilder {
 public:
-    explicit GraphBuilder(const Decomposition& dec)
-        : dec_(dec), field_(clearanceField(dec)) {}
+    explicit GraphBuilder(const Decomposition& dec) : dec_(dec), field_(clearanceField(dec)) {}
 
     CornerGraph build() {
         graph_.cells.resize(dec_.cells.size());
@@ -283,7 +283,9 @@ private:
 } // namespace
 
 CornerGraph buildCornerGraph(const Decomposition& decomposition) {
-    return GraphBuilder(decomposition).build();
+    CornerGraph graph = GraphBuilder(decomposition).build();
+    bridgeComponents(graph, clearanceField(decomposition));
+    return graph;
 }
 
 } // namespace fc

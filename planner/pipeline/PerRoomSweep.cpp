@@ -342,7 +342,12 @@ PlanResult planPerRoom(const PlanRequest& request, const SolveControl& control) 
             if (same)
                 return;
         }
-        screened.push_back({candidate, planWithRoomAngles(screening, candidate, control).metrics});
+        try {
+            screened.push_back(
+                {candidate, planWithRoomAngles(screening, candidate, control).metrics});
+        } catch (const InputError&) {
+            // e.g. one group's rooms cannot be reached from the start at its angle
+        }
     };
     screen(family);
     screen(walls);

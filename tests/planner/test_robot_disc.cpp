@@ -3,6 +3,7 @@
 // sweeps along its own walls so that a plan drawn at any rotation plans the same.
 #include "formats/PlanIO.h"
 #include "geometry/SegmentIndex.h"
+#include "graph/ComponentBridges.h"
 #include "pipeline/PerRoomSweep.h"
 #include "pipeline/Planner.h"
 
@@ -192,3 +193,29 @@ TEST_P(RotatedSamplePlans, PlanWithinOnePercentOfTheUprightPlan) {
 
 INSTANTIATE_TEST_SUITE_P(Issue13, RotatedSamplePlans,
                          ::testing::Values("simple", "room-obstacle", "room-notches"));
+
+TEST(ComponentBridges, JoinsPartsTheRobotCanDriveBetweenAndNoOthers) {
+    // Two corners in one 10 x 4 room, an obstacle between them with a 0.8 m passage above
+    // it: the disc (0.6 m) drives round; with the passage closed to 0.4 m it cannot.
+    for (const auto& [gap, joined] : {std::pair{0.8, true}, std::pair{0.4, false}}) {
+        const std::vector<Ring> free{box(0, 0, 10, 4),
+                                     {{4, 0.5}, {4, 4 - gap}, {6, 4 - gap}, {6, 0.5}}};
+        // The obstacle ring touches nothing; the lower passage (0.5 m) is too narrow too.
+        const ClearanceField field(free, 0.3, 0.5);
+        CornerGraph graph;
+        for (int c = 0; c < 2; ++c) {
+            GraphCell cell;
+            cell.id = c;
+            graph.cells.push_back(cell);
+        }
+        graph.addNode(0, CornerKind::Bottom, {1, 1});
+        graph.addNode(1, CornerKind::Bottom, {9, 1});
+        EXPECT_EQ(bridgeComponents(graph, field), joined ? 1 : 0) << gap;
+        if (joined) {
+            ASSERT_EQ(graph.edges.size(), 1u);
+            const Polyline& line = graph.edges[0].geometry;
+            EXPECT_TRUE(field.polylineIsClear(line));
+            EXPECT_GT(graph.edges[0].length, 8.0);
+        }
+    }
+}
