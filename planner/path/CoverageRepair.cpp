@@ -95,29 +95,34 @@ CoverageRepairStats repairCoverage(const Decomposition& dec, CoveragePath& path,
         const std::optional<Vec2> centre = centreFor(field, target, w);
         if (!centre)
             continue;
-        // Along the wall: across the line from the centre to the target.
+        // A stroke through the centre along the wall (across the line to the target) when
+        // it is clear; pinned in a corner, a one-sided stroke from the centre in any
+        // direction whose sweep still holds the target (any direction does: the target lies
+        // within W/2 of the centre, so it only has to fall within the stroke's length).
         const Vec2 toTarget = target - *centre;
         const double reach = norm(toTarget);
-        Vec2 u = reach > 1e-9 ? Vec2{-toTarget.y / reach, toTarget.x / reach} : Vec2{1, 0};
-        // Only a stroke along the wall reaches a target off the centre; a centre on the
-        // target may stroke either way.
-        std::vector<Vec2> directions{u};
-        if (reach <= 1e-9)
-            directions.push_back({-u.y, u.x});
-        std::optional<Stroke> stroke;
-        for (double h : {0.25 * w, 0.125 * w, 0.05 * w}) {
-            for (const Vec2& dir : directions) {
-                if (field.segmentIsClear(*centre - dir * h, *centre + dir * h)) {
-                    stroke = Stroke{*centre, dir, h};
-                    break;
-                }
-            }
-            if (stroke)
-                break;
+        const Vec2 u = reach > 1e-9 ? Vec2{-toTarget.y / reach, toTarget.x / reach} : Vec2{1, 0};
+        std::optional<std::pair<Vec2, Vec2>> ends;
+        for (double h : {0.25 * w, 0.125 * w, 0.05 * w})
+            if (!ends && field.segmentIsClear(*centre - u * h, *centre + u * h))
+                ends = std::pair{*centre - u * h, *centre + u * h};
+        for (int k = 0; k < 16 && !ends; ++k) {
+            const double angle = 2.0 * M_PI * k / 16.0;
+            const Vec2 v{std::cos(angle), std::sin(angle)};
+            const double along = dot(toTarget, v);
+            if (along < -1e-9)
+                continue;
+            const double h = std::max(0.05 * w, along + 0.02 * w);
+            if (field.segmentIsClear(*centre, *centre + v * h))
+                ends = std::pair{*centre, *centre + v * h};
         }
-        if (!stroke || !sweeps(*stroke, target, 0.5 * w))
+        if (!ends)
             continue;
-        const Vec2 a = stroke->c - stroke->u * stroke->h, b = stroke->c + stroke->u * stroke->h;
+        const Vec2 a = ends->first, b = ends->second;
+        const double strokeLength = distance(a, b);
+        const Stroke stroke{(a + b) * 0.5, (b - a) * (1.0 / strokeLength), 0.5 * strokeLength};
+        if (!sweeps(stroke, target, 0.5 * w))
+            continue;
 
         // Leave from the nearest path vertex that a short clear route joins to the stroke.
         std::vector<std::pair<double, int>> near;
@@ -153,7 +158,7 @@ CoverageRepairStats repairCoverage(const Decomposition& dec, CoveragePath& path,
         detour.insert(detour.end(), route.rbegin() + 1, route.rend()); // back to the vertex
         stats.added += 2.0 * polylineLength(route) + 2.0 * distance(a, b);
         ++stats.touchUps;
-        strokes.push_back(*stroke);
+        strokes.push_back(stroke);
         detours[from].push_back(std::move(detour));
     }
     if (detours.empty())

@@ -285,16 +285,19 @@ std::vector<double> candidateAngles(const Plan& plan) {
 
 void touchUpCoverage(const PreparedPlan& prepared, const std::vector<std::string>& requiredRooms,
                      CoveragePath& path, Metrics& metrics) {
-    if (metrics.uncovered.empty() || metrics.uncoveredArea <= 0.0)
-        return;
-    CoveragePath repaired = path;
-    const CoverageRepairStats stats =
-        repairCoverage(prepared.decomposition, repaired, metrics.uncovered,
-                       kTouchUpReachInWidths * prepared.robot.coverageWidth);
-    if (stats.touchUps == 0)
-        return;
-    Metrics after = measurePath(prepared, requiredRooms, repaired);
-    if (after.coveredArea > metrics.coveredArea) {
+    // A second round reaches what the first round's strokes uncovered only in part.
+    for (int round = 0; round < kTouchUpRounds; ++round) {
+        if (metrics.uncovered.empty() || metrics.uncoveredArea <= 0.0)
+            return;
+        CoveragePath repaired = path;
+        const CoverageRepairStats stats =
+            repairCoverage(prepared.decomposition, repaired, metrics.uncovered,
+                           kTouchUpReachInWidths * prepared.robot.coverageWidth);
+        if (stats.touchUps == 0)
+            return;
+        Metrics after = measurePath(prepared, requiredRooms, repaired);
+        if (!(after.coveredArea > metrics.coveredArea))
+            return;
         path = std::move(repaired);
         metrics = std::move(after);
     }

@@ -114,6 +114,7 @@ Metrics measurePath(const PreparedPlan& prepared, const std::vector<std::string>
 // Wall touch-ups (path/CoverageRepair.h) for the floor `metrics` found unswept, within this
 // many coverage widths of the path; path and metrics are replaced when coverage improves.
 inline constexpr double kTouchUpReachInWidths = 4.0;
+inline constexpr int kTouchUpRounds = 2;
 void touchUpCoverage(const PreparedPlan& prepared, const std::vector<std::string>& requiredRooms,
                      CoveragePath& path, Metrics& metrics);
 

@@ -571,7 +571,9 @@ TEST(Solvers, ExplainUnreachableCellsAndEnds) {
     }
 }
 
-TEST(HeuristicSolver, LargeGridGraphIsFastAndValid) {
+// Speed is measured by floorcover-bench and floorcover-exact-bench; here only a guard
+// against a hang, generous enough for a loaded two-core machine.
+TEST(HeuristicSolver, LargeGridGraphIsValidAndFinishes) {
     const Instance inst = randomInstance(33, 1000, 0.95, 100000);
     const auto start = std::chrono::steady_clock::now();
     const Solution heuristic = solveHeuristic(inst.graph, inst.query);
@@ -579,7 +581,9 @@ TEST(HeuristicSolver, LargeGridGraphIsFastAndValid) {
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     expectValid(inst.graph, inst.query, heuristic);
     EXPECT_LE(heuristic.graphCost, solveGreedy(inst.graph, inst.query).graphCost);
-    EXPECT_LT(seconds, 10.0);
+    EXPECT_GE(heuristic.lowerBound, 0.0);
+    EXPECT_LE(heuristic.lowerBound, heuristic.graphCost + 1e-9);
+    EXPECT_LT(seconds, 120.0);
 }
 
 TEST(HeuristicSolver, IncrementalOrderCostsMatchFullEvaluation) {
