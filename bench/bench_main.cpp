@@ -153,7 +153,7 @@ int main(int argc, char** argv) {
               << "W = 1 m, L = 0.6 m, sweep angle 90°, all rooms, start and end at the default "
                  "corner. Times in seconds: *decompose* includes validation; *total* is "
                  "decomposition + graph + solver + path synthesis. Coverage is measured on a "
-                 "W/10 raster (SPEC sect. 6).\n\n"
+                 "W/20 raster (SPEC sect. 6).\n\n"
               << "| plan | cells | nodes | decompose s | graph s | solver | solve s | total s "
                  "| length m | extra m | turns | coverage | graph cost |\n"
               << "|---|---:|---:|---:|---:|---|---:|---:|---:|---:|---:|---:|---:|\n";
