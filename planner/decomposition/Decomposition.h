@@ -65,7 +65,7 @@ struct UnreachableArea {
 struct Decomposition {
     Frame frame;
     double coverageWidth = 1.0;
-    double clearanceRadius = 0.5; // L/2: how far the robot centre keeps from walls
+    double clearanceRadius = 0.5;       // L/2: how far the robot centre keeps from walls
     std::vector<std::string> roomNames; // "Floor" when the plan has no rooms
     std::vector<Cell> cells;
     std::vector<Adjacency> adjacencies;
