@@ -50,11 +50,16 @@ double angleFromWalls(const Plan& walls, const Ring& outline) {
     return alongLongerExtent(outline, families.empty() ? 0.0 : families.front());
 }
 
+// Computed relative to the first vertex: with UTM-sized coordinates the cross products of
+// raw coordinates cancel catastrophically.
 Vec2 centroidOf(const Ring& ring) {
+    if (ring.empty())
+        return {};
+    const Vec2 origin = ring.front();
     double area = 0.0;
     Vec2 sum;
     for (size_t i = 0; i < ring.size(); ++i) {
-        const Vec2 a = ring[i], b = ring[(i + 1) % ring.size()];
+        const Vec2 a = ring[i] - origin, b = ring[(i + 1) % ring.size()] - origin;
         const double c = cross(a, b);
         area += c;
         sum = sum + (a + b) * c;
@@ -62,10 +67,10 @@ Vec2 centroidOf(const Ring& ring) {
     if (std::abs(area) < 1e-12) {
         Vec2 mean;
         for (const Vec2& p : ring)
-            mean = mean + p * (1.0 / std::max<size_t>(1, ring.size()));
-        return mean;
+            mean = mean + (p - origin) * (1.0 / ring.size());
+        return origin + mean;
     }
-    return sum * (1.0 / (3.0 * area));
+    return origin + sum * (1.0 / (3.0 * area));
 }
 
 struct Group {
@@ -81,7 +86,9 @@ Vec2 worldOf(const PreparedPlan& prepared, int node) {
 }
 
 // The corner of a required cell of `group` nearest to `target` (world frame).
-Vec2 entryPoint(const Group& group, Vec2 target) {
+// Equally near corners (a symmetric building) go to the one nearest to `away` (where
+// this part starts), so that the choice is the same at any rotation of the plan.
+Vec2 entryPoint(const Group& group, Vec2 target, Vec2 away) {
     const Decomposition& dec = group.prepared.decomposition;
     const CornerGraph& g = group.prepared.graph;
     double best = INFINITY;
@@ -92,10 +99,12 @@ Vec2 entryPoint(const Group& group, Vec2 target) {
             std::find(group.rooms.begin(), group.rooms.end(), room) == group.rooms.end())
             continue;
         for (int node : cell.nodes) {
-            // Ties (corners equally far) go to the first, whatever the plan's rotation.
             const Vec2 p = worldOf(group.prepared, node);
-            if (distance(p, target) < best - kTieTolerance)
-                best = distance(p, target), out = p;
+            const double d = distance(p, target);
+            if (d < best - kTieTolerance ||
+                (d <= best + kTieTolerance &&
+                 distance(p, away) < distance(out, away) - kTieTolerance))
+                best = std::min(best, d), out = p;
         }
     }
     return out;
@@ -229,9 +238,18 @@ PlanResult planWithRoomAngles(const PlanRequest& request,
         part.rooms = group.rooms;
         // Each part ends at the next group's nearest corner; the last one at the end point,
         // or back where the first part started.
+        Vec2 from;
+        if (start) {
+            from = *start;
+        } else { // the default start corner, found before the end is known
+            std::vector<std::string> ignored;
+            from = worldOf(part.prepared, makeQuery(part.prepared, part.rooms, start, std::nullopt,
+                                                    request.seed, ignored)
+                                              .startNode);
+        }
         const std::optional<Vec2> end =
             k + 1 < order.size()
-                ? std::optional<Vec2>(entryPoint(groups[order[k + 1]], group.centre))
+                ? std::optional<Vec2>(entryPoint(groups[order[k + 1]], group.centre, from))
                 : home;
         part.query =
             makeQuery(part.prepared, part.rooms, start, end, request.seed, result.warnings);

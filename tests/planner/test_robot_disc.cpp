@@ -192,7 +192,7 @@ TEST_P(RotatedSamplePlans, PlanWithinOnePercentOfTheUprightPlan) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Issue13, RotatedSamplePlans,
-                         ::testing::Values("simple", "room-obstacle", "room-notches"));
+                         ::testing::Values("simple", "room-obstacle", "room-notches", "office"));
 
 TEST(ComponentBridges, JoinsPartsTheRobotCanDriveBetweenAndNoOthers) {
     // Two corners in one 10 x 4 room, an obstacle between them with a 0.8 m passage above
