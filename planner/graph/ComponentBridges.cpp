@@ -10,7 +10,9 @@ namespace {
 constexpr size_t kPairsTried = 6;
 constexpr size_t kMaxPairScan = 4'000'000;
 
-std::vector<int> componentsOf(const CornerGraph& g, int& count) {
+} // namespace
+
+std::vector<int> graphComponents(const CornerGraph& g, int& count) {
     std::vector<int> comp(g.nodes.size(), -1);
     count = 0;
     for (size_t s = 0; s < g.nodes.size(); ++s) {
@@ -35,11 +37,9 @@ std::vector<int> componentsOf(const CornerGraph& g, int& count) {
     return comp;
 }
 
-} // namespace
-
 int bridgeComponents(CornerGraph& graph, const ClearanceField& field) {
     int count = 0;
-    std::vector<int> comp = componentsOf(graph, count);
+    std::vector<int> comp = graphComponents(graph, count);
     if (count < 2)
         return 0;
     // Corners of reachable cells, by component; the largest component is the trunk.

@@ -6,7 +6,12 @@
 #include "geometry/Clearance.h"
 #include "graph/CornerGraph.h"
 
+#include <vector>
+
 namespace fc {
+
+// The connected component of every node (0 .. count-1), by breadth-first search.
+std::vector<int> graphComponents(const CornerGraph& graph, int& count);
 
 // Adds a collision-free inter edge from each component with corners of reachable cells to
 // the rest, between the nearest corners a clear path joins. Returns the edges added.

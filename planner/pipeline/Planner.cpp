@@ -1,5 +1,6 @@
 #include "pipeline/Planner.h"
 
+#include "graph/ComponentBridges.h"
 #include "model/Validation.h"
 #include "path/CoverageRepair.h"
 #include "path/PathBuilder.h"
@@ -34,35 +35,6 @@ PreparedPlan preparePlan(const Plan& plan, const RobotProfile& robot, double str
     prepared.graph = buildCornerGraph(prepared.decomposition);
     return prepared;
 }
-
-namespace {
-
-std::vector<int> componentOf(const CornerGraph& g) {
-    std::vector<int> comp(g.nodes.size(), -1);
-    int next = 0;
-    for (size_t s = 0; s < g.nodes.size(); ++s) {
-        if (comp[s] >= 0)
-            continue;
-        std::queue<int> q;
-        q.push(static_cast<int>(s));
-        comp[s] = next;
-        while (!q.empty()) {
-            const int u = q.front();
-            q.pop();
-            for (int e : g.incident[u]) {
-                const int v = g.edges[e].other(u);
-                if (comp[v] < 0) {
-                    comp[v] = next;
-                    q.push(v);
-                }
-            }
-        }
-        ++next;
-    }
-    return comp;
-}
-
-} // namespace
 
 int defaultStartNode(const PreparedPlan& prepared, const std::vector<char>& required) {
     // The corner of a required cell farthest from the centre of the required area: a corner
@@ -133,7 +105,8 @@ Query makeQuery(const PreparedPlan& prepared, const std::vector<std::string>& ro
     }
     q.endNode = end ? nearestNode(g, dec.frame.toLocal(*end)) : q.startNode;
 
-    const std::vector<int> comp = componentOf(g);
+    int componentCount = 0;
+    const std::vector<int> comp = graphComponents(g, componentCount);
     if (comp[q.endNode] != comp[q.startNode])
         throw InputError("the end point cannot be reached from the start point");
     int dropped = 0;
