@@ -3,10 +3,10 @@
 // in the training dock and, for SECONDS, measures the gaps between ticks of a 10 ms timer on
 // the GUI thread while the reward plot updates; also how long each replot takes.
 //   QT_QPA_PLATFORM=offscreen floorcover-gui-bench [PLAN] [SECONDS]
-#include "MainWindow.h"
-#include "PlanningController.h"
+#include "window/MainWindow.h"
+#include "tasks/PlanningController.h"
 #include "learning/dqn/DqnSolver.h"
-#include "training/TrainingDock.h"
+#include "docks/TrainingDock.h"
 
 #include <QApplication>
 #include <QElapsedTimer>

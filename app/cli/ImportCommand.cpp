@@ -1,7 +1,7 @@
 // floorcover-cli import: a DXF drawing, a ROS occupancy map, WKT or GeoJSON to a plan or
 // project file. Warnings on stderr, one JSON summary line on stdout.
 #include "CliCommon.h"
-#include "formats/Import.h"
+#include "importers/Import.h"
 
 #include <cstdio>
 #include <filesystem>

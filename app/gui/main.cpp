@@ -1,7 +1,7 @@
 // floorcover: the desktop editor. Thin: argument handling only; the editor lives in
 // the floorcover_widgets library.
-#include "MainWindow.h"
-#include "Translations.h"
+#include "window/MainWindow.h"
+#include "window/Translations.h"
 #include "learning/dqn/DqnSolver.h"
 #include "learning/ppo/PpoOrdering.h"
 

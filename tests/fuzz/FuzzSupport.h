@@ -3,7 +3,7 @@
 // (another exception, a crash, a hang) is a finding.
 #pragma once
 
-#include "formats/Import.h"
+#include "importers/Import.h"
 
 #include <cstdint>
 #include <filesystem>

@@ -2,7 +2,7 @@
 // reader ('o' OBJ, 's' STL, 'g' glTF, 'b' GLB, 'i' IFC; other values modulo 5), the rest is
 // the file. Any outcome but a plan or an InputError (a crash, a sanitizer report, another
 // exception, a hang) is a finding.
-#include "formats/BuildingModelImport.h"
+#include "importers/BuildingModelImport.h"
 
 #include <cstddef>
 #include <cstdint>

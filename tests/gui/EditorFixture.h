@@ -2,9 +2,9 @@
 // canvas in plan coordinates (metres), sent to the real view's viewport.
 #pragma once
 
-#include "CanvasView.h"
-#include "Document.h"
-#include "MainWindow.h"
+#include "canvas/CanvasView.h"
+#include "document/Document.h"
+#include "window/MainWindow.h"
 #include "tools/AbstractTool.h"
 #include "tools/ToolManager.h"
 

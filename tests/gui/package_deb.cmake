@@ -16,12 +16,18 @@ execute_process(COMMAND dpkg-deb --contents ${debs} OUTPUT_VARIABLE contents)
 execute_process(COMMAND dpkg-deb --field ${debs} Depends OUTPUT_VARIABLE depends)
 foreach(path ./usr/bin/floorcover ./usr/bin/floorcover-cli
         ./usr/share/applications/floorcover.desktop
-        ./usr/share/icons/hicolor/scalable/apps/floorcover.svg)
+        ./usr/share/icons/hicolor/scalable/apps/floorcover.svg
+        ./usr/share/metainfo/invalid.example.FloorCover.metainfo.xml)
   string(FIND "${contents}" "${path}\n" found)
   if(found EQUAL -1)
     message(FATAL_ERROR "${path} is missing from the package:\n${contents}")
   endif()
 endforeach()
+# The core's development files (headers, static library) are not for end users.
+string(FIND "${contents}" "include/floorcover" dev)
+if(NOT dev EQUAL -1)
+  message(FATAL_ERROR "the package holds the core's development files:\n${contents}")
+endif()
 if(NOT depends MATCHES "libqt6widgets6")
   message(FATAL_ERROR "the package does not depend on Qt: ${depends}")
 endif()

@@ -1,7 +1,7 @@
 // File > Import for 3D models: the dialog slices a generated OBJ room, previews it, reports a
 // plane that cuts nothing and follows its unit setting.
 #include "../planner/BuildingModels.h"
-#include "BuildingImportDialog.h"
+#include "dialogs/BuildingImportDialog.h"
 
 #include <QCheckBox>
 #include <QComboBox>

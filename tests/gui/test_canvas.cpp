@@ -1,13 +1,13 @@
 // Canvas and editing details through the real view: zoom, pan, cursor coordinates,
 // vertex insertion and deletion, polygon deletion, right angles, renaming, merging.
 #include "EditorFixture.h"
-#include "LegendDock.h"
-#include "PathPreview.h"
-#include "PathPreviewBar.h"
-#include "PlanScene.h"
-#include "PlanningController.h"
-#include "PlanningDock.h"
-#include "Translations.h"
+#include "docks/LegendDock.h"
+#include "canvas/PathPreview.h"
+#include "docks/PathPreviewBar.h"
+#include "canvas/PlanScene.h"
+#include "tasks/PlanningController.h"
+#include "docks/PlanningDock.h"
+#include "window/Translations.h"
 
 #include <QAction>
 #include <QCheckBox>

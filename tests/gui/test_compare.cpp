@@ -1,6 +1,6 @@
 // Plan > Compare Solvers: every solver on the same query, the table, the paper's ratios and
 // the paths side by side with overlaps in blue.
-#include "CompareDialog.h"
+#include "dialogs/CompareDialog.h"
 #include "EditorFixture.h"
 
 #include <QTableWidget>

@@ -1,11 +1,11 @@
 // The editor driven through its real widgets: drawing by mouse, undo/redo, files, room
 // selection, start/end, planning, exports and refused input.
-#include "Autosaver.h"
+#include "document/Autosaver.h"
 #include "EditorFixture.h"
-#include "OverlayLayer.h"
-#include "PlanScene.h"
-#include "PlanningController.h"
-#include "PlanningDock.h"
+#include "canvas/OverlayLayer.h"
+#include "canvas/PlanScene.h"
+#include "tasks/PlanningController.h"
+#include "docks/PlanningDock.h"
 #include "formats/PlanIO.h"
 #include "tools/DrawPolygonTool.h"
 

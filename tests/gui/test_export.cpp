@@ -1,7 +1,7 @@
 // File > Export through the window's API (the menus' dialog-free entry points): every path
 // format, the zones and the WGS84 plan land in files that parse back to the planned path.
 #include "EditorFixture.h"
-#include "PlanningController.h"
+#include "tasks/PlanningController.h"
 #include "formats/Export.h"
 #include "formats/PlanIO.h"
 

@@ -1,7 +1,7 @@
 // File > Import: the import dialog on the ezdxf office drawing (made by the
 // import_make_dxf_fixtures test), and the window applying its result.
 #include "EditorFixture.h"
-#include "ImportDialog.h"
+#include "dialogs/ImportDialog.h"
 
 #include <QCoreApplication>
 #include <QDialogButtonBox>

@@ -4,12 +4,12 @@
 #include "EditorFixture.h"
 #include "learning/ppo/PpoOrdering.h"
 #include "tiling/WaypointOrder.h"
-#include "tilingmode/PpoTrainer.h"
-#include "tilingmode/PpoTrainingPanel.h"
-#include "tilingmode/TilingController.h"
-#include "tilingmode/TilingDock.h"
-#include "tilingmode/TilingItem.h"
-#include "tilingmode/TilingMode.h"
+#include "modes/tiling/PpoTrainer.h"
+#include "modes/tiling/PpoTrainingPanel.h"
+#include "modes/tiling/TilingController.h"
+#include "modes/tiling/TilingDock.h"
+#include "modes/tiling/TilingItem.h"
+#include "modes/tiling/TilingMode.h"
 
 #include <QFile>
 #include <QTemporaryDir>

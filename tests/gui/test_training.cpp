@@ -2,11 +2,11 @@
 // resume, stop, save and reload the model, and the model offered to solver "dqn". The
 // trainer runs on the dock's worker thread while this (GUI) thread keeps processing events.
 #include "EditorFixture.h"
-#include "PlanningController.h"
+#include "tasks/PlanningController.h"
 #include "formats/PlanIO.h"
 #include "learning/dqn/DqnModelFile.h"
 #include "learning/dqn/DqnSolver.h"
-#include "training/TrainingDock.h"
+#include "docks/TrainingDock.h"
 
 #include <QComboBox>
 #include <QElapsedTimer>

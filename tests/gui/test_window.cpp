@@ -1,10 +1,10 @@
 // Window-level behaviour: the sweep modes and per-room angles, recent files, preferences.
 #include "EditorFixture.h"
-#include "PlanScene.h"
-#include "PlanningController.h"
-#include "PlanningDock.h"
-#include "PreferencesDialog.h"
-#include "Translations.h"
+#include "canvas/PlanScene.h"
+#include "tasks/PlanningController.h"
+#include "docks/PlanningDock.h"
+#include "dialogs/PreferencesDialog.h"
+#include "window/Translations.h"
 
 #include <QApplication>
 #include <QCheckBox>

@@ -1,7 +1,7 @@
 // Shared by the importer tests: fixture locations, free area, files written on the fly.
 #pragma once
 
-#include "formats/Import.h"
+#include "importers/Import.h"
 #include "geometry/Geometry.h"
 
 #include <filesystem>

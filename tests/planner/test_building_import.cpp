@@ -1,6 +1,6 @@
 // The 3D building-model importer: FZK-Haus (IFC), generated OBJ/STL/glTF rooms, bad files.
 #include "BuildingModels.h"
-#include "formats/BuildingModelImport.h"
+#include "importers/BuildingModelImport.h"
 #include "model/Validation.h"
 
 #include <algorithm>

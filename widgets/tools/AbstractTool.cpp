@@ -1,4 +1,4 @@
-#include "AbstractTool.h"
+#include "tools/AbstractTool.h"
 
 namespace fc::ui {
 

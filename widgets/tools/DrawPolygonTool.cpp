@@ -1,9 +1,9 @@
-#include "DrawPolygonTool.h"
+#include "tools/DrawPolygonTool.h"
 
-#include "Conversions.h"
-#include "PlanScene.h"
-#include "SceneStyle.h"
-#include "Snapper.h"
+#include "document/Conversions.h"
+#include "canvas/PlanScene.h"
+#include "canvas/SceneStyle.h"
+#include "canvas/Snapper.h"
 
 #include <QGraphicsPathItem>
 #include <QKeyEvent>

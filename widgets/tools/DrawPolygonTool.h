@@ -4,8 +4,8 @@
 // stays on the canvas in red with the message.
 #pragma once
 
-#include "AbstractTool.h"
-#include "Document.h"
+#include "tools/AbstractTool.h"
+#include "document/Document.h"
 
 #include <QPolygonF>
 

@@ -1,8 +1,8 @@
-#include "EditVerticesTool.h"
+#include "tools/EditVerticesTool.h"
 
-#include "Conversions.h"
-#include "PlanScene.h"
-#include "SceneStyle.h"
+#include "document/Conversions.h"
+#include "canvas/PlanScene.h"
+#include "canvas/SceneStyle.h"
 
 #include <QGraphicsItemGroup>
 #include <QGraphicsPathItem>

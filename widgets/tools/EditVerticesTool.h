@@ -3,8 +3,8 @@
 // a polygon to select it and press Delete to delete the whole polygon.
 #pragma once
 
-#include "AbstractTool.h"
-#include "Document.h"
+#include "tools/AbstractTool.h"
+#include "document/Document.h"
 
 #include <optional>
 

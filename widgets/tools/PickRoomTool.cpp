@@ -1,7 +1,7 @@
-#include "PickRoomTool.h"
+#include "tools/PickRoomTool.h"
 
-#include "Conversions.h"
-#include "Document.h"
+#include "document/Conversions.h"
+#include "document/Document.h"
 
 namespace fc::ui {
 

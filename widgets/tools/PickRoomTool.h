@@ -1,7 +1,7 @@
 // Clicking a room toggles whether it is planned (the room selection of the project).
 #pragma once
 
-#include "AbstractTool.h"
+#include "tools/AbstractTool.h"
 
 namespace fc::ui {
 

@@ -1,9 +1,9 @@
-#include "PlaceEndpointTool.h"
+#include "tools/PlaceEndpointTool.h"
 
-#include "Conversions.h"
-#include "Document.h"
-#include "PlanScene.h"
-#include "SceneStyle.h"
+#include "document/Conversions.h"
+#include "document/Document.h"
+#include "canvas/PlanScene.h"
+#include "canvas/SceneStyle.h"
 
 #include <QGraphicsItem>
 

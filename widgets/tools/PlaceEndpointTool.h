@@ -3,7 +3,7 @@
 // applies (start: a corner of the first cell; end: back at the start).
 #pragma once
 
-#include "AbstractTool.h"
+#include "tools/AbstractTool.h"
 
 class QGraphicsItem;
 

@@ -1,7 +1,7 @@
-#include "ToolManager.h"
+#include "tools/ToolManager.h"
 
-#include "AbstractTool.h"
-#include "Document.h"
+#include "tools/AbstractTool.h"
+#include "document/Document.h"
 
 #include <QAction>
 #include <QActionGroup>

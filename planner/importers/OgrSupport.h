@@ -1,0 +1,23 @@
+// Internal to the GDAL-based importers (DxfImport, PlanAssembly, RosMapImport): GDAL handles
+// and OGR polygons to plan rings. Include only from those .cpp files.
+#pragma once
+
+#include "importers/ImportSupport.h"
+
+#include <gdal_priv.h>
+#include <memory>
+#include <ogr_geometry.h>
+
+namespace fc::importing {
+
+struct DatasetCloser {
+    void operator()(GDALDataset* d) const { GDALClose(d); }
+};
+using DatasetPtr = std::unique_ptr<GDALDataset, DatasetCloser>;
+using GeometryPtr = std::unique_ptr<OGRGeometry>;
+
+// Appends every polygon of G (a polygon, multipolygon or collection) as shell + holes,
+// without the rings' repeated closing points.
+void collectPolygons(const OGRGeometry* g, std::vector<Polygon2>& out);
+
+} // namespace fc::importing

@@ -1,0 +1,246 @@
+// From outlines to a plan with GEOS (through GDAL's OGR geometry): boundary minus the union
+// of the obstacles, so overlapping, duplicated (outline + hatch) or wall-touching obstacles
+// give one clean free-space polygon. Also the WKT importer.
+#include "importers/OgrSupport.h"
+
+#include <algorithm>
+#include <memory>
+#include <set>
+#include <sstream>
+
+namespace fc::importing {
+
+namespace {
+
+OGRLinearRing* toOgrRing(const Ring& ring) {
+    auto* out = new OGRLinearRing;
+    for (const Vec2& p : ring)
+        out->addPoint(p.x, p.y);
+    out->closeRings();
+    return out;
+}
+
+Ring fromOgrRing(const OGRLinearRing& ring) {
+    Ring out;
+    for (int i = 0; i + 1 < ring.getNumPoints(); ++i) // the closing point repeats the first
+        out.push_back({ring.getX(i), ring.getY(i)});
+    return out;
+}
+
+// A valid polygonal geometry for a ring (self-intersecting rings repaired by MakeValid).
+GeometryPtr polygonOf(const Ring& ring) {
+    auto polygon = std::make_unique<OGRPolygon>();
+    polygon->addRingDirectly(toOgrRing(ring));
+    if (polygon->IsValid())
+        return polygon;
+    GeometryPtr valid(polygon->MakeValid());
+    return valid ? std::move(valid) : GeometryPtr(polygon->Buffer(0));
+}
+
+double areaOf(const Polygon2& p) {
+    double a = ringArea(p.shell);
+    for (const Ring& h : p.holes)
+        a -= ringArea(h);
+    return a;
+}
+
+std::string roomName(const Ring& outline, const std::vector<Label>& labels,
+                     std::set<std::string>& taken) {
+    std::string name;
+    for (const Label& label : labels)
+        if (pointInRing(outline, label.at)) {
+            name = label.text;
+            break;
+        }
+    if (name.empty())
+        name = "Room " + std::to_string(taken.size() + 1);
+    std::string unique = name;
+    for (int n = 2; taken.count(unique); ++n)
+        unique = name + " " + std::to_string(n);
+    taken.insert(unique);
+    return unique;
+}
+
+} // namespace
+
+void collectPolygons(const OGRGeometry* g, std::vector<Polygon2>& out) {
+    if (!g || g->IsEmpty())
+        return;
+    const OGRwkbGeometryType type = wkbFlatten(g->getGeometryType());
+    if (type == wkbPolygon) {
+        const OGRPolygon* polygon = g->toPolygon();
+        Polygon2 p;
+        p.shell = fromOgrRing(*polygon->getExteriorRing());
+        for (int i = 0; i < polygon->getNumInteriorRings(); ++i)
+            p.holes.push_back(fromOgrRing(*polygon->getInteriorRing(i)));
+        out.push_back(std::move(p));
+    } else if (type == wkbMultiPolygon || type == wkbGeometryCollection) {
+        const OGRGeometryCollection* c = g->toGeometryCollection();
+        for (int i = 0; i < c->getNumGeometries(); ++i)
+            collectPolygons(c->getGeometryRef(i), out);
+    }
+}
+
+Plan planFromPolygons(std::vector<Polygon2> polygons, const std::string& what,
+                      std::vector<std::string>& warnings) {
+    if (polygons.empty())
+        throw InputError("no " + what + " left to import");
+    std::sort(polygons.begin(), polygons.end(),
+              [](const Polygon2& a, const Polygon2& b) { return areaOf(a) > areaOf(b); });
+    if (polygons.size() > 1) {
+        double dropped = 0;
+        for (size_t i = 1; i < polygons.size(); ++i)
+            dropped += areaOf(polygons[i]);
+        std::ostringstream text;
+        text.precision(3);
+        text << polygons.size() - 1 << " separate " << what << " part"
+             << (polygons.size() == 2 ? "" : "s") << " (" << dropped
+             << " m2) not connected to the largest; dropped";
+        warnings.push_back(text.str());
+    }
+    Plan plan;
+    plan.boundary = std::move(polygons.front().shell);
+    plan.obstacles = std::move(polygons.front().holes);
+    return plan;
+}
+
+Plan assemblePlan(const std::vector<Outline>& outlines, const std::vector<Label>& labels,
+                  const LayerMapping& mapping, std::vector<std::string>& warnings) {
+    std::vector<const Outline*> boundaryCandidates, rest, rooms;
+    for (const Outline& o : outlines) {
+        const Role role = roleOfLayer(o.layer, mapping);
+        if (role == Role::Room)
+            rooms.push_back(&o);
+        else if (role == Role::Boundary)
+            boundaryCandidates.push_back(&o);
+        else if (role != Role::Ignored)
+            rest.push_back(&o);
+    }
+    if (boundaryCandidates.empty()) // no boundary layer: the largest outline of all
+        for (const Outline* o : rest)
+            if (roleOfLayer(o->layer, mapping) == Role::Unassigned)
+                boundaryCandidates.push_back(o);
+    if (boundaryCandidates.empty()) {
+        std::string open;
+        for (const std::string& w : warnings)
+            if (w.find("not closed") != std::string::npos)
+                open += (open.empty() ? "; " : ", ") + w.substr(0, w.find(" not closed"));
+        throw InputError("no closed outline for the boundary" + open +
+                         (open.empty() ? "" : " (a larger gap tolerance may close them)"));
+    }
+    const Outline* boundary = *std::max_element(
+        boundaryCandidates.begin(), boundaryCandidates.end(),
+        [](const Outline* a, const Outline* b) { return ringArea(a->ring) < ringArea(b->ring); });
+    for (const Outline* o : boundaryCandidates)
+        if (o != boundary && std::find(rest.begin(), rest.end(), o) == rest.end())
+            rest.push_back(o);
+
+    GeometryPtr free = polygonOf(boundary->ring);
+    auto obstacles = std::make_unique<OGRMultiPolygon>();
+    size_t outside = 0;
+    for (const Outline* o : rest) {
+        if (o == boundary)
+            continue;
+        GeometryPtr p = polygonOf(o->ring);
+        if (!p || !p->Intersects(free.get())) {
+            ++outside;
+            continue;
+        }
+        std::vector<Polygon2> parts;
+        collectPolygons(p.get(), parts);
+        for (const Polygon2& part : parts) {
+            auto polygon = std::make_unique<OGRPolygon>();
+            polygon->addRingDirectly(toOgrRing(part.shell));
+            obstacles->addGeometryDirectly(polygon.release());
+        }
+    }
+    if (outside > 0)
+        warnings.push_back(std::to_string(outside) +
+                           " closed outlines outside the boundary ignored");
+    if (!obstacles->IsEmpty()) {
+        GeometryPtr merged(obstacles->UnionCascaded());
+        if (!merged)
+            throw InputError("the obstacles could not be merged (invalid geometry)");
+        free.reset(free->Difference(merged.get()));
+        if (!free)
+            throw InputError("the obstacles could not be cut out of the boundary");
+    }
+    std::vector<Polygon2> parts;
+    collectPolygons(free.get(), parts);
+    Plan plan = planFromPolygons(std::move(parts), "free area", warnings);
+
+    std::set<std::string> taken;
+    size_t roomsOutside = 0;
+    GeometryPtr freeArea = polygonOf(plan.boundary);
+    for (const Outline* o : rooms) {
+        GeometryPtr p = polygonOf(o->ring);
+        if (!p || !p->Intersects(freeArea.get())) {
+            ++roomsOutside;
+            continue;
+        }
+        plan.rooms.push_back({roomName(o->ring, labels, taken), o->ring});
+    }
+    if (roomsOutside > 0)
+        warnings.push_back(std::to_string(roomsOutside) + " room outlines outside the boundary "
+                                                          "ignored");
+    return plan;
+}
+
+// WKT: POLYGON or MULTIPOLYGON (an "SRID=n;" prefix sets the EPSG code). The first
+// polygon's shell is the boundary and its holes the obstacles; further polygons are rooms
+// ("Room 2", "Room 3", ...). Coordinates are metres unless options.metresPerUnit says.
+ImportResult importWkt(const std::string& text, const ImportOptions& options) {
+    ensureGdal();
+    std::string wkt = text;
+    ImportResult result;
+    if (wkt.size() > 5 && (wkt.compare(0, 5, "SRID=") == 0 || wkt.compare(0, 5, "srid=") == 0)) {
+        const size_t semicolon = wkt.find(';');
+        if (semicolon == std::string::npos)
+            throw InputError("\"SRID=\" without \";\"");
+        try {
+            result.project.plan.epsg = std::stoi(wkt.substr(5, semicolon - 5));
+        } catch (const std::exception&) {
+            throw InputError("SRID is not a number");
+        }
+        wkt = wkt.substr(semicolon + 1);
+    }
+    OGRGeometry* raw = nullptr;
+    const char* cursor = wkt.c_str();
+    if (OGRGeometryFactory::createFromWkt(&cursor, nullptr, &raw) != OGRERR_NONE || !raw)
+        throw InputError("not valid WKT");
+    GeometryPtr geometry(raw);
+    if (std::string(cursor).find_first_not_of(" \t\r\n") != std::string::npos)
+        throw InputError("text after the WKT geometry");
+    if (geometry->hasCurveGeometry())
+        geometry.reset(geometry->getLinearGeometry());
+    const OGRwkbGeometryType type = wkbFlatten(geometry->getGeometryType());
+    if (type != wkbPolygon && type != wkbMultiPolygon)
+        throw InputError(std::string("WKT ") + geometry->getGeometryName() +
+                         " is not a POLYGON or MULTIPOLYGON");
+    std::vector<Polygon2> polygons;
+    collectPolygons(geometry.get(), polygons);
+    if (polygons.empty())
+        throw InputError("the WKT polygon is empty");
+    if (options.metresPerUnit) {
+        const double k = *options.metresPerUnit;
+        for (Polygon2& p : polygons) {
+            for (Vec2& v : p.shell)
+                v = {v.x * k, v.y * k};
+            for (Ring& h : p.holes)
+                for (Vec2& v : h)
+                    v = {v.x * k, v.y * k};
+        }
+    }
+    Plan& plan = result.project.plan;
+    plan.boundary = polygons.front().shell;
+    plan.obstacles = polygons.front().holes;
+    for (size_t i = 1; i < polygons.size(); ++i) {
+        if (!polygons[i].holes.empty())
+            result.warnings.push_back("holes of polygon " + std::to_string(i + 1) +
+                                      " (a room) ignored");
+        plan.rooms.push_back({"Room " + std::to_string(i + 1), polygons[i].shell});
+    }
+    return result;
+}
+
+} // namespace fc::importing

@@ -1,0 +1,304 @@
+#include "canvas/OverlayLayer.h"
+
+#include "document/Conversions.h"
+#include "canvas/PlanScene.h"
+#include "tasks/PlanningController.h"
+#include "canvas/SceneStyle.h"
+
+#include <QCoreApplication>
+#include <QGraphicsItemGroup>
+#include <QGraphicsPathItem>
+#include <algorithm>
+
+namespace fc::ui {
+
+namespace {
+
+QGraphicsPathItem* addPathItem(QGraphicsItem* parent, const QPainterPath& path, const QPen& pen,
+                               const QBrush& brush = Qt::NoBrush) {
+    auto* item = new QGraphicsPathItem(path, parent);
+    item->setPen(pen);
+    item->setBrush(brush);
+    return item;
+}
+
+// A filled arrow head of size `size` metres at `tip` pointing along `direction`.
+void addArrowHead(QPainterPath& path, Vec2 tip, Vec2 direction, double size) {
+    const double length = norm(direction);
+    if (length <= 0)
+        return;
+    const Vec2 d = direction * (1.0 / length), n(-d.y, d.x);
+    const Vec2 back = tip - d * size;
+    QPolygonF head;
+    head << toQt(tip) << toQt(back + n * (size * 0.5)) << toQt(back - n * (size * 0.5))
+         << toQt(tip);
+    path.addPolygon(head);
+}
+
+} // namespace
+
+QString overlayName(OverlayKind kind) {
+    const char* names[kOverlayKindCount] = {
+        QT_TRANSLATE_NOOP("fc::ui::OverlayLayer", "Primary Cells"),
+        QT_TRANSLATE_NOOP("fc::ui::OverlayLayer", "Transition Cells"),
+        QT_TRANSLATE_NOOP("fc::ui::OverlayLayer", "Critical Slices"),
+        QT_TRANSLATE_NOOP("fc::ui::OverlayLayer", "Corner Nodes"),
+        QT_TRANSLATE_NOOP("fc::ui::OverlayLayer", "Coverage Edges"),
+        QT_TRANSLATE_NOOP("fc::ui::OverlayLayer", "Contour Edges"),
+        QT_TRANSLATE_NOOP("fc::ui::OverlayLayer", "Inter-cell Edges"),
+        QT_TRANSLATE_NOOP("fc::ui::OverlayLayer", "Path"),
+        QT_TRANSLATE_NOOP("fc::ui::OverlayLayer", "Overlap Segments"),
+        QT_TRANSLATE_NOOP("fc::ui::OverlayLayer", "Unreachable Areas"),
+        QT_TRANSLATE_NOOP("fc::ui::OverlayLayer", "Coverage Gaps"),
+    };
+    return QCoreApplication::translate("fc::ui::OverlayLayer", names[static_cast<int>(kind)]);
+}
+
+OverlayStyle overlayStyle(OverlayKind kind) {
+    switch (kind) {
+    case OverlayKind::PrimaryCells: // each room has its own hue; this is the first one
+        return {style::cosmeticPen(style::roomHue(0, 255), 1.0), style::roomHue(0, 90)};
+    case OverlayKind::TransitionCells: // hatched grey, distinct from primary cells
+        return {style::cosmeticPen(QColor(120, 120, 120), 1.0),
+                QBrush(QColor(110, 110, 110, 140), Qt::FDiagPattern)};
+    case OverlayKind::CriticalSlices:
+        return {style::cosmeticPen(QColor(200, 60, 160), 1.5, Qt::DashLine), Qt::NoBrush};
+    case OverlayKind::CornerNodes:
+        return {style::cosmeticPen(QColor(20, 20, 20), 1.0), QColor(250, 220, 40)};
+    case OverlayKind::CoverageEdges:
+        return {style::cosmeticPen(QColor(30, 150, 70), 1.5, Qt::DashLine), Qt::NoBrush};
+    case OverlayKind::ContourEdges:
+        return {style::cosmeticPen(QColor(230, 140, 20), 1.5), Qt::NoBrush};
+    case OverlayKind::InterEdges:
+        return {style::cosmeticPen(QColor(140, 60, 200), 1.0, Qt::DotLine), Qt::NoBrush};
+    case OverlayKind::Path:
+        return {style::cosmeticPen(QColor(210, 50, 30), 1.8), QColor(150, 20, 10)};
+    case OverlayKind::Overlaps: // blue like the paper's figures, see-through over the path
+        return {style::cosmeticPen(QColor(30, 90, 255, 170), 4.0), Qt::NoBrush};
+    case OverlayKind::CoverageGaps:
+        return {Qt::NoPen, QColor(230, 0, 200, 200)};
+    case OverlayKind::Unreachable:
+        break;
+    }
+    return {style::cosmeticPen(QColor(220, 30, 30), 2.5), Qt::NoBrush};
+}
+
+bool overlayVisibleByDefault(OverlayKind kind) {
+    return kind != OverlayKind::CoverageEdges && kind != OverlayKind::ContourEdges &&
+           kind != OverlayKind::InterEdges;
+}
+
+OverlayLayer::OverlayLayer(PlanScene* scene) : QObject(scene), scene_(scene) {
+    for (int i = 0; i < kOverlayKindCount; ++i)
+        visible_[i] = overlayVisibleByDefault(static_cast<OverlayKind>(i));
+}
+
+void OverlayLayer::setPlanningController(PlanningController* controller) {
+    if (controller_)
+        disconnect(controller_, nullptr, this, nullptr);
+    controller_ = controller;
+    if (controller_) {
+        connect(controller_, &PlanningController::preparedChanged, this, &OverlayLayer::rebuild);
+        connect(controller_, &PlanningController::resultChanged, this, &OverlayLayer::rebuild);
+    }
+    rebuild();
+}
+
+void OverlayLayer::setVisible(OverlayKind kind, bool visible) {
+    visible_[static_cast<int>(kind)] = visible;
+    if (QGraphicsItemGroup* group = groups_[static_cast<int>(kind)])
+        group->setVisible(visible);
+}
+
+int OverlayLayer::itemCount(OverlayKind kind) const {
+    const QGraphicsItemGroup* group = groups_[static_cast<int>(kind)];
+    return group ? static_cast<int>(group->childItems().size()) : 0;
+}
+
+QGraphicsItemGroup* OverlayLayer::freshGroup(OverlayKind kind, double zValue) {
+    auto*& group = groups_[static_cast<int>(kind)];
+    delete group;
+    group = new QGraphicsItemGroup;
+    group->setZValue(zValue);
+    group->setVisible(isVisible(kind));
+    scene_->addItem(group);
+    return group;
+}
+
+void OverlayLayer::rebuild() {
+    for (int i = 0; i < kOverlayKindCount; ++i)
+        freshGroup(static_cast<OverlayKind>(i), z::Overlays + 0.1 * i);
+    if (!controller_)
+        return;
+    const auto result = controller_->result();
+    const auto prepared = controller_->shownPlan();
+    if (result && !result->parts.empty()) {
+        // Per-room sweeps: each part's own cells and graph, at its own angle.
+        for (const PlanPart& part : result->parts) {
+            addCells(part.prepared, &part.rooms);
+            addGraph(part.prepared, &part.rooms);
+        }
+        addUnreachable(result->prepared);
+    } else if (prepared) {
+        addCells(*prepared);
+        addCriticalSlices(*prepared);
+        addGraph(*prepared);
+        addUnreachable(*prepared);
+    }
+    if (result)
+        addPath(*result);
+}
+
+namespace {
+
+bool inRooms(const Decomposition& dec, int room, const std::vector<std::string>* rooms) {
+    return !rooms || std::find(rooms->begin(), rooms->end(), dec.roomNames[room]) != rooms->end();
+}
+
+} // namespace
+
+void OverlayLayer::addCells(const PreparedPlan& prepared, const std::vector<std::string>* rooms) {
+    const Decomposition& dec = prepared.decomposition;
+    auto* primary = groups_[static_cast<int>(OverlayKind::PrimaryCells)];
+    auto* transition = groups_[static_cast<int>(OverlayKind::TransitionCells)];
+    const QColor text = style::palette().color(QPalette::Text);
+    for (const Cell& cell : dec.cells) {
+        if (!inRooms(dec, cell.room, rooms))
+            continue;
+        QPainterPath path;
+        addRing(path, dec.frame.toWorld(cell.outline()));
+        if (cell.kind == CellKind::Primary) {
+            addPathItem(primary, path, style::cosmeticPen(style::roomHue(cell.room, 255), 1.0),
+                        style::roomHue(cell.room, 90));
+            const double mid = 0.5 * (cell.x0 + cell.x1);
+            const Vec2 centre(mid, 0.5 * (cell.floorAt(mid) + cell.ceilingAt(mid)));
+            style::addLabel(primary, QString::number(cell.id), toQt(dec.frame.toWorld(centre)),
+                            text);
+        } else {
+            // Transition strips: hatched and outlined in grey, distinct from primary cells.
+            const OverlayStyle look = overlayStyle(OverlayKind::TransitionCells);
+            addPathItem(transition, path, look.pen, look.brush);
+        }
+    }
+}
+
+void OverlayLayer::addCriticalSlices(const PreparedPlan& prepared) {
+    const Decomposition& dec = prepared.decomposition;
+    QPainterPath path;
+    for (const CriticalSlice& slice : dec.criticalSlices)
+        addPolyline(path, dec.frame.toWorld(Polyline{{slice.x, slice.y0}, {slice.x, slice.y1}}));
+    addPathItem(groups_[static_cast<int>(OverlayKind::CriticalSlices)], path,
+                overlayStyle(OverlayKind::CriticalSlices).pen);
+}
+
+void OverlayLayer::addGraph(const PreparedPlan& prepared, const std::vector<std::string>* rooms) {
+    const Decomposition& dec = prepared.decomposition;
+    const Frame& frame = dec.frame;
+    const CornerGraph& graph = prepared.graph;
+    auto nodeShown = [&](int node) {
+        return inRooms(dec, graph.cells[graph.nodes[node].cell].room, rooms);
+    };
+    QPainterPath coverage, contour, inter, nodes;
+    for (const GraphEdge& edge : graph.edges) {
+        if (!nodeShown(edge.u) && !nodeShown(edge.v))
+            continue;
+        switch (edge.kind) {
+        case EdgeKind::Coverage: // the pair's corners, not the whole stripe pattern
+            addPolyline(coverage, frame.toWorld(Polyline{graph.nodes[edge.u].position,
+                                                         graph.nodes[edge.v].position}));
+            break;
+        case EdgeKind::Contour:
+            addPolyline(contour, frame.toWorld(edge.geometry));
+            break;
+        case EdgeKind::Inter:
+            addPolyline(inter, frame.toWorld(edge.geometry));
+            break;
+        }
+    }
+    const double radius = 0.08 * prepared.robot.coverageWidth;
+    for (const GraphNode& node : graph.nodes)
+        if (nodeShown(node.id))
+            nodes.addEllipse(toQt(frame.toWorld(node.position)), radius, radius);
+    addPathItem(groups_[static_cast<int>(OverlayKind::CoverageEdges)], coverage,
+                overlayStyle(OverlayKind::CoverageEdges).pen);
+    addPathItem(groups_[static_cast<int>(OverlayKind::ContourEdges)], contour,
+                overlayStyle(OverlayKind::ContourEdges).pen);
+    addPathItem(groups_[static_cast<int>(OverlayKind::InterEdges)], inter,
+                overlayStyle(OverlayKind::InterEdges).pen);
+    addPathItem(groups_[static_cast<int>(OverlayKind::CornerNodes)], nodes,
+                overlayStyle(OverlayKind::CornerNodes).pen,
+                overlayStyle(OverlayKind::CornerNodes).brush);
+}
+
+void OverlayLayer::addUnreachable(const PreparedPlan& prepared) {
+    auto* group = groups_[static_cast<int>(OverlayKind::Unreachable)];
+    const double size = 0.3 * prepared.robot.coverageWidth;
+    for (const UnreachableArea& area : prepared.decomposition.unreachable) {
+        QPainterPath cross;
+        const QPointF c = toQt(area.location);
+        cross.moveTo(c + QPointF(-size, -size));
+        cross.lineTo(c + QPointF(size, size));
+        cross.moveTo(c + QPointF(-size, size));
+        cross.lineTo(c + QPointF(size, -size));
+        auto* item = addPathItem(group, cross, overlayStyle(OverlayKind::Unreachable).pen);
+        item->setToolTip(
+            tr("Unreachable: %1 (%2 m²)").arg(fromStd(area.reason)).arg(area.area, 0, 'f', 2));
+    }
+}
+
+void OverlayLayer::addPath(const PlanResult& result) {
+    const CoveragePath& path = result.path;
+    if (path.empty())
+        return;
+    auto* group = groups_[static_cast<int>(OverlayKind::Path)];
+    QPainterPath sweeping, travelling, arrows;
+    for (size_t i = 0; i + 1 < path.points.size(); ++i) {
+        QPainterPath& target = path.kinds[i] == SegmentKind::Transit ? travelling : sweeping;
+        target.moveTo(toQt(path.points[i]));
+        target.lineTo(toQt(path.points[i + 1]));
+    }
+    // Direction arrows every ~3 W along the path, at segment midpoints.
+    const double width = result.prepared.robot.coverageWidth;
+    double sinceArrow = 1.5 * width;
+    for (size_t i = 0; i + 1 < path.points.size(); ++i) {
+        const Vec2 a = path.points[i], b = path.points[i + 1];
+        sinceArrow += distance(a, b);
+        if (sinceArrow >= 3.0 * width && distance(a, b) >= 0.4 * width) {
+            addArrowHead(arrows, (a + b) * 0.5 + (b - a) * (0.15 * width / distance(a, b)), b - a,
+                         0.3 * width);
+            sinceArrow = 0;
+        }
+    }
+    const QPen pathPen = overlayStyle(OverlayKind::Path).pen;
+    addPathItem(group, sweeping, pathPen);
+    QPen transitPen = pathPen; // travel between cells: dashed
+    transitPen.setStyle(Qt::DashLine);
+    addPathItem(group, travelling, transitPen);
+    addPathItem(group, arrows, Qt::NoPen, overlayStyle(OverlayKind::Path).brush);
+
+    QPainterPath overlaps;
+    for (const Segment& s : result.metrics.overlaps) {
+        overlaps.moveTo(toQt(s.a));
+        overlaps.lineTo(toQt(s.b));
+    }
+    addPathItem(groups_[static_cast<int>(OverlayKind::Overlaps)], overlaps,
+                overlayStyle(OverlayKind::Overlaps).pen);
+
+    // Missed spots as small dots: the metric's raster samples, at most ~20,000 of them.
+    QPainterPath gaps;
+    const double dot = 0.06 * width;
+    for (Vec2 p : result.metrics.uncovered)
+        gaps.addEllipse(toQt(p), dot, dot);
+    const OverlayStyle gapLook = overlayStyle(OverlayKind::CoverageGaps);
+    addPathItem(groups_[static_cast<int>(OverlayKind::CoverageGaps)], gaps, gapLook.pen,
+                gapLook.brush);
+    // Floor no robot position can sweep (too narrow for the disc, corners beyond the head):
+    // dots in the unreachable colour beside the decomposition's crosses.
+    QPainterPath unreachable;
+    for (Vec2 p : result.metrics.unreachable)
+        unreachable.addEllipse(toQt(p), dot, dot);
+    addPathItem(groups_[static_cast<int>(OverlayKind::Unreachable)], unreachable, Qt::NoPen,
+                overlayStyle(OverlayKind::Unreachable).pen.color());
+}
+
+} // namespace fc::ui

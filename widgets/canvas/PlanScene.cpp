@@ -1,0 +1,181 @@
+#include "canvas/PlanScene.h"
+
+#include "document/Conversions.h"
+#include "canvas/OverlayLayer.h"
+#include "tasks/PlanningController.h"
+#include "canvas/SceneStyle.h"
+
+#include <QBrush>
+#include <QGraphicsItemGroup>
+#include <QGraphicsPathItem>
+#include <QGraphicsSimpleTextItem>
+#include <QPen>
+
+namespace fc::ui {
+
+PlanScene::PlanScene(QObject* parent) : QGraphicsScene(parent), overlays_(new OverlayLayer(this)) {
+    setItemIndexMethod(QGraphicsScene::NoIndex); // items are rebuilt often, rarely queried
+}
+
+PlanScene::~PlanScene() = default;
+
+void PlanScene::setDocument(Document* document) {
+    if (document_)
+        disconnect(document_, nullptr, this, nullptr);
+    document_ = document;
+    highlight_.reset();
+    if (document_) {
+        connect(document_, &Document::geometryChanged, this, &PlanScene::rebuildPolygons);
+        connect(document_, &Document::roomsChanged, this, &PlanScene::rebuildPolygons);
+        connect(document_, &Document::endpointsChanged, this, &PlanScene::rebuildMarkers);
+    }
+    rebuildPolygons();
+    rebuildMarkers();
+}
+
+void PlanScene::setPlanningController(PlanningController* controller) {
+    if (controller_)
+        disconnect(controller_, nullptr, this, nullptr);
+    controller_ = controller;
+    overlays_->setPlanningController(controller);
+    // The markers show the corner the planner snaps them to, which needs the graph.
+    connect(controller, &PlanningController::preparedChanged, this, &PlanScene::rebuildMarkers);
+    connect(controller, &PlanningController::resultChanged, this, &PlanScene::rebuildMarkers);
+}
+
+void PlanScene::restyle() {
+    rebuildPolygons();
+    rebuildMarkers();
+    overlays_->rebuild();
+}
+
+void PlanScene::updateSceneRect() {
+    // Generous margins so that the view can pan well beyond the plan.
+    QRectF bounds(-10, -10, 40, 30);
+    if (document_ && !document_->plan().boundary.empty()) {
+        const BoundingBox box = document_->plan().bounds();
+        bounds = QRectF(QPointF(box.minX, box.minY), QPointF(box.maxX, box.maxY));
+    }
+    const double margin = std::max(50.0, 2.0 * std::max(bounds.width(), bounds.height()));
+    setSceneRect(bounds.adjusted(-margin, -margin, margin, margin));
+}
+
+void PlanScene::rebuildPolygons() {
+    delete polygons_;
+    highlightItem_ = nullptr;
+    polygons_ = new QGraphicsItemGroup;
+    addItem(polygons_);
+    updateSceneRect();
+    if (!document_)
+        return;
+    const Plan& plan = document_->plan();
+    const QPalette palette = style::palette();
+
+    for (const Room& room : plan.rooms) {
+        const QString name = fromStd(room.name);
+        const bool selected = document_->isRoomSelected(name);
+        QPainterPath path;
+        addRing(path, room.outline);
+        auto* item = new QGraphicsPathItem(path, polygons_);
+        item->setPen(style::cosmeticPen(style::roomOutline(palette), 1.0, Qt::DashLine));
+        item->setBrush(selected ? QBrush(style::roomFill(palette, true))
+                                : QBrush(style::roomFill(palette, false), Qt::BDiagPattern));
+        item->setZValue(z::Rooms);
+        item->setToolTip(selected ? tr("%1 (planned)").arg(name)
+                                  : tr("%1 (not planned)").arg(name));
+        style::addLabel(polygons_, name, toQt(style::labelPoint(room.outline)),
+                        style::roomOutline(palette), true);
+    }
+    if (!plan.boundary.empty()) {
+        QPainterPath walls;
+        addRing(walls, plan.boundary);
+        auto* boundary = new QGraphicsPathItem(walls, polygons_);
+        boundary->setPen(style::cosmeticPen(palette.color(QPalette::Text), 2.0));
+        boundary->setZValue(z::Walls);
+    }
+    for (const Ring& obstacle : plan.obstacles) {
+        QPainterPath path;
+        addRing(path, obstacle);
+        auto* item = new QGraphicsPathItem(path, polygons_);
+        item->setPen(style::cosmeticPen(palette.color(QPalette::Text), 1.5));
+        item->setBrush(style::obstacleFill(palette));
+        item->setZValue(z::Walls);
+    }
+    setHighlight(highlight_);
+}
+
+void PlanScene::rebuildMarkers() {
+    delete markers_;
+    markers_ = new QGraphicsItemGroup;
+    markers_->setZValue(z::Markers);
+    addItem(markers_);
+    if (!document_)
+        return;
+    const Project& project = document_->project();
+    const auto prepared = controller_ ? controller_->shownPlan() : nullptr;
+    const auto showSnap = [&](Vec2 point) {
+        if (!prepared || prepared->graph.nodes.empty())
+            return;
+        const Frame& frame = prepared->decomposition.frame;
+        const int node = nearestNode(prepared->graph, frame.toLocal(point));
+        const QPointF corner = toQt(frame.toWorld(prepared->graph.nodes[node].position));
+        QPainterPath link;
+        link.moveTo(toQt(point));
+        link.lineTo(corner);
+        const double r = 0.12 * prepared->robot.coverageWidth;
+        link.addEllipse(corner, r, r);
+        auto* item = new QGraphicsPathItem(link, markers_);
+        item->setPen(style::cosmeticPen(QColor(90, 90, 90), 1.5, Qt::DashLine));
+        item->setToolTip(tr("The corner the planner starts or ends at"));
+    };
+    if (project.hasStart)
+        showSnap(project.start);
+    if (project.hasEnd)
+        showSnap(project.end);
+    if (project.hasStart)
+        style::addMarker(markers_, toQt(project.start), tr("S"), QColor(0, 150, 60), tr("Start"));
+    if (project.hasEnd)
+        style::addMarker(markers_, toQt(project.end), tr("E"), QColor(200, 40, 40), tr("End"));
+}
+
+void PlanScene::setHighlight(std::optional<PolygonRef> polygon) {
+    delete highlightItem_;
+    highlightItem_ = nullptr;
+    highlight_ = polygon;
+    if (!polygon || !document_ || polygon->index >= document_->polygonCount(polygon->role))
+        return;
+    QPainterPath path;
+    addRing(path, document_->ring(*polygon));
+    auto* item = new QGraphicsPathItem(path, polygons_);
+    item->setPen(style::cosmeticPen(style::palette().color(QPalette::Highlight), 3.0));
+    item->setZValue(z::Tool - 1);
+    highlightItem_ = item;
+}
+
+std::optional<PolygonRef> PlanScene::polygonAt(QPointF point, double tolerance) const {
+    if (!document_)
+        return std::nullopt;
+    const Vec2 p = toVec2(point);
+    std::vector<PolygonRef> candidates;
+    for (int i = document_->polygonCount(PolygonRole::Obstacle) - 1; i >= 0; --i)
+        candidates.push_back({PolygonRole::Obstacle, i});
+    for (int i = document_->polygonCount(PolygonRole::Room) - 1; i >= 0; --i)
+        candidates.push_back({PolygonRole::Room, i});
+    if (document_->polygonCount(PolygonRole::Boundary) > 0)
+        candidates.push_back({PolygonRole::Boundary, 0});
+    const auto nearOutline = [&](const Ring& ring) {
+        for (size_t i = 0; i < ring.size(); ++i)
+            if (pointSegmentDistance(p, ring[i], ring[(i + 1) % ring.size()]) <= tolerance)
+                return true;
+        return false;
+    };
+    for (const PolygonRef& ref : candidates)
+        if (nearOutline(document_->ring(ref)))
+            return ref;
+    for (const PolygonRef& ref : candidates)
+        if (pointInRing(document_->ring(ref), p))
+            return ref;
+    return std::nullopt;
+}
+
+} // namespace fc::ui

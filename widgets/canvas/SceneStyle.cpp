@@ -1,0 +1,104 @@
+#include "canvas/SceneStyle.h"
+
+#include <QBrush>
+#include <QFont>
+#include <QGraphicsEllipseItem>
+#include <QGraphicsSimpleTextItem>
+#include <QGuiApplication>
+
+namespace fc::ui::style {
+
+QPalette palette() {
+    return QGuiApplication::palette();
+}
+
+bool isDark(const QPalette& palette) {
+    return palette.color(QPalette::Base).lightnessF() < 0.5;
+}
+
+QPen cosmeticPen(const QColor& color, double width, Qt::PenStyle penStyle) {
+    QPen pen(color, width, penStyle);
+    pen.setCosmetic(true);
+    pen.setJoinStyle(Qt::RoundJoin);
+    pen.setCapStyle(Qt::RoundCap);
+    return pen;
+}
+
+QColor roomOutline(const QPalette& palette) {
+    return isDark(palette) ? QColor(150, 190, 255) : QColor(40, 80, 160);
+}
+
+QColor roomFill(const QPalette& palette, bool selected) {
+    if (!selected)
+        return isDark(palette) ? QColor(120, 120, 120, 90) : QColor(120, 120, 120, 70);
+    return isDark(palette) ? QColor(70, 110, 170, 60) : QColor(120, 160, 230, 45);
+}
+
+QColor obstacleFill(const QPalette& palette) {
+    return isDark(palette) ? QColor(90, 90, 90) : QColor(170, 170, 170);
+}
+
+QColor roomHue(int room, int alpha) {
+    // Golden-angle steps give neighbouring indices clearly different hues.
+    const int hue = (room * 137) % 360;
+    return QColor::fromHsv(hue, 110, 235, alpha);
+}
+
+Vec2 labelPoint(const Ring& ring) {
+    if (ring.empty())
+        return {};
+    double a = 0, cx = 0, cy = 0;
+    for (size_t i = 0; i < ring.size(); ++i) {
+        const Vec2 p = ring[i], q = ring[(i + 1) % ring.size()];
+        const double c = cross(p, q);
+        a += c;
+        cx += (p.x + q.x) * c;
+        cy += (p.y + q.y) * c;
+    }
+    if (std::abs(a) > 1e-12) {
+        const Vec2 centroid(cx / (3 * a), cy / (3 * a));
+        if (pointInRing(ring, centroid))
+            return centroid;
+    }
+    // Concave ring: the midpoint between a vertex and its neighbours' midpoint is a decent
+    // fallback that lies inside for convex corners.
+    const Vec2 v = ring[0], mid = (ring[1] + ring.back()) * 0.5;
+    return (v + mid) * 0.5;
+}
+
+QGraphicsItem* addLabel(QGraphicsItem* parent, const QString& text, QPointF position,
+                        const QColor& color, bool bold) {
+    auto* label = new QGraphicsSimpleTextItem(text, parent);
+    QFont font = label->font();
+    font.setPointSizeF(bold ? 9.0 : 7.5);
+    font.setBold(bold);
+    label->setFont(font);
+    label->setBrush(color);
+    // Constant screen size and upright although the view flips y.
+    label->setFlag(QGraphicsItem::ItemIgnoresTransformations);
+    const QRectF box = label->boundingRect();
+    label->setPos(position);
+    label->setTransform(QTransform::fromTranslate(-box.width() / 2, -box.height() / 2));
+    return label;
+}
+
+QGraphicsItem* addMarker(QGraphicsItem* parent, QPointF position, const QString& letter,
+                         const QColor& color, const QString& toolTip) {
+    constexpr double radius = 9.0; // pixels
+    auto* disc = new QGraphicsEllipseItem(-radius, -radius, 2 * radius, 2 * radius, parent);
+    disc->setPen(QPen(Qt::white, 2));
+    disc->setBrush(color);
+    disc->setPos(position);
+    disc->setFlag(QGraphicsItem::ItemIgnoresTransformations);
+    disc->setToolTip(toolTip);
+    auto* text = new QGraphicsSimpleTextItem(letter, disc);
+    QFont font = text->font();
+    font.setBold(true);
+    text->setFont(font);
+    text->setBrush(Qt::white);
+    const QRectF box = text->boundingRect();
+    text->setPos(-box.width() / 2, -box.height() / 2);
+    return disc;
+}
+
+} // namespace fc::ui::style

@@ -1,0 +1,192 @@
+#include "dialogs/CompareDialog.h"
+
+#include "pipeline/Comparison.h"
+
+#include <QEventLoop>
+#include <QGridLayout>
+#include <QHeaderView>
+#include <QLabel>
+#include <QPainter>
+#include <QPainterPath>
+#include <QScrollArea>
+#include <QTableWidget>
+#include <QTimer>
+#include <QVBoxLayout>
+#include <QtConcurrent>
+#include <algorithm>
+#include <cmath>
+
+namespace fc::ui {
+namespace {
+
+std::vector<SolverRun> planAll(const PlanRequest& base) {
+    std::vector<SolverRun> runs;
+    for (const std::string& name : solverNames()) {
+        if (name == "dqn" && base.modelPath.empty())
+            continue;
+        SolverRun run;
+        run.solver = name;
+        PlanRequest request = base;
+        request.solver = name;
+        try {
+            run.result = planCoverage(request);
+        } catch (const std::exception& e) {
+            run.error = e.what();
+        }
+        runs.push_back(std::move(run));
+    }
+    return runs;
+}
+
+QString number(double value, int decimals) {
+    return QString::number(value, 'f', decimals);
+}
+
+} // namespace
+
+CompareDialog::CompareDialog(PlanRequest request, QWidget* parent)
+    : QDialog(parent), request_(std::move(request)), table_(new QTableWidget(this)),
+      ratios_(new QLabel(this)), status_(new QLabel(tr("Planning with every solver…"), this)),
+      paths_(new QGridLayout) {
+    setWindowTitle(tr("Compare Solvers"));
+    auto* layout = new QVBoxLayout(this);
+    layout->addWidget(status_);
+    table_->setColumnCount(7);
+    table_->setHorizontalHeaderLabels({tr("Solver"), tr("Length (m)"), tr("Extra (m)"), tr("Turns"),
+                                       tr("Coverage"), tr("Time (s)"), tr("Planning (s)")});
+    table_->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
+    table_->setEditTriggers(QAbstractItemView::NoEditTriggers);
+    layout->addWidget(table_);
+    ratios_->setWordWrap(true);
+    ratios_->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    layout->addWidget(ratios_);
+    auto* pathsWidget = new QWidget;
+    pathsWidget->setLayout(paths_);
+    auto* scroll = new QScrollArea(this);
+    scroll->setWidget(pathsWidget);
+    scroll->setWidgetResizable(true);
+    layout->addWidget(scroll, 1);
+    resize(1000, 760);
+    connect(&watcher_, &QFutureWatcher<std::vector<SolverRun>>::finished, this, [this] {
+        runs_ = watcher_.result();
+        showRuns();
+        emit finished();
+    });
+}
+
+CompareDialog::~CompareDialog() {
+    watcher_.waitForFinished();
+}
+
+void CompareDialog::start() {
+    watcher_.setFuture(QtConcurrent::run([request = request_] { return planAll(request); }));
+}
+
+bool CompareDialog::runAndWait(int timeoutMs) {
+    QEventLoop loop;
+    connect(this, &CompareDialog::finished, &loop, &QEventLoop::quit);
+    QTimer::singleShot(timeoutMs, &loop, &QEventLoop::quit);
+    start();
+    loop.exec();
+    return watcher_.isFinished() && !runs_.empty();
+}
+
+void CompareDialog::showRuns() {
+    table_->setRowCount(static_cast<int>(runs_.size()));
+    images_.clear();
+    std::vector<std::pair<std::string, Metrics>> answered;
+    int column = 0, row = 0;
+    for (std::size_t i = 0; i < runs_.size(); ++i) {
+        const SolverRun& run = runs_[i];
+        const int r = static_cast<int>(i);
+        table_->setItem(r, 0, new QTableWidgetItem(QString::fromStdString(run.solver)));
+        if (!run.result) {
+            table_->setItem(
+                r, 1,
+                new QTableWidgetItem(tr("refused: %1").arg(QString::fromStdString(run.error))));
+            images_.emplace_back();
+            continue;
+        }
+        const Metrics& m = run.result->metrics;
+        answered.emplace_back(run.solver, m);
+        const QStringList cells{number(m.length, 1),      number(m.extra, 1),
+                                QString::number(m.turns), number(100.0 * m.coverage, 2) + " %",
+                                number(m.time, 0),        number(m.seconds, 2)};
+        for (int c = 0; c < cells.size(); ++c)
+            table_->setItem(r, c + 1, new QTableWidgetItem(cells[c]));
+        images_.push_back(renderPath(request_.plan, *run.result, QSize(300, 220)));
+        auto* caption = new QLabel(QString::fromStdString(run.solver));
+        auto* picture = new QLabel;
+        picture->setPixmap(QPixmap::fromImage(images_.back()));
+        paths_->addWidget(caption, 2 * row, column);
+        paths_->addWidget(picture, 2 * row + 1, column);
+        if (++column == 3) {
+            column = 0;
+            ++row;
+        }
+    }
+    QStringList lines;
+    for (const BaselineRatio& ratio : baselineRatios(answered))
+        lines << tr("%1 against %2: extra distance %3 %, turns %4 % (paper: %5)")
+                     .arg(QString::fromStdString(ratio.ours),
+                          QString::fromStdString(ratio.baseline),
+                          number(100.0 * ratio.extraRatio, 1), number(100.0 * ratio.turnsRatio, 1),
+                          QString::fromStdString(paperRatiosText(ratio.baseline)));
+    ratios_->setText(lines.join('\n'));
+    status_->setText(tr("%1 of %2 solvers answered; overlaps are drawn in blue.")
+                         .arg(answered.size())
+                         .arg(runs_.size()));
+}
+
+QString CompareDialog::ratiosText() const {
+    return ratios_->text();
+}
+
+QImage CompareDialog::renderPath(const Plan& plan, const PlanResult& result, QSize size) {
+    QImage image(size, QImage::Format_ARGB32_Premultiplied);
+    image.fill(Qt::white);
+    double x0 = 1e300, y0 = 1e300, x1 = -1e300, y1 = -1e300;
+    for (const Vec2& p : plan.boundary) {
+        x0 = std::min(x0, p.x);
+        y0 = std::min(y0, p.y);
+        x1 = std::max(x1, p.x);
+        y1 = std::max(y1, p.y);
+    }
+    if (!(x1 > x0 && y1 > y0))
+        return image;
+    const double margin = 6.0;
+    const double scale =
+        std::min((size.width() - 2 * margin) / (x1 - x0), (size.height() - 2 * margin) / (y1 - y0));
+    auto map = [&](Vec2 p) { // y up
+        return QPointF(margin + (p.x - x0) * scale, size.height() - margin - (p.y - y0) * scale);
+    };
+    auto ring = [&](const Ring& r) {
+        QPolygonF polygon;
+        for (const Vec2& p : r)
+            polygon << map(p);
+        return polygon;
+    };
+    QPainter painter(&image);
+    painter.setRenderHint(QPainter::Antialiasing);
+    QPainterPath free;
+    free.addPolygon(ring(plan.boundary));
+    for (const Ring& obstacle : plan.obstacles) {
+        QPainterPath hole;
+        hole.addPolygon(ring(obstacle));
+        free = free.subtracted(hole);
+    }
+    painter.fillPath(free, QColor(235, 235, 235));
+    painter.setPen(QPen(QColor(60, 60, 60), 1.2));
+    painter.drawPath(free);
+    QPolygonF path;
+    for (const Vec2& p : result.path.points)
+        path << map(p);
+    painter.setPen(QPen(QColor(150, 30, 30), 1.0));
+    painter.drawPolyline(path);
+    painter.setPen(QPen(QColor(30, 90, 230), 2.0));
+    for (const Segment& s : result.metrics.overlaps)
+        painter.drawLine(map(s.a), map(s.b));
+    return image;
+}
+
+} // namespace fc::ui

@@ -1,0 +1,240 @@
+#include "dialogs/ImportDialog.h"
+
+#include "document/Conversions.h"
+
+#include <QCheckBox>
+#include <QComboBox>
+#include <QDialogButtonBox>
+#include <QDoubleSpinBox>
+#include <QFileInfo>
+#include <QFormLayout>
+#include <QGraphicsPolygonItem>
+#include <QGraphicsScene>
+#include <QGraphicsView>
+#include <QHBoxLayout>
+#include <QHeaderView>
+#include <QLabel>
+#include <QListWidget>
+#include <QPushButton>
+#include <QTableWidget>
+#include <QVBoxLayout>
+
+namespace fc::ui {
+
+const QStringList ImportDialog::kRoles{QStringLiteral("auto"), QStringLiteral("boundary"),
+                                       QStringLiteral("obstacles"), QStringLiteral("rooms"),
+                                       QStringLiteral("ignored")};
+
+namespace {
+
+QString roleLabel(const QString& role) {
+    if (role == QLatin1String("boundary"))
+        return ImportDialog::tr("Boundary");
+    if (role == QLatin1String("obstacles"))
+        return ImportDialog::tr("Obstacles");
+    if (role == QLatin1String("rooms"))
+        return ImportDialog::tr("Rooms");
+    if (role == QLatin1String("ignored"))
+        return ImportDialog::tr("Ignored");
+    return ImportDialog::tr("Auto (by shape)");
+}
+
+} // namespace
+
+ImportDialog::ImportDialog(const QString& path, QWidget* parent)
+    : QDialog(parent), path_(path), layerTable_(new QTableWidget(0, 2, this)),
+      units_(new QDoubleSpinBox(this)), gap_(new QDoubleSpinBox(this)),
+      scene_(new QGraphicsScene(this)), view_(new QGraphicsView(scene_, this)),
+      warnings_(new QListWidget(this)), summary_(new QLabel(this)),
+      newDocument_(new QCheckBox(tr("Open as a new document"), this)),
+      buttons_(new QDialogButtonBox(QDialogButtonBox::Ok | QDialogButtonBox::Cancel, this)) {
+    setWindowTitle(tr("Import %1").arg(QFileInfo(path).fileName()));
+    layerTable_->setHorizontalHeaderLabels({tr("Layer"), tr("Role")});
+    layerTable_->horizontalHeader()->setStretchLastSection(true);
+    layerTable_->verticalHeader()->hide();
+    units_->setDecimals(6);
+    units_->setRange(1e-6, 1e5);
+    units_->setSuffix(tr(" m per unit"));
+    units_->setValue(1.0);
+    gap_->setDecimals(3);
+    gap_->setRange(0.0, 10.0);
+    gap_->setSingleStep(0.01);
+    gap_->setSuffix(tr(" m"));
+    gap_->setValue(ImportOptions{}.gapTolerance);
+    view_->setRenderHint(QPainter::Antialiasing);
+    view_->setMinimumSize(360, 260);
+    view_->scale(1, -1); // y up, as on the canvas
+    summary_->setWordWrap(true);
+
+    auto* form = new QFormLayout;
+    form->addRow(tr("Units:"), units_);
+    form->addRow(tr("Close gaps up to:"), gap_);
+    auto* left = new QVBoxLayout;
+    left->addWidget(layerTable_);
+    left->addLayout(form);
+    auto* right = new QVBoxLayout;
+    right->addWidget(view_, 1);
+    right->addWidget(summary_);
+    right->addWidget(warnings_);
+    auto* columns = new QHBoxLayout;
+    columns->addLayout(left);
+    columns->addLayout(right, 1);
+    auto* layout = new QVBoxLayout(this);
+    layout->addLayout(columns);
+    layout->addWidget(newDocument_);
+    layout->addWidget(buttons_);
+    connect(buttons_, &QDialogButtonBox::accepted, this, &QDialog::accept);
+    connect(buttons_, &QDialogButtonBox::rejected, this, &QDialog::reject);
+
+    try {
+        const ImportPreview preview = previewImport(path.toStdString());
+        if (preview.metresPerUnit)
+            units_->setValue(*preview.metresPerUnit);
+        const bool cad = preview.format == "dxf" || preview.format == "wkt";
+        units_->setEnabled(cad);
+        gap_->setEnabled(preview.format == "dxf");
+        buildLayerTable(preview);
+    } catch (const InputError& e) {
+        error_ = fromStd(e.what());
+        unreadable_ = true;
+    }
+    connect(units_, &QDoubleSpinBox::editingFinished, this, &ImportDialog::refresh);
+    connect(gap_, &QDoubleSpinBox::editingFinished, this, &ImportDialog::refresh);
+    refresh();
+}
+
+void ImportDialog::buildLayerTable(const ImportPreview& preview) {
+    layerTable_->setRowCount(static_cast<int>(preview.layers.size()));
+    for (int row = 0; row < layerTable_->rowCount(); ++row) {
+        const QString layer = fromStd(preview.layers[static_cast<size_t>(row)]);
+        auto* name = new QTableWidgetItem(layer);
+        name->setFlags(name->flags() & ~Qt::ItemIsEditable);
+        layerTable_->setItem(row, 0, name);
+        auto* combo = new QComboBox(layerTable_);
+        for (const QString& role : kRoles)
+            combo->addItem(roleLabel(role), role);
+        const QString guess = fromStd(guessLayerRole(layer.toStdString()));
+        combo->setCurrentIndex(std::max(0, static_cast<int>(kRoles.indexOf(guess))));
+        connect(combo, &QComboBox::currentIndexChanged, this, [this]() {
+            mappingEdited_ = true;
+            refresh();
+        });
+        layerTable_->setCellWidget(row, 1, combo);
+    }
+    layerTable_->setVisible(!preview.layers.empty());
+    layerTable_->resizeColumnToContents(0);
+}
+
+QStringList ImportDialog::layers() const {
+    QStringList names;
+    for (int row = 0; row < layerTable_->rowCount(); ++row)
+        names << layerTable_->item(row, 0)->text();
+    return names;
+}
+
+QString ImportDialog::layerRole(const QString& layer) const {
+    const int row = static_cast<int>(layers().indexOf(layer));
+    if (row < 0)
+        return {};
+    return static_cast<QComboBox*>(layerTable_->cellWidget(row, 1))->currentData().toString();
+}
+
+void ImportDialog::setLayerRole(const QString& layer, const QString& role) {
+    const int row = static_cast<int>(layers().indexOf(layer));
+    const int index = static_cast<int>(kRoles.indexOf(role));
+    if (row >= 0 && index >= 0) // the combo's signal marks the mapping edited and refreshes
+        static_cast<QComboBox*>(layerTable_->cellWidget(row, 1))->setCurrentIndex(index);
+}
+
+void ImportDialog::setMetresPerUnit(double metres) {
+    units_->setValue(metres);
+    refresh();
+}
+
+void ImportDialog::setGapTolerance(double metres) {
+    gap_->setValue(metres);
+    refresh();
+}
+
+void ImportDialog::setOpenAsNewDocument(bool newDocument) {
+    newDocument_->setChecked(newDocument);
+}
+
+bool ImportDialog::openAsNewDocument() const {
+    return newDocument_->isChecked();
+}
+
+ImportOptions ImportDialog::options() const {
+    ImportOptions options;
+    if (units_->isEnabled())
+        options.metresPerUnit = units_->value();
+    options.gapTolerance = gap_->value();
+    if (!mappingEdited_) // the layer-name guesses, as the combos show them
+        return options;
+    const QStringList names = layers();
+    for (const QString& layer : names) {
+        const QString role = layerRole(layer);
+        const std::string name = layer.toStdString();
+        if (role == QLatin1String("boundary"))
+            options.layers.boundary.push_back(name);
+        else if (role == QLatin1String("obstacles"))
+            options.layers.obstacles.push_back(name);
+        else if (role == QLatin1String("rooms"))
+            options.layers.rooms.push_back(name);
+        else if (role == QLatin1String("ignored"))
+            options.layers.ignored.push_back(name);
+    }
+    return options;
+}
+
+QStringList ImportDialog::warnings() const {
+    QStringList list;
+    for (int i = 0; i < warnings_->count(); ++i)
+        list << warnings_->item(i)->text();
+    return list;
+}
+
+void ImportDialog::refresh() {
+    result_.reset();
+    if (!unreadable_) {
+        try {
+            result_ = importPlanFile(path_.toStdString(), options());
+            error_.clear();
+        } catch (const InputError& e) {
+            error_ = fromStd(e.what());
+        }
+    }
+    warnings_->clear();
+    if (result_) {
+        for (const std::string& w : result_->warnings)
+            warnings_->addItem(fromStd(w));
+        const Plan& plan = result_->project.plan;
+        summary_->setText(tr("Free area %1 m², %2 obstacles, %3 rooms")
+                              .arg(freeAreaOf(plan), 0, 'f', 2)
+                              .arg(plan.obstacles.size())
+                              .arg(plan.rooms.size()));
+    } else {
+        summary_->setText(error_);
+    }
+    buttons_->button(QDialogButtonBox::Ok)->setEnabled(result_.has_value());
+    drawPreview();
+}
+
+void ImportDialog::drawPreview() {
+    scene_->clear();
+    if (!result_)
+        return;
+    const Plan& plan = result_->project.plan;
+    QPen pen(Qt::black);
+    pen.setCosmetic(true);
+    scene_->addPolygon(toPolygon(plan.boundary), pen, QColor(235, 240, 250));
+    for (const Ring& obstacle : plan.obstacles)
+        scene_->addPolygon(toPolygon(obstacle), pen, QColor(150, 150, 150));
+    QPen roomPen(QColor(40, 120, 200), 0, Qt::DashLine);
+    roomPen.setCosmetic(true);
+    for (const Room& room : plan.rooms)
+        scene_->addPolygon(toPolygon(room.outline), roomPen);
+    view_->fitInView(scene_->itemsBoundingRect(), Qt::KeepAspectRatio);
+}
+
+} // namespace fc::ui

@@ -1,0 +1,69 @@
+// File > Import: previews a DXF drawing, ROS occupancy map, WKT or GeoJSON file as a plan.
+// The user maps DXF layers to roles, sets the unit and the gap tolerance, sees the result
+// and its warnings, and chooses whether it replaces the current plan or opens as a new
+// document. The setters are the dialog's API for tests and scripts; each re-imports.
+#pragma once
+
+#include "importers/Import.h"
+
+#include <QDialog>
+#include <optional>
+
+class QCheckBox;
+class QDialogButtonBox;
+class QDoubleSpinBox;
+class QGraphicsScene;
+class QGraphicsView;
+class QLabel;
+class QListWidget;
+class QTableWidget;
+
+namespace fc::ui {
+
+class ImportDialog : public QDialog {
+    Q_OBJECT
+public:
+    // Roles offered per layer; "auto" follows the layer-name guess and the shape rule.
+    static const QStringList kRoles; // auto, boundary, obstacles, rooms, ignored
+
+    explicit ImportDialog(const QString& path, QWidget* parent = nullptr);
+
+    QString path() const { return path_; }
+    QStringList layers() const;
+    QString layerRole(const QString& layer) const;
+    void setLayerRole(const QString& layer, const QString& role);
+    void setMetresPerUnit(double metres);
+    void setGapTolerance(double metres);
+    void setOpenAsNewDocument(bool newDocument);
+    bool openAsNewDocument() const;
+
+    ImportOptions options() const;
+    // The latest import with the current options; empty when it failed (see error()).
+    const std::optional<ImportResult>& result() const { return result_; }
+    QString error() const { return error_; }
+    QStringList warnings() const;
+
+public slots:
+    void refresh();
+
+private:
+    void buildLayerTable(const ImportPreview& preview);
+    void drawPreview();
+
+    QString path_;
+    bool mappingEdited_ = false;
+    bool unreadable_ = false; // the preview failed: nothing to import
+    std::optional<ImportResult> result_;
+    QString error_;
+    QTableWidget* layerTable_;
+    QDoubleSpinBox* units_;
+    QDoubleSpinBox* gap_;
+    QGraphicsScene* scene_;
+    QGraphicsView* view_;
+    QListWidget* warnings_;
+    QLabel* summary_;
+    QCheckBox* newDocument_;
+    QDialogButtonBox* buttons_;
+};
+
+} // namespace fc::ui

@@ -1,0 +1,388 @@
+#include "docks/TrainingDock.h"
+
+#include <QComboBox>
+#include <QDir>
+#include <QDoubleSpinBox>
+#include <QEventLoop>
+#include <QFileDialog>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QMessageBox>
+#include <QProgressBar>
+#include <QPushButton>
+#include <QStandardPaths>
+#include <QTimer>
+#include <QVBoxLayout>
+#include <cmath>
+#include <qcustomplot.h>
+
+namespace fc::ui {
+namespace {
+
+constexpr int kRewardGraph = 0, kAverageGraph = 1, kLossGraph = 2, kEpsilonGraph = 3;
+
+QString minutesAndSeconds(double seconds) {
+    const int s = static_cast<int>(std::lround(std::max(0.0, seconds)));
+    return QStringLiteral("%1:%2").arg(s / 60).arg(s % 60, 2, 10, QLatin1Char('0'));
+}
+
+} // namespace
+
+TrainingDock::TrainingDock(QWidget* parent) : QDockWidget(tr("Training"), parent) {
+    setObjectName(QStringLiteral("TrainingDock"));
+    buildUi();
+    worker_ = new TrainingWorker;
+    worker_->moveToThread(&thread_);
+    connect(&thread_, &QThread::finished, worker_, &QObject::deleteLater);
+    connect(worker_, &TrainingWorker::progress, this, &TrainingDock::appendPoints);
+    connect(worker_, &TrainingWorker::finished, this, &TrainingDock::onFinished);
+    connect(worker_, &TrainingWorker::evaluated, this, &TrainingDock::onEvaluated);
+    connect(worker_, &TrainingWorker::evaluationFailed, this, &TrainingDock::onEvaluationFailed);
+    connect(worker_, &TrainingWorker::failed, this, [this](const QString& message) {
+        lastError_ = message;
+        status_->setText(message);
+        emit errorOccurred(message);
+    });
+    thread_.setObjectName(QStringLiteral("floorcover-training"));
+    thread_.start(QThread::LowPriority); // the GUI thread keeps precedence
+    setState(State::Idle);
+}
+
+TrainingDock::~TrainingDock() {
+    worker_->requestStop();
+    worker_->cancelEvaluation();
+    thread_.quit();
+    thread_.wait();
+}
+
+void TrainingDock::buildUi() {
+    auto* body = new QWidget(this);
+    auto* layout = new QVBoxLayout(body);
+
+    auto* controls = new QHBoxLayout;
+    setting_ = new QComboBox(body);
+    // Graph state first: the default, the one that learns on floors of many corners.
+    setting_->addItem(tr("Graph state"), QStringLiteral("graph"));
+    setting_->addItem(tr("Improved"), QStringLiteral("improved"));
+    setting_->addItem(tr("Paper"), QStringLiteral("paper"));
+    setting_->setToolTip(tr("Improved: masking, graph-cost reward, cost channels and a refined "
+                            "walk. Graph state: the same with per-corner features and a "
+                            "per-corner network (faster on large floors). Paper: the published "
+                            "setting."));
+    budget_ = new QDoubleSpinBox(body);
+    budget_->setRange(5.0, 24 * 3600.0);
+    budget_->setValue(300.0);
+    budget_->setSuffix(tr(" s"));
+    budget_->setToolTip(tr("Training time for one run"));
+    startButton_ = new QPushButton(tr("Start"), body);
+    pauseButton_ = new QPushButton(tr("Pause"), body);
+    stopButton_ = new QPushButton(tr("Stop"), body);
+    controls->addWidget(setting_);
+    controls->addWidget(budget_);
+    controls->addWidget(startButton_);
+    controls->addWidget(pauseButton_);
+    controls->addWidget(stopButton_);
+    layout->addLayout(controls);
+
+    progress_ = new QProgressBar(body);
+    progress_->setRange(0, 1000);
+    layout->addWidget(progress_);
+    status_ = new QLabel(tr("No model yet"), body);
+    status_->setWordWrap(true);
+    layout->addWidget(status_);
+
+    plot_ = new QCustomPlot(body);
+    plot_->setMinimumHeight(220);
+    plot_->setNoAntialiasingOnDrag(true);
+    plot_->xAxis->setLabel(tr("Episode"));
+    plot_->yAxis->setLabel(tr("Reward"));
+    plot_->yAxis2->setLabel(tr("Loss / epsilon"));
+    plot_->yAxis2->setVisible(true);
+    plot_->legend->setVisible(true);
+    plot_->legend->setFont(QFont(font().family(), 8));
+    plot_->axisRect()->insetLayout()->setInsetAlignment(0, Qt::AlignBottom | Qt::AlignRight);
+    QCPGraph* reward = plot_->addGraph();
+    reward->setName(tr("Episode reward"));
+    reward->setLineStyle(QCPGraph::lsNone);
+    reward->setScatterStyle(QCPScatterStyle(QCPScatterStyle::ssDisc, QColor(120, 150, 200), 2));
+    QCPGraph* average = plot_->addGraph();
+    average->setName(tr("Moving average (100)"));
+    average->setPen(QPen(QColor(20, 90, 200), 2));
+    QCPGraph* loss = plot_->addGraph(plot_->xAxis, plot_->yAxis2);
+    loss->setName(tr("Loss"));
+    loss->setPen(QPen(QColor(220, 100, 30), 1));
+    QCPGraph* epsilon = plot_->addGraph(plot_->xAxis, plot_->yAxis2);
+    epsilon->setName(tr("Epsilon"));
+    epsilon->setPen(QPen(QColor(120, 120, 120), 1, Qt::DashLine));
+    layout->addWidget(plot_, 1);
+
+    auto* files = new QHBoxLayout;
+    saveButton_ = new QPushButton(tr("Save Model…"), body);
+    loadButton_ = new QPushButton(tr("Load Model…"), body);
+    evaluateButton_ = new QPushButton(tr("Evaluate"), body);
+    evaluateButton_->setToolTip(tr("Plan the model's test queries with it and compare with the "
+                                   "exact or heuristic solver"));
+    files->addWidget(saveButton_);
+    files->addWidget(loadButton_);
+    files->addWidget(evaluateButton_);
+    files->addStretch(1);
+    layout->addLayout(files);
+    setWidget(body);
+
+    connect(startButton_, &QPushButton::clicked, this, &TrainingDock::start);
+    connect(pauseButton_, &QPushButton::clicked, this, [this] {
+        if (state_ == State::Running)
+            pause();
+        else if (state_ == State::Paused)
+            resumeTraining();
+    });
+    connect(stopButton_, &QPushButton::clicked, this, &TrainingDock::stop);
+    connect(saveButton_, &QPushButton::clicked, this, &TrainingDock::saveWithDialog);
+    connect(loadButton_, &QPushButton::clicked, this, &TrainingDock::loadWithDialog);
+    connect(evaluateButton_, &QPushButton::clicked, this, &TrainingDock::evaluate);
+}
+
+void TrainingDock::setPreparedPlan(std::shared_ptr<const PreparedPlan> prepared) {
+    const bool sameGraph = prepared && prepared_ &&
+                           graphFingerprint(prepared->graph) == graphFingerprint(prepared_->graph);
+    prepared_ = std::move(prepared);
+    QMetaObject::invokeMethod(worker_, [w = worker_, p = prepared_] { w->setPlan(p); });
+    if (sameGraph)
+        return;
+    lastEvaluation_.reset();
+    if (evaluating_)
+        worker_->cancelEvaluation(); // its figures would be for the old plan
+    if (state_ == State::Running || state_ == State::Paused) {
+        worker_->requestStop();
+        status_->setText(tr("The plan changed: the model no longer fits it. Start to train for "
+                            "the new plan."));
+    }
+    if (state_ != State::Idle) {
+        setState(State::Idle);
+        modelPath_.clear();
+        emit modelReady(QString());
+    }
+    startButton_->setEnabled(prepared_ != nullptr);
+}
+
+double TrainingDock::budgetSeconds() const {
+    return budget_->value();
+}
+
+void TrainingDock::start() {
+    if (!prepared_) {
+        lastError_ = tr("There is no valid plan to train for.");
+        status_->setText(lastError_);
+        emit errorOccurred(lastError_);
+        return;
+    }
+    if (state_ == State::Running)
+        return;
+    TrainingOptions options = options_;
+    if (!customOptions_)
+        options = TrainingOptions::named(setting_->currentData().toString().toStdString());
+    clearPlot();
+    episodes_ = 0;
+    runStartSeconds_ = 0.0;
+    lastSeconds_ = 0.0;
+    modelPath_.clear();
+    lastError_.clear();
+    lastEvaluation_.reset();
+    const double seconds = budgetSeconds();
+    setState(State::Running);
+    QMetaObject::invokeMethod(
+        worker_, [w = worker_, p = prepared_, options, seconds] { w->start(p, options, seconds); });
+}
+
+void TrainingDock::pause() {
+    if (state_ != State::Running)
+        return;
+    worker_->requestStop();
+    setState(State::Paused); // the worker confirms with finished(Interrupted)
+}
+
+void TrainingDock::resumeTraining() {
+    if (state_ != State::Paused && state_ != State::Finished)
+        return;
+    runStartSeconds_ = lastSeconds_;
+    lastEvaluation_.reset(); // the model is about to change
+    const double seconds = budgetSeconds();
+    setState(State::Running);
+    QMetaObject::invokeMethod(worker_, [w = worker_, seconds] { w->resume(seconds); });
+}
+
+void TrainingDock::stop() {
+    if (evaluating_) { // Stop cancels an evaluation; the model stays as it is
+        worker_->cancelEvaluation();
+        return;
+    }
+    if (state_ == State::Running)
+        worker_->requestStop();
+    if (state_ == State::Running || state_ == State::Paused)
+        setState(State::Finished);
+}
+
+void TrainingDock::appendPoints(const QVector<TrainingPoint>& points) {
+    if (points.isEmpty())
+        return;
+    for (const TrainingPoint& p : points) {
+        const double x = static_cast<double>(p.episode);
+        plot_->graph(kRewardGraph)->addData(x, p.reward);
+        plot_->graph(kAverageGraph)->addData(x, p.average);
+        if (!std::isnan(p.loss))
+            plot_->graph(kLossGraph)->addData(x, p.loss);
+        plot_->graph(kEpsilonGraph)->addData(x, p.epsilon);
+    }
+    const TrainingPoint& last = points.back();
+    episodes_ = last.episode;
+    lastSeconds_ = last.seconds;
+    plot_->rescaleAxes();
+    plot_->replot(QCustomPlot::rpQueuedReplot);
+    updateProgress(last.seconds);
+    status_->setText(tr("Episode %1 · %2 steps/s · epsilon %3 · average reward %4")
+                         .arg(last.episode)
+                         .arg(last.stepsPerSecond, 0, 'f', 0)
+                         .arg(last.epsilon, 0, 'f', 2)
+                         .arg(last.average, 0, 'f', 3));
+}
+
+void TrainingDock::updateProgress(double seconds) {
+    const double budget = budgetSeconds();
+    const double done = std::clamp((seconds - runStartSeconds_) / budget, 0.0, 1.0);
+    progress_->setValue(static_cast<int>(std::lround(1000.0 * done)));
+    progress_->setFormat(tr("%1% · %2 left")
+                             .arg(static_cast<int>(100.0 * done))
+                             .arg(minutesAndSeconds(budget * (1.0 - done))));
+}
+
+void TrainingDock::onFinished(TrainingEnd end, double trainedSeconds, long episodes) {
+    if (end == TrainingEnd::Failed) {
+        setState(State::Idle);
+        return;
+    }
+    episodes_ = episodes;
+    lastSeconds_ = trainedSeconds;
+    if (state_ == State::Running)
+        setState(end == TrainingEnd::BudgetReached ? State::Finished : State::Paused);
+    if (end == TrainingEnd::BudgetReached)
+        progress_->setValue(progress_->maximum());
+    // Offer the model to the planner: to its file if it has one, else to the cache.
+    const QString path = modelPath_.isEmpty() ? cacheModelPath() : modelPath_;
+    if (saveModel(path))
+        status_->setText(tr("Model after %1 episodes (%2 of training) ready for solver dqn")
+                             .arg(episodes)
+                             .arg(minutesAndSeconds(trainedSeconds)));
+}
+
+bool TrainingDock::saveModel(const QString& path) {
+    if (state_ == State::Running) {
+        lastError_ = tr("Pause the training before saving the model.");
+        return false;
+    }
+    // Connected before the request, so the answer cannot be missed.
+    QEventLoop loop;
+    QString error;
+    const auto connection = connect(worker_, &TrainingWorker::saved, &loop,
+                                    [&](const QString& savedPath, const QString& message) {
+                                        if (savedPath != path)
+                                            return;
+                                        error = message;
+                                        loop.quit();
+                                    });
+    QMetaObject::invokeMethod(worker_, [w = worker_, path] { w->save(path); });
+    loop.exec();
+    disconnect(connection);
+    if (!error.isEmpty()) {
+        lastError_ = tr("Cannot save the model to %1: %2").arg(path, error);
+        status_->setText(lastError_);
+        emit errorOccurred(lastError_);
+        return false;
+    }
+    modelPath_ = path;
+    emit modelReady(path);
+    return true;
+}
+
+bool TrainingDock::loadModel(const QString& path) {
+    if (state_ == State::Running) {
+        lastError_ = tr("Stop the training before loading a model.");
+        return false;
+    }
+    QEventLoop loop;
+    bool ok = false;
+    QString error;
+    auto loaded =
+        connect(worker_, &TrainingWorker::modelLoaded, &loop, [&](const QString&, long episodes) {
+            ok = true;
+            episodes_ = episodes;
+            loop.quit();
+        });
+    auto failed = connect(worker_, &TrainingWorker::failed, &loop, [&](const QString& message) {
+        error = message;
+        loop.quit();
+    });
+    QMetaObject::invokeMethod(worker_, [w = worker_, path] { w->resume(0.0, path); });
+    loop.exec();
+    disconnect(loaded);
+    disconnect(failed);
+    if (!ok) {
+        lastError_ = error;
+        return false;
+    }
+    clearPlot();
+    modelPath_ = path;
+    lastEvaluation_.reset();
+    setState(State::Finished);
+    status_->setText(tr("Loaded %1 (%2 episodes of training)").arg(path).arg(episodes_));
+    emit modelReady(path);
+    return true;
+}
+
+void TrainingDock::saveWithDialog() {
+    const QString path = QFileDialog::getSaveFileName(this, tr("Save Model"), modelPath_,
+                                                      tr("FloorCover DQN model (*.fcdqn)"));
+    if (!path.isEmpty() && !saveModel(path))
+        QMessageBox::warning(this, tr("Save Model"), lastError_);
+}
+
+void TrainingDock::loadWithDialog() {
+    const QString path = QFileDialog::getOpenFileName(this, tr("Load Model"), modelPath_,
+                                                      tr("FloorCover DQN model (*.fcdqn)"));
+    if (!path.isEmpty() && !loadModel(path))
+        QMessageBox::warning(this, tr("Load Model"), lastError_);
+}
+
+QString TrainingDock::cacheModelPath() const {
+    QDir dir(QStandardPaths::writableLocation(QStandardPaths::CacheLocation));
+    dir.mkpath(QStringLiteral("."));
+    return dir.filePath(QStringLiteral("current-plan.fcdqn"));
+}
+
+void TrainingDock::clearPlot() {
+    for (int i = 0; i < plot_->graphCount(); ++i)
+        plot_->graph(i)->data()->clear();
+    plot_->replot();
+    progress_->setValue(0);
+    progress_->setFormat(tr("%p%"));
+}
+
+int TrainingDock::plottedPoints() const {
+    return plot_->graph(kRewardGraph)->dataCount();
+}
+
+void TrainingDock::setState(State state) {
+    state_ = state;
+    // An evaluation holds the worker: nothing else starts until it answers.
+    const bool running = state == State::Running || evaluating_;
+    startButton_->setEnabled(!running && prepared_ != nullptr);
+    pauseButton_->setEnabled(!evaluating_ && (running || state == State::Paused));
+    pauseButton_->setText(state == State::Paused ? tr("Resume") : tr("Pause"));
+    stopButton_->setEnabled(running || state == State::Paused);
+    setting_->setEnabled(!running);
+    saveButton_->setEnabled(!evaluating_ && (state == State::Paused || state == State::Finished));
+    loadButton_->setEnabled(!running);
+    evaluateButton_->setEnabled(!running && (state == State::Paused || state == State::Finished));
+    emit stateChanged(state);
+}
+
+} // namespace fc::ui

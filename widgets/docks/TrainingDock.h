@@ -1,0 +1,108 @@
+// The training dock (issue 4, item 6): start, pause/resume and stop the DQN training for the
+// current plan on a worker thread, a live QCustomPlot of episode reward and its moving
+// average with loss and epsilon, a progress bar with the time left, and saving/loading the
+// model. When a model is ready it is saved (to the chosen file, or to the cache) and offered
+// to the planner through modelReady(), so that solver "dqn" uses it.
+#pragma once
+
+#include "tasks/TrainingWorker.h"
+
+#include <QDockWidget>
+#include <QElapsedTimer>
+#include <QThread>
+#include <memory>
+#include <optional>
+
+class QComboBox;
+class QCustomPlot;
+class QDoubleSpinBox;
+class QLabel;
+class QProgressBar;
+class QPushButton;
+
+namespace fc::ui {
+
+class TrainingDock : public QDockWidget {
+    Q_OBJECT
+public:
+    enum class State { Idle, Running, Paused, Finished };
+
+    explicit TrainingDock(QWidget* parent = nullptr);
+    ~TrainingDock() override;
+
+    // The plan to train for; a different graph invalidates the current model.
+    void setPreparedPlan(std::shared_ptr<const fc::PreparedPlan> prepared);
+    // Small networks for tests and quick demonstrations.
+    void setTrainingOptions(const fc::TrainingOptions& options) {
+        options_ = options;
+        customOptions_ = true;
+    }
+
+    State state() const { return state_; }
+    QString modelPath() const { return modelPath_; }
+    long episodes() const { return episodes_; }
+    QCustomPlot* plot() const { return plot_; }
+    int plottedPoints() const;
+    QString lastError() const { return lastError_; }
+    bool evaluating() const { return evaluating_; }
+    const std::optional<TrainingEvaluation>& lastEvaluation() const { return lastEvaluation_; }
+
+public slots:
+    void start();
+    void pause();
+    void resumeTraining();
+    void stop();
+    // Saves synchronously from the caller's point of view (waits for the worker).
+    bool saveModel(const QString& path);
+    bool loadModel(const QString& path);
+    // Measures the model on the trainer's fixed test queries on the worker thread
+    // (TrainingEvaluation.cpp); the result shows in the status line.
+    void evaluate();
+
+signals:
+    void stateChanged(fc::ui::TrainingDock::State state);
+    void modelReady(const QString& path); // empty when the model no longer fits the plan
+    void errorOccurred(const QString& message);
+
+private:
+    void buildUi();
+    void setState(State state);
+    void appendPoints(const QVector<fc::ui::TrainingPoint>& points);
+    void onFinished(fc::ui::TrainingEnd end, double trainedSeconds, long episodes);
+    void updateProgress(double seconds);
+    void clearPlot();
+    void onEvaluated(const fc::ui::TrainingEvaluation& result);
+    void onEvaluationFailed(const QString& message);
+    void saveWithDialog();
+    void loadWithDialog();
+    QString cacheModelPath() const;
+    double budgetSeconds() const;
+
+    QThread thread_;
+    TrainingWorker* worker_ = nullptr; // lives on thread_
+    std::shared_ptr<const fc::PreparedPlan> prepared_;
+    fc::TrainingOptions options_;
+    bool customOptions_ = false;
+    State state_ = State::Idle;
+    QString modelPath_;
+    QString lastError_;
+    long episodes_ = 0;
+    double runStartSeconds_ = 0.0; // trained seconds when this run began
+    double lastSeconds_ = 0.0;
+    bool evaluating_ = false;
+    std::optional<TrainingEvaluation> lastEvaluation_;
+
+    QComboBox* setting_ = nullptr;
+    QDoubleSpinBox* budget_ = nullptr;
+    QPushButton* startButton_ = nullptr;
+    QPushButton* pauseButton_ = nullptr;
+    QPushButton* stopButton_ = nullptr;
+    QPushButton* saveButton_ = nullptr;
+    QPushButton* loadButton_ = nullptr;
+    QPushButton* evaluateButton_ = nullptr;
+    QProgressBar* progress_ = nullptr;
+    QLabel* status_ = nullptr;
+    QCustomPlot* plot_ = nullptr;
+};
+
+} // namespace fc::ui

@@ -1,0 +1,80 @@
+#include "document/DocumentFiles.h"
+
+#include "document/Conversions.h"
+#include "document/Document.h"
+#include "model/Validation.h"
+
+#include <QCoreApplication>
+#include <QFile>
+#include <QFileInfo>
+
+namespace fc::ui {
+
+const char* const kSamplePlanPath = ":/plans/office.geojson";
+
+namespace {
+
+// The translation context of this file's messages (lupdate reads the macro).
+struct DocumentFilesText {
+    Q_DECLARE_TR_FUNCTIONS(fc::ui::DocumentFiles)
+};
+
+// Qt resources are not visible to the planner's file functions: read them here.
+Project loadResource(const QString& path) {
+    QFile file(path);
+    if (!file.open(QIODevice::ReadOnly))
+        throw InputError(path.toStdString() + ": cannot read the embedded file");
+    const std::string text = file.readAll().toStdString();
+    try {
+        Project project;
+        if (path.endsWith(QLatin1String(".fcproj")))
+            project = readProject(text);
+        else
+            project.plan = readGeoJsonPlan(text);
+        project.plan.name = QFileInfo(path).completeBaseName().toStdString();
+        return project;
+    } catch (const InputError& e) {
+        throw InputError(path.toStdString() + ": " + e.what());
+    }
+}
+
+} // namespace
+
+std::unique_ptr<Document> loadDocument(const QString& path, QString* error) {
+    try {
+        Project project = path.startsWith(QLatin1Char(':')) ? loadResource(path)
+                                                            : loadProjectFile(path.toStdString());
+        try {
+            // A file that parses but cannot be planned is refused like a broken one: the
+            // editor only ever holds plans the planner accepts.
+            project.robot.validate();
+            validatePlan(normalizedPlan(project.plan), project.robot);
+        } catch (const InputError& e) {
+            throw InputError(path.toStdString() + ": " + e.what());
+        }
+        auto document = std::make_unique<Document>(std::move(project));
+        if (path.endsWith(QLatin1String(".fcproj"), Qt::CaseInsensitive) &&
+            !path.startsWith(QLatin1Char(':')))
+            document->setFileName(QFileInfo(path).absoluteFilePath());
+        return document;
+    } catch (const std::exception& e) {
+        if (error)
+            *error = fromStd(e.what());
+        return nullptr;
+    }
+}
+
+bool saveDocument(Document& document, const QString& path, QString* error) {
+    try {
+        writeFileAtomically(path.toStdString(), writeProject(document.project()));
+    } catch (const std::exception& e) {
+        if (error)
+            *error = DocumentFilesText::tr("Cannot save %1: %2").arg(path, fromStd(e.what()));
+        return false;
+    }
+    document.setFileName(QFileInfo(path).absoluteFilePath());
+    document.markSaved();
+    return true;
+}
+
+} // namespace fc::ui

@@ -1,0 +1,315 @@
+#include "window/MainWindow.h"
+
+#include "document/Autosaver.h"
+#include "canvas/CanvasView.h"
+#include "dialogs/CompareDialog.h"
+#include "document/Document.h"
+#include "document/DocumentFiles.h"
+#include "docks/LegendDock.h"
+#include "canvas/PathPreview.h"
+#include "docks/PathPreviewBar.h"
+#include "canvas/PlanScene.h"
+#include "tasks/PlanningController.h"
+#include "docks/PlanningDock.h"
+#include "dialogs/PreferencesDialog.h"
+#include "modes/tiling/TilingMode.h"
+#include "tools/DrawPolygonTool.h"
+#include "tools/EditVerticesTool.h"
+#include "tools/PickRoomTool.h"
+#include "tools/PlaceEndpointTool.h"
+#include "tools/ToolManager.h"
+#include "docks/TrainingDock.h"
+
+#include <QAction>
+#include <QApplication>
+#include <QCloseEvent>
+#include <QDockWidget>
+#include <QLabel>
+#include <QMenuBar>
+#include <QMessageBox>
+#include <QStatusBar>
+#include <QToolBar>
+#include <QUndoGroup>
+#include <QUndoStack>
+#include <QUndoView>
+
+namespace fc::ui {
+
+MainWindow::MainWindow(QWidget* parent)
+    : QMainWindow(parent), undoGroup_(new QUndoGroup(this)), scene_(new PlanScene(this)),
+      view_(new CanvasView(this)), planner_(new PlanningController(this)),
+      tools_(new ToolManager(this)), planningDock_(new PlanningDock(this)),
+      autosaver_(new Autosaver(this)) {
+    setObjectName(QStringLiteral("MainWindow"));
+    setAcceptDrops(true);
+    view_->setScene(scene_);
+    setCentralWidget(view_);
+    scene_->setPlanningController(planner_);
+    planningDock_->setPlanningController(planner_);
+    addDockWidget(Qt::RightDockWidgetArea, planningDock_);
+    preview_ = new PathPreview(scene_, planner_, this);
+    planningDock_->addSection(new PathPreviewBar(preview_));
+    trainingDock_ = new TrainingDock(this);
+    addDockWidget(Qt::RightDockWidgetArea, trainingDock_);
+    // Training follows the plan's graph; its model serves solver "dqn".
+    connect(planner_, &PlanningController::preparedChanged, this,
+            [this] { trainingDock_->setPreparedPlan(planner_->prepared()); });
+    connect(trainingDock_, &TrainingDock::modelReady, planner_, &PlanningController::setModelPath);
+    tilingMode_ = new TilingMode(this, scene_);
+
+    createTools();
+    createMenus();
+    createStatusBar();
+    connect(planner_, &PlanningController::errorChanged, this, &MainWindow::showProblem);
+    setDocument(std::make_unique<Document>());
+    resize(1280, 800);
+}
+
+MainWindow::~MainWindow() {
+    delete preview_; // its robot item lives in the scene
+    // The scene and the tools refer to the document: detach them before it goes.
+    tools_->setContext(nullptr, nullptr);
+    scene_->setDocument(nullptr);
+    planner_->setDocument(nullptr);
+}
+
+void MainWindow::createTools() {
+    tools_->registerTool(new EditVerticesTool);
+    tools_->registerTool(new DrawPolygonTool(PolygonRole::Boundary));
+    tools_->registerTool(new DrawPolygonTool(PolygonRole::Obstacle));
+    tools_->registerTool(new DrawPolygonTool(PolygonRole::Room));
+    tools_->registerTool(new PickRoomTool);
+    tools_->registerTool(new PlaceEndpointTool(Endpoint::Start));
+    tools_->registerTool(new PlaceEndpointTool(Endpoint::End));
+    connect(tools_, &ToolManager::activeToolChanged, view_, &CanvasView::setTool);
+    connect(tools_, &ToolManager::statusMessage, this,
+            [this](const QString& message) { statusBar()->showMessage(message, 10000); });
+    view_->setTool(tools_->activeTool());
+
+    auto* toolBar = addToolBar(tr("Tools"));
+    toolBar->setObjectName(QStringLiteral("ToolsToolBar"));
+    toolBar->addActions(tools_->actions());
+}
+
+void MainWindow::createMenus() {
+    createFileMenu();
+
+    QMenu* edit = menuBar()->addMenu(tr("&Edit"));
+    QAction* undo = undoGroup_->createUndoAction(this, tr("&Undo"));
+    undo->setShortcut(QKeySequence::Undo);
+    QAction* redo = undoGroup_->createRedoAction(this, tr("&Redo"));
+    redo->setShortcuts({QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_Z), QKeySequence::Redo});
+    edit->addAction(undo);
+    edit->addAction(redo);
+    edit->addSeparator();
+    QAction* preferences = edit->addAction(tr("&Preferences…"), this, [this]() {
+        PreferencesDialog dialog(this);
+        dialog.exec();
+    });
+    preferences->setMenuRole(QAction::PreferencesRole);
+
+    createViewMenu();
+
+    QMenu* toolsMenu = menuBar()->addMenu(tr("&Tools"));
+    toolsMenu->addActions(tools_->actions());
+
+    QMenu* planMenu = menuBar()->addMenu(tr("&Plan"));
+    QAction* plan = planMenu->addAction(tr("&Plan Path"), planner_, &PlanningController::plan);
+    planMenu->addAction(tr("&Compare Solvers…"), this, [this] {
+        PlanRequest request = planRequestFor(document_->project());
+        request.modelPath = planner_->modelPath();
+        auto* dialog = new CompareDialog(std::move(request), this);
+        dialog->setAttribute(Qt::WA_DeleteOnClose);
+        dialog->show();
+        dialog->start();
+    });
+    plan->setShortcut(Qt::Key_F5);
+    planMenu->addSeparator();
+    planMenu->addAction(tilingMode_->action());
+
+    QMenu* help = menuBar()->addMenu(tr("&Help"));
+    help->addAction(tr("&About FloorCover"), this, [this]() {
+        QMessageBox::about(this, tr("About FloorCover"),
+                           tr("FloorCover %1\nCoverage path planning for cleaning and "
+                              "disinfection robots.")
+                               .arg(QApplication::applicationVersion()));
+    });
+}
+
+void MainWindow::createViewMenu() {
+    QMenu* viewMenu = menuBar()->addMenu(tr("&View"));
+    viewMenu->addAction(tr("&Fit to Plan"), QKeySequence(Qt::CTRL | Qt::Key_0), view_,
+                        &CanvasView::fitToPlan);
+    viewMenu->addAction(tr("Zoom &In"), QKeySequence::ZoomIn, view_, &CanvasView::zoomIn);
+    viewMenu->addAction(tr("Zoom &Out"), QKeySequence::ZoomOut, view_, &CanvasView::zoomOut);
+    viewMenu->addSeparator();
+    QAction* grid = viewMenu->addAction(tr("Show &Grid"));
+    grid->setCheckable(true);
+    grid->setChecked(view_->isGridVisible());
+    connect(grid, &QAction::toggled, view_, &CanvasView::setGridVisible);
+    QAction* snapGrid = viewMenu->addAction(tr("Snap to G&rid"));
+    snapGrid->setCheckable(true);
+    snapGrid->setChecked(view_->snapper().snapToGrid);
+    connect(snapGrid, &QAction::toggled, this,
+            [this](bool on) { view_->snapper().snapToGrid = on; });
+    QAction* snapVertices = viewMenu->addAction(tr("Snap to &Vertices"));
+    snapVertices->setCheckable(true);
+    snapVertices->setChecked(view_->snapper().snapToVertices);
+    connect(snapVertices, &QAction::toggled, this,
+            [this](bool on) { view_->snapper().snapToVertices = on; });
+
+    QMenu* overlays = viewMenu->addMenu(tr("&Overlays"));
+    for (int i = 0; i < kOverlayKindCount; ++i) {
+        const auto kind = static_cast<OverlayKind>(i);
+        QAction* action = overlays->addAction(overlayName(kind));
+        action->setCheckable(true);
+        action->setChecked(scene_->overlays()->isVisible(kind));
+        connect(action, &QAction::toggled, this,
+                [this, kind](bool on) { scene_->overlays()->setVisible(kind, on); });
+        overlayActions_[i] = action;
+    }
+    viewMenu->addSeparator();
+    viewMenu->addAction(planningDock_->toggleViewAction());
+    legendDock_ = new LegendDock(overlayActions_, this);
+    addDockWidget(Qt::RightDockWidgetArea, legendDock_);
+    // The undo history, as in Tiled: click an entry to go back to that state.
+    auto* history = new QDockWidget(tr("History"), this);
+    history->setObjectName(QStringLiteral("HistoryDock"));
+    history->setWidget(new QUndoView(undoGroup_));
+    addDockWidget(Qt::RightDockWidgetArea, history);
+    tabifyDockWidget(legendDock_, history);
+    tabifyDockWidget(history, trainingDock_);
+    tabifyDockWidget(trainingDock_, planningDock_);
+    planningDock_->raise(); // the planning panel in front
+    viewMenu->addAction(legendDock_->toggleViewAction());
+    viewMenu->addAction(history->toggleViewAction());
+    viewMenu->addAction(trainingDock_->toggleViewAction());
+}
+
+void MainWindow::createStatusBar() {
+    problem_ = new QLabel;
+    problem_->setStyleSheet(QStringLiteral("color: #d03030"));
+    coordinates_ = new QLabel;
+    coordinates_->setMinimumWidth(200);
+    statusBar()->addPermanentWidget(problem_, 1);
+    statusBar()->addPermanentWidget(coordinates_);
+    connect(view_, &CanvasView::cursorMoved, this, [this](QPointF p) {
+        coordinates_->setText(tr("x %1 m   y %2 m").arg(p.x(), 0, 'f', 2).arg(p.y(), 0, 'f', 2));
+    });
+}
+
+void MainWindow::setDocument(std::unique_ptr<Document> document) {
+    std::unique_ptr<Document> previous = std::move(document_);
+    document_ = std::move(document);
+    Document* doc = document_.get();
+    undoGroup_->addStack(doc->undoStack());
+    undoGroup_->setActiveStack(doc->undoStack());
+    scene_->setDocument(doc);
+    view_->setDocument(doc);
+    planner_->setDocument(doc);
+    tilingMode_->setDocument(doc);
+    planningDock_->setDocument(doc);
+    tools_->setContext(doc, scene_);
+    autosaver_->setDocument(doc);
+    connect(doc, &Document::modifiedChanged, this, &MainWindow::updateTitle);
+    connect(doc, &Document::fileNameChanged, this, &MainWindow::updateTitle);
+    connect(doc, &Document::editRejected, this, &MainWindow::showProblem);
+    // A successful edit (or undo) clears the last refusal; the planner then reports anew.
+    connect(doc->undoStack(), &QUndoStack::indexChanged, this,
+            [this]() { showProblem(planner_->errorMessage()); });
+    showProblem(QString());
+    updateTitle();
+    view_->fitToPlan();
+    previous.reset(); // after everything points at the new document
+}
+
+void MainWindow::updateTitle() {
+    setWindowTitle(tr("%1[*] – FloorCover").arg(document_->displayName()));
+    setWindowModified(document_->isModified());
+}
+
+void MainWindow::showError(const QString& message) {
+    lastError_ = message;
+    statusBar()->showMessage(message, 15000);
+    if (dialogsEnabled_)
+        QMessageBox::critical(this, tr("FloorCover"), message);
+}
+
+void MainWindow::showProblem(const QString& message) {
+    problem_->setText(message);
+    if (!message.isEmpty())
+        lastError_ = message;
+}
+
+bool MainWindow::maybeSave() {
+    if (!document_->isModified() || !dialogsEnabled_)
+        return true;
+    const auto answer = QMessageBox::warning(
+        this, tr("Unsaved changes"),
+        tr("%1 has unsaved changes. Save them?").arg(document_->displayName()),
+        QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel, QMessageBox::Save);
+    if (answer == QMessageBox::Save)
+        return save();
+    return answer == QMessageBox::Discard;
+}
+
+void MainWindow::closeEvent(QCloseEvent* event) {
+    if (!maybeSave()) {
+        event->ignore();
+        return;
+    }
+    autosaver_->discard(); // a normal end: nothing to recover next time
+    event->accept();
+}
+
+void MainWindow::changeEvent(QEvent* event) {
+    if (event->type() == QEvent::PaletteChange)
+        scene_->restyle();
+    QMainWindow::changeEvent(event);
+}
+
+bool MainWindow::recoverAutosave() {
+    if (!Autosaver::hasRecovery())
+        return false;
+    if (dialogsEnabled_ &&
+        QMessageBox::question(this, tr("Recover unsaved changes"),
+                              tr("FloorCover did not close normally last time. Recover the "
+                                 "unsaved changes?")) != QMessageBox::Yes) {
+        autosaver_->discard();
+        return false;
+    }
+    QString error;
+    std::unique_ptr<Document> document = Autosaver::recover(&error);
+    if (!document) {
+        showError(error);
+        return false;
+    }
+    setDocument(std::move(document));
+    statusBar()->showMessage(tr("Recovered the unsaved changes of the last session."), 10000);
+    return true;
+}
+
+void MainWindow::newDocument() {
+    setDocument(std::make_unique<Document>());
+    tools_->setActiveTool(tools_->findTool(QStringLiteral("drawBoundary")));
+}
+
+bool MainWindow::openFile(const QString& path) {
+    QString error;
+    std::unique_ptr<Document> document = loadDocument(path, &error);
+    if (!document) {
+        showError(error);
+        return false;
+    }
+    setDocument(std::move(document));
+    if (!path.startsWith(QLatin1Char(':')))
+        addRecentFile(path);
+    statusBar()->showMessage(tr("Opened %1").arg(path), 5000);
+    return true;
+}
+
+void MainWindow::openSample() {
+    openFile(QString::fromLatin1(kSamplePlanPath));
+}
+
+} // namespace fc::ui

@@ -1,0 +1,131 @@
+// The editor's main window: canvas, tools, planning dock, menus and file handling.
+// The dialog-free entry points (openFile, saveFile, exportPath, ...) are what the menus
+// call after asking for a file name, and what the GUI tests and --screenshot drive.
+#pragma once
+
+#include "canvas/OverlayLayer.h"
+#include "formats/Export.h"
+#include "importers/Import.h"
+
+#include <QMainWindow>
+#include <array>
+#include <memory>
+
+class QAction;
+class QLabel;
+class QMenu;
+class QUndoGroup;
+
+namespace fc::ui {
+
+class CanvasView;
+class Autosaver;
+class Document;
+class LegendDock;
+class PathPreview;
+class PlanScene;
+class PlanningController;
+class PlanningDock;
+class TilingMode;
+class ToolManager;
+class TrainingDock;
+
+class MainWindow : public QMainWindow {
+    Q_OBJECT
+public:
+    explicit MainWindow(QWidget* parent = nullptr);
+    ~MainWindow() override;
+
+    Document* document() const { return document_.get(); }
+    CanvasView* view() const { return view_; }
+    PlanScene* scene() const { return scene_; }
+    ToolManager* toolManager() const { return tools_; }
+    PlanningController* planningController() const { return planner_; }
+    PlanningDock* planningDock() const { return planningDock_; }
+    TrainingDock* trainingDock() const { return trainingDock_; }
+    TilingMode* tilingMode() const { return tilingMode_; }
+    LegendDock* legendDock() const { return legendDock_; }
+    PathPreview* pathPreview() const { return preview_; }
+    QAction* overlayAction(OverlayKind kind) const {
+        return overlayActions_[static_cast<int>(kind)];
+    }
+
+    // Replaces the document by the file's; on failure shows the message and keeps the
+    // current document.
+    bool openFile(const QString& path);
+    // File > Import without the dialog: the imported plan replaces the current document's
+    // (one undoable edit, robot settings kept) or opens as a new, unsaved document.
+    bool applyImport(const QString& path, const ImportResult& imported, bool asNewDocument);
+    void openSample();
+    void newDocument();
+    bool saveFile(const QString& path);
+    // Path in the format its extension implies (.geojson .csv .json .yaml .svg .pdf .wkt).
+    bool exportPath(const QString& path);
+    // Any export of the CLI's `export` command (MainWindowExport.cpp): the planned path, the
+    // plan or its zones; the path subject needs a planned document.
+    bool exportFile(const QString& path, ExportFormat format, ExportSubject subject);
+    // The visible canvas as .png or .svg.
+    bool exportView(const QString& path);
+    // One-page PDF report of the plan, path, metrics and robot profile.
+    bool exportReport(const QString& path);
+    // Opens PLAN (or the sample), plans, and saves the whole window as a PNG.
+    bool renderScreenshot(const QString& path, const QString& planPath, QString* error);
+
+    // Offers the document of a session that ended without saving (asks first when dialogs
+    // are on). Returns true when it was recovered.
+    bool recoverAutosave();
+    Autosaver* autosaver() const { return autosaver_; }
+
+    // Modal dialogs off (tests, --screenshot): errors go to the status bar and lastError(),
+    // and unsaved changes are discarded without asking.
+    void setDialogsEnabled(bool enabled) { dialogsEnabled_ = enabled; }
+    QString lastError() const { return lastError_; }
+
+protected:
+    void closeEvent(QCloseEvent* event) override;
+    void changeEvent(QEvent* event) override; // palette changes restyle the scene
+    // Dropping a plan or project file on the window opens it.
+    void dragEnterEvent(QDragEnterEvent* event) override;
+    void dropEvent(QDropEvent* event) override;
+
+private:
+    void createTools();
+    void createMenus();
+    void createFileMenu();
+    void createViewMenu();
+    void createStatusBar();
+    void setDocument(std::unique_ptr<Document> document);
+    void showError(const QString& message);
+    void showProblem(const QString& message);
+    bool maybeSave();
+    bool save();
+    bool saveAs();
+    void openWithDialog();
+    void importWithDialog(); // MainWindowImport.cpp
+    void exportWithDialog(ExportSubject subject);
+    void exportViewWithDialog(const QString& suffix);
+    void addRecentFile(const QString& path);
+    void updateRecentFilesMenu();
+    void updateTitle();
+
+    std::unique_ptr<Document> document_;
+    QUndoGroup* undoGroup_;
+    PlanScene* scene_;
+    CanvasView* view_;
+    PlanningController* planner_;
+    ToolManager* tools_;
+    PlanningDock* planningDock_;
+    TrainingDock* trainingDock_ = nullptr;
+    LegendDock* legendDock_ = nullptr;
+    PathPreview* preview_ = nullptr;
+    TilingMode* tilingMode_ = nullptr;
+    Autosaver* autosaver_;
+    QMenu* recentFilesMenu_ = nullptr;
+    QLabel* coordinates_ = nullptr;
+    QLabel* problem_ = nullptr;
+    std::array<QAction*, kOverlayKindCount> overlayActions_{};
+    bool dialogsEnabled_ = true;
+    QString lastError_;
+};
+
+} // namespace fc::ui

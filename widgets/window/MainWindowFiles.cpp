@@ -1,0 +1,252 @@
+// MainWindow: the File menu, recent files, saving, exports and the screenshot command.
+#include "canvas/CanvasView.h"
+#include "document/Conversions.h"
+#include "document/Document.h"
+#include "document/DocumentFiles.h"
+#include "window/MainWindow.h"
+#include "window/PdfReport.h"
+#include "canvas/PlanScene.h"
+#include "tasks/PlanningController.h"
+
+#include <QAction>
+#include <QApplication>
+#include <QDragEnterEvent>
+#include <QDropEvent>
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QImage>
+#include <QMenu>
+#include <QMenuBar>
+#include <QMimeData>
+#include <QPainter>
+#include <QSettings>
+#include <QStatusBar>
+#include <QSvgGenerator>
+#include <QUrl>
+
+namespace fc::ui {
+
+namespace {
+
+const char* const kRecentFilesKey = "recentFiles";
+constexpr int kMaxRecentFiles = 8;
+
+QString withSuffix(const QString& path, const QString& suffix) {
+    return QFileInfo(path).suffix().isEmpty() ? path + QLatin1Char('.') + suffix : path;
+}
+
+} // namespace
+
+void MainWindow::createFileMenu() {
+    QMenu* file = menuBar()->addMenu(tr("&File"));
+    file->addAction(tr("&New"), QKeySequence::New, this, [this]() {
+        if (maybeSave())
+            newDocument();
+    });
+    file->addAction(tr("&Open…"), QKeySequence::Open, this, &MainWindow::openWithDialog);
+    file->addAction(tr("Open &Sample Plan"), this, [this]() {
+        if (maybeSave())
+            openSample();
+    });
+    file->addAction(tr("&Import…"), QKeySequence(Qt::CTRL | Qt::Key_I), this,
+                    &MainWindow::importWithDialog);
+    recentFilesMenu_ = file->addMenu(tr("Open &Recent"));
+    updateRecentFilesMenu();
+    file->addSeparator();
+    file->addAction(tr("&Save"), QKeySequence::Save, this, &MainWindow::save);
+    file->addAction(tr("Save &As…"), QKeySequence::SaveAs, this, &MainWindow::saveAs);
+    file->addSeparator();
+    file->addAction(tr("&Export Path…"), QKeySequence(Qt::CTRL | Qt::Key_E), this,
+                    [this]() { exportWithDialog(ExportSubject::Path); });
+    file->addAction(tr("Export &Zones…"), this,
+                    [this]() { exportWithDialog(ExportSubject::Zones); });
+    file->addAction(tr("Export P&lan (WGS84 GeoJSON, WKT)…"), this,
+                    [this]() { exportWithDialog(ExportSubject::Plan); });
+    file->addAction(tr("Export View as &PNG…"), this,
+                    [this]() { exportViewWithDialog(QStringLiteral("png")); });
+    file->addAction(tr("Export View as S&VG…"), this,
+                    [this]() { exportViewWithDialog(QStringLiteral("svg")); });
+    file->addAction(tr("Export &Report as PDF…"), this, [this]() {
+        const QString path = QFileDialog::getSaveFileName(
+            this, tr("Export Report"), document_->displayName() + QStringLiteral("-report.pdf"),
+            tr("PDF documents (*.pdf)"));
+        if (!path.isEmpty())
+            exportReport(withSuffix(path, QStringLiteral("pdf")));
+    });
+    file->addSeparator();
+    file->addAction(tr("&Quit"), QKeySequence::Quit, this, &QWidget::close);
+}
+
+namespace {
+
+// The first local file of a drag with a plan's or project's extension, else empty.
+QString droppedPlan(const QMimeData* data) {
+    for (const QUrl& url : data->urls()) {
+        const QString suffix = QFileInfo(url.toLocalFile()).suffix().toLower();
+        if (url.isLocalFile() &&
+            (suffix == QLatin1String("fcproj") || suffix == QLatin1String("geojson") ||
+             suffix == QLatin1String("json")))
+            return url.toLocalFile();
+    }
+    return {};
+}
+
+} // namespace
+
+void MainWindow::dragEnterEvent(QDragEnterEvent* event) {
+    if (!droppedPlan(event->mimeData()).isEmpty())
+        event->acceptProposedAction();
+}
+
+void MainWindow::dropEvent(QDropEvent* event) {
+    const QString path = droppedPlan(event->mimeData());
+    if (path.isEmpty() || !maybeSave())
+        return;
+    event->acceptProposedAction();
+    openFile(path);
+}
+
+void MainWindow::openWithDialog() {
+    if (!maybeSave())
+        return;
+    const QString path = QFileDialog::getOpenFileName(
+        this, tr("Open Plan"), QString(),
+        tr("Plans and projects (*.fcproj *.geojson *.json);;FloorCover projects (*.fcproj);;"
+           "GeoJSON plans (*.geojson *.json)"));
+    if (!path.isEmpty())
+        openFile(path);
+}
+
+bool MainWindow::save() {
+    if (document_->fileName().isEmpty())
+        return saveAs();
+    return saveFile(document_->fileName());
+}
+
+bool MainWindow::saveAs() {
+    const QString suggestion = document_->displayName() + QStringLiteral(".fcproj");
+    const QString path = QFileDialog::getSaveFileName(this, tr("Save Project"), suggestion,
+                                                      tr("FloorCover projects (*.fcproj)"));
+    return !path.isEmpty() && saveFile(withSuffix(path, QStringLiteral("fcproj")));
+}
+
+bool MainWindow::saveFile(const QString& path) {
+    QString error;
+    if (!saveDocument(*document_, path, &error)) {
+        showError(error);
+        return false;
+    }
+    addRecentFile(path);
+    statusBar()->showMessage(tr("Saved %1").arg(path), 5000);
+    return true;
+}
+
+void MainWindow::addRecentFile(const QString& path) {
+    QSettings settings;
+    QStringList files = settings.value(QLatin1String(kRecentFilesKey)).toStringList();
+    const QString absolute = QFileInfo(path).absoluteFilePath();
+    files.removeAll(absolute);
+    files.prepend(absolute);
+    while (files.size() > kMaxRecentFiles)
+        files.removeLast();
+    settings.setValue(QLatin1String(kRecentFilesKey), files);
+    updateRecentFilesMenu();
+}
+
+void MainWindow::updateRecentFilesMenu() {
+    recentFilesMenu_->clear();
+    const QStringList files = QSettings().value(QLatin1String(kRecentFilesKey)).toStringList();
+    for (const QString& path : files) {
+        recentFilesMenu_
+            ->addAction(QFileInfo(path).fileName(), this,
+                        [this, path]() {
+                            if (maybeSave())
+                                openFile(path);
+                        })
+            ->setToolTip(path);
+    }
+    recentFilesMenu_->setEnabled(!files.isEmpty());
+}
+
+bool MainWindow::exportView(const QString& path) {
+    const QSize size = view_->viewport()->size();
+    bool written = false;
+    if (path.endsWith(QLatin1String(".svg"), Qt::CaseInsensitive)) {
+        QSvgGenerator generator;
+        generator.setFileName(path);
+        generator.setSize(size);
+        generator.setViewBox(QRect(QPoint(0, 0), size));
+        generator.setTitle(document_->displayName());
+        generator.setDescription(tr("Floor plan exported by FloorCover"));
+        QPainter painter;
+        if (painter.begin(&generator)) {
+            view_->render(&painter);
+            written = painter.end();
+        }
+    } else {
+        QImage image(size, QImage::Format_ARGB32_Premultiplied);
+        image.fill(Qt::transparent);
+        QPainter painter(&image);
+        painter.setRenderHint(QPainter::Antialiasing);
+        view_->render(&painter);
+        painter.end();
+        written = image.save(path);
+    }
+    if (!written) {
+        showError(tr("Cannot write %1.").arg(path));
+        return false;
+    }
+    statusBar()->showMessage(tr("Exported the view to %1").arg(path), 5000);
+    return true;
+}
+
+void MainWindow::exportViewWithDialog(const QString& suffix) {
+    const QString filter =
+        suffix == QLatin1String("svg") ? tr("SVG images (*.svg)") : tr("PNG images (*.png)");
+    const QString path = QFileDialog::getSaveFileName(
+        this, tr("Export View"), document_->displayName() + QLatin1Char('.') + suffix, filter);
+    if (!path.isEmpty())
+        exportView(withSuffix(path, suffix));
+}
+
+bool MainWindow::exportReport(const QString& path) {
+    const auto result = planner_->result();
+    if (!result) {
+        showError(tr("There is no plan to report: plan the current document first."));
+        return false;
+    }
+    QString error;
+    if (!writePdfReport(path, *document_, *result, *scene_, &error)) {
+        showError(error);
+        return false;
+    }
+    statusBar()->showMessage(tr("Exported the report to %1").arg(path), 5000);
+    return true;
+}
+
+bool MainWindow::renderScreenshot(const QString& path, const QString& planPath, QString* error) {
+    setDialogsEnabled(false);
+    setAttribute(Qt::WA_DontShowOnScreen); // rendered, never mapped on a real display
+    resize(1400, 900);
+    show();
+    if (planPath.isEmpty())
+        openSample();
+    else if (!openFile(planPath)) {
+        *error = lastError_;
+        return false;
+    }
+    if (!planner_->planAndWait()) {
+        *error = tr("planning failed: %1").arg(planner_->errorMessage());
+        return false;
+    }
+    QApplication::processEvents();
+    view_->fitToPlan();
+    QApplication::processEvents();
+    if (!grab().toImage().save(path, "PNG")) {
+        *error = tr("cannot write %1").arg(path);
+        return false;
+    }
+    return true;
+}
+
+} // namespace fc::ui
