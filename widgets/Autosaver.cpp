@@ -2,6 +2,7 @@
 
 #include "Document.h"
 #include "DocumentFiles.h"
+#include "formats/FileIO.h"
 
 #include <QDir>
 #include <QFile>

@@ -2,6 +2,7 @@
 
 #include "Conversions.h"
 #include "Document.h"
+#include "formats/FileIO.h"
 #include "model/Validation.h"
 
 #include <QCoreApplication>

@@ -4,6 +4,7 @@
 #include "Document.h"
 #include "MainWindow.h"
 #include "PlanningController.h"
+#include "formats/FileIO.h"
 
 #include <QFileDialog>
 #include <QFileInfo>

@@ -3,6 +3,7 @@
 #include "formats/Import.h"
 
 #include "formats/BuildingModelImport.h"
+#include "formats/FileIO.h"
 #include "formats/ImportSupport.h"
 #include "model/Validation.h"
 

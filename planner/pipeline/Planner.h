@@ -3,10 +3,10 @@
 #pragma once
 
 #include "decomposition/Decomposition.h"
-#include "formats/PlanIO.h"
 #include "graph/CornerGraph.h"
 #include "metrics/Metrics.h"
 #include "model/Plan.h"
+#include "model/Project.h"
 #include "path/CoveragePath.h"
 #include "solvers/Solver.h"
 

@@ -311,4 +311,5 @@ void EditorTest::autosaveRecoversAfterCrash() {
 }
 
 QTEST_MAIN(EditorTest)
+#include "formats/FileIO.h"
 #include "test_editor.moc"

@@ -91,4 +91,5 @@ private slots:
 };
 
 QTEST_MAIN(ExportTest)
+#include "formats/FileIO.h"
 #include "test_export.moc"

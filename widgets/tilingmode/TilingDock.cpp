@@ -1,6 +1,7 @@
 #include "tilingmode/TilingDock.h"
 
 #include "Conversions.h"
+#include "formats/FileIO.h"
 #include "formats/PlanIO.h"
 #include "tilingmode/PpoTrainingPanel.h"
 #include "tilingmode/TilingController.h"
