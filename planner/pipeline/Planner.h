@@ -5,9 +5,9 @@
 #include "decomposition/Decomposition.h"
 #include "graph/CornerGraph.h"
 #include "metrics/Metrics.h"
+#include "model/CoveragePath.h"
 #include "model/Plan.h"
 #include "model/Project.h"
-#include "path/CoveragePath.h"
 #include "solvers/Solver.h"
 
 #include <optional>
