@@ -2,8 +2,8 @@
 // robot's shapes, orders the tiles by energy and prints one JSON line of metrics.
 #include "CliCommon.h"
 #include "formats/FileIO.h"
-#include "learning/ppo/PpoOrdering.h"
 #include "tiling/TilingPlanner.h"
+#include "tiling/ppo/PpoOrdering.h"
 
 #include <iostream>
 

@@ -3,7 +3,7 @@
 #include "MainWindow.h"
 #include "Translations.h"
 #include "learning/dqn/DqnSolver.h"
-#include "learning/ppo/PpoOrdering.h"
+#include "tiling/ppo/PpoOrdering.h"
 
 #include <QApplication>
 #include <QCommandLineParser>

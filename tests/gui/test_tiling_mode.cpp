@@ -2,8 +2,8 @@
 // canvas shows the tiles and the tour, the figures appear in the dock, the waypoints export,
 // and an edit of the floor drops the stale tiling.
 #include "EditorFixture.h"
-#include "learning/ppo/PpoOrdering.h"
 #include "tiling/WaypointOrder.h"
+#include "tiling/ppo/PpoOrdering.h"
 #include "tilingmode/PpoTrainer.h"
 #include "tilingmode/PpoTrainingPanel.h"
 #include "tilingmode/TilingController.h"
