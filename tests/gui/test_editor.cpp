@@ -6,6 +6,7 @@
 #include "PlanScene.h"
 #include "PlanningController.h"
 #include "PlanningDock.h"
+#include "formats/FileIO.h"
 #include "formats/PlanIO.h"
 #include "tools/DrawPolygonTool.h"
 
@@ -311,5 +312,4 @@ void EditorTest::autosaveRecoversAfterCrash() {
 }
 
 QTEST_MAIN(EditorTest)
-#include "formats/FileIO.h"
 #include "test_editor.moc"

@@ -3,6 +3,7 @@
 #include "EditorFixture.h"
 #include "PlanningController.h"
 #include "formats/Export.h"
+#include "formats/FileIO.h"
 #include "formats/PlanIO.h"
 
 #include <QStandardPaths>
@@ -91,5 +92,4 @@ private slots:
 };
 
 QTEST_MAIN(ExportTest)
-#include "formats/FileIO.h"
 #include "test_export.moc"
