@@ -59,7 +59,8 @@ std::string runCase(const Case& c) {
         prepared.robot = robot;
         validatePlan(prepared.plan, robot);
         DecompositionOptions options;
-        options.coverageWidth = robot.coverageWidth;
+        options.robot = robot;
+        options.robot.robotDiameter = robot.coverageWidth; // L = W, as this report always had
         prepared.decomposition = decompose(prepared.plan, options);
     } catch (const std::exception& e) {
         rows << "| " << c.name << " | – | – | – | – | failed: " << e.what() << " |||||||\n";

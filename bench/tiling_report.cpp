@@ -3,9 +3,9 @@
 // running time per method) and measures gaps to the Held-Karp optimum on random small
 // instances.   floorcover-tiling-report [--instances N] [PLAN_NAME...] > docs/tiling.md
 #include "formats/PlanIO.h"
-#include "learning/ppo/PpoOrdering.h"
 #include "tiling/RandomInstances.h"
 #include "tiling/TilingPlanner.h"
+#include "tiling/ppo/PpoOrdering.h"
 
 #include <algorithm>
 #include <chrono>
@@ -77,9 +77,9 @@ zigzag|spiral|greedy|aco|aco+2opt|ga|exact|ppo-policy|ppo [--out FILE.csv|FILE.j
   over each waypoint's 8 cheapest moves, first improvement until no move helps. It is not
   part of the paper's method; `ppo` uses it, `ppo-policy` is the policy alone, and
   `aco+2opt` gives the ant colony the same polish, so the rows show what each part adds.
-* **PPO** (`learning/torch/PointerPpo.cpp`, `LocalPointer.cpp`, the paper's Section 4.2,
+* **PPO** (`tiling/ppo/torch/PointerPpo.cpp`, `LocalPointer.cpp`, the paper's Section 4.2,
   made local so that one network serves any floor): at each step the pointer attends over
-  the 16 cheapest moves to unvisited waypoints (`learning/ppo/TourBuilder.cpp`; the
+  the 16 cheapest moves to unvisited waypoints (`tiling/ppo/TourBuilder.cpp`; the
   waypoint index searches further when the window is sparse, so there is always a
   candidate). Per candidate: the target waypoint in the robot's frame (in units of 4 legs,
   squashed), cos and sin of the heading change, shape change, log(1 + e / (M a)) of the

@@ -2,6 +2,7 @@
 
 #include "Arguments.h"
 #include "CliCommon.h"
+#include "formats/FileIO.h"
 #include "formats/PathIO.h"
 #include "formats/PlanIO.h"
 #include "pipeline/Comparison.h"

@@ -2,6 +2,7 @@
 // GIS tools read (formats/Export.h); prints one JSON line describing the file written.
 #include "CliCommon.h"
 #include "formats/Export.h"
+#include "formats/FileIO.h"
 
 #include <filesystem>
 #include <iostream>

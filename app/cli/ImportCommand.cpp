@@ -1,6 +1,7 @@
 // floorcover-cli import: a DXF drawing, a ROS occupancy map, WKT or GeoJSON to a plan or
 // project file. Warnings on stderr, one JSON summary line on stdout.
 #include "CliCommon.h"
+#include "formats/FileIO.h"
 #include "importers/Import.h"
 
 #include <cstdio>

@@ -1,8 +1,9 @@
 // floorcover-cli tile: the reconfigurable tiling robot (seeds/001). Tiles the floor with the
 // robot's shapes, orders the tiles by energy and prints one JSON line of metrics.
 #include "CliCommon.h"
-#include "learning/ppo/PpoOrdering.h"
+#include "formats/FileIO.h"
 #include "tiling/TilingPlanner.h"
+#include "tiling/ppo/PpoOrdering.h"
 
 #include <iostream>
 

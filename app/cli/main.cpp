@@ -1,7 +1,7 @@
 // floorcover-cli: thin command-line front end over the planner core (SPEC sect. 7).
 #include "CliCommands.h"
 #include "learning/dqn/DqnSolver.h"
-#include "learning/ppo/PpoOrdering.h"
+#include "tiling/ppo/PpoOrdering.h"
 
 int main(int argc, char** argv) {
     fc::registerDqnSolver();

@@ -1,9 +1,9 @@
 // floorcover: the desktop editor. Thin: argument handling only; the editor lives in
 // the floorcover_widgets library.
+#include "learning/dqn/DqnSolver.h"
+#include "tiling/ppo/PpoOrdering.h"
 #include "window/MainWindow.h"
 #include "window/Translations.h"
-#include "learning/dqn/DqnSolver.h"
-#include "learning/ppo/PpoOrdering.h"
 
 #include <QApplication>
 #include <QCommandLineParser>

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <stdexcept>
 
 namespace fc {
 namespace {
@@ -189,13 +190,14 @@ Cell makeCell(int id, CellKind kind, int room, double x0, double x1, Polyline fl
 } // namespace
 
 Decomposition decompose(const Plan& plan, const DecompositionOptions& options) {
-    const double w = options.coverageWidth;
+    const double w = options.robot.coverageWidth;
     Decomposition out;
-    out.coverageWidth = w;
-    const double robot = options.robotDiameter == 0.0 ? w : options.robotDiameter;
+    out.robot = options.robot;
+    if (out.robot.robotDiameter == 0.0)
+        out.robot.robotDiameter = w;
+    const double robot = out.robot.robotDiameter;
     if (!(robot > 0.0) || robot > w * (1 + 1e-12))
         throw InputError("the robot diameter must be positive and at most the coverage width");
-    out.clearanceRadius = 0.5 * robot;
     const BoundingBox bounds = plan.bounds();
     out.frame = Frame({bounds.minX, bounds.minY}, options.stripeAngleDeg);
     // The local origin at the corner of the plan's box in the sweep frame, so that the same
@@ -303,7 +305,9 @@ Decomposition decompose(const Plan& plan, const DecompositionOptions& options) {
 
     // Split where the clear region changes (narrow passages, spans stacked in y), cut
     // transition strips and create the final cells.
-    const ClearanceField field = clearanceField(out);
+    out.clearanceField = std::make_shared<const ClearanceField>(
+        out.freeSpace, out.clearanceRadius(), 0.5 * out.coverageWidth());
+    const ClearanceField& field = out.clearance();
     std::vector<std::vector<Piece>> pieces(raw.size());
     // Where a cell meets another room along the sweep (a doorway), the slice connectivity
     // of the whole free space changes at the doorway's ends: split there, as a
@@ -430,8 +434,10 @@ Decomposition decompose(const Plan& plan, const DecompositionOptions& options) {
     return out;
 }
 
-ClearanceField clearanceField(const Decomposition& dec) {
-    return ClearanceField(dec.freeSpace, dec.clearanceRadius, 0.5 * dec.coverageWidth);
+const ClearanceField& Decomposition::clearance() const {
+    if (!clearanceField)
+        throw std::logic_error("this decomposition has no clearance field (not made by decompose)");
+    return *clearanceField;
 }
 
 } // namespace fc

@@ -7,6 +7,7 @@
 #include "geometry/Geometry.h"
 #include "model/Plan.h"
 
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -64,8 +65,8 @@ struct UnreachableArea {
 
 struct Decomposition {
     Frame frame;
-    double coverageWidth = 1.0;
-    double clearanceRadius = 0.5;       // L/2: how far the robot centre keeps from walls
+    // The robot it was made for: W = robot.coverageWidth, L = robot.robotDiameter.
+    RobotProfile robot = RobotProfile{1.0, 1.0, 1.0};
     std::vector<std::string> roomNames; // "Floor" when the plan has no rooms
     std::vector<Cell> cells;
     std::vector<Adjacency> adjacencies;
@@ -75,18 +76,24 @@ struct Decomposition {
 
     int primaryCount() const;
     int transitionCount() const;
+    double coverageWidth() const { return robot.coverageWidth; }
+    double clearanceRadius() const { return 0.5 * robot.robotDiameter; } // L/2, from walls
+
+    // Where the robot centre may go in this decomposition (sweep frame): L/2 from walls,
+    // stripes inset W/2 where the walls allow. Built once by decompose and shared by copies;
+    // throws std::logic_error for a decomposition decompose did not make.
+    const ClearanceField& clearance() const;
+    // The field of freeSpace for robot (see clearance()); decompose sets it.
+    std::shared_ptr<const ClearanceField> clearanceField;
 };
 
 struct DecompositionOptions {
-    double coverageWidth = 1.0;
-    double robotDiameter = 0.0; // L <= W (0: L = W); the robot centre keeps L/2 from walls
+    // W and L <= W (the robot centre keeps L/2 from walls; L = 0 is read as L = W); only
+    // these two are used. The default is a robot that sweeps its own diameter, L = W = 1.
+    RobotProfile robot = RobotProfile{1.0, 1.0, 1.0};
     double stripeAngleDeg = 90.0;
     bool transitionCells = true; // the paper's modification; off = classic BCD
 };
-
-// Where the robot centre may go in this decomposition (sweep frame): L/2 from walls,
-// stripes inset W/2 where the walls allow.
-ClearanceField clearanceField(const Decomposition& dec);
 
 // Decomposes a validated plan. Throws InputError for geometry it cannot handle.
 Decomposition decompose(const Plan& plan, const DecompositionOptions& options);

@@ -209,7 +209,7 @@ void fitStripes(Cell& cell, const ClearanceField& field) {
 } // namespace
 
 void planStripeSpans(Decomposition& dec) {
-    const ClearanceField field = clearanceField(dec);
+    const ClearanceField& field = dec.clearance();
     for (Cell& cell : dec.cells) {
         fitStripes(cell, field);
         cell.stripeSpans.clear();

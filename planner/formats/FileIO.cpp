@@ -1,4 +1,6 @@
 // Reading plan/project files and writing any output atomically.
+#include "formats/FileIO.h"
+
 #include "formats/JsonSupport.h"
 #include "formats/PlanIO.h"
 

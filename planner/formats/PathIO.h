@@ -5,7 +5,7 @@
 
 #include "graph/CornerGraph.h"
 #include "metrics/Metrics.h"
-#include "path/CoveragePath.h"
+#include "model/CoveragePath.h"
 
 #include <optional>
 #include <string>

@@ -63,9 +63,11 @@ ClearanceField::ClearanceField(const std::vector<Ring>& rings, double radius, do
 }
 
 const std::vector<Vec2>& ClearanceField::cornerPoints() const {
-    if (cornersBuilt_)
-        return cornerPoints_;
-    cornersBuilt_ = true;
+    std::call_once(cornersBuilt_, [this] { buildCornerPoints(); });
+    return cornerPoints_;
+}
+
+void ClearanceField::buildCornerPoints() const {
     const std::vector<Ring>& rings = rings_;
     // Reflex corners of the free space: the interior angle seen from free space exceeds
     // 180 degrees. Orientation-free test: probe a point just off the corner along the
@@ -104,7 +106,6 @@ const std::vector<Vec2>& ClearanceField::cornerPoints() const {
             }
         }
     }
-    return cornerPoints_;
 }
 
 std::vector<Interval> ClearanceField::clearPieces(double x, double yLow, double yHigh,

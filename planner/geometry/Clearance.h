@@ -7,12 +7,14 @@
 #include "geometry/SegmentIndex.h"
 
 #include <cmath>
+#include <mutex>
 #include <utility>
 #include <vector>
 
 namespace fc {
 
-// Not thread-safe: corner waypoints are built lazily on the first path search.
+// Corner waypoints are built lazily, once, on the first path search (thread-safe: one field
+// is shared by every copy of a decomposition). Neither copyable nor movable.
 class ClearanceField {
 public:
     // rings: the free space (boundary and holes) in the frame used for queries.
@@ -55,8 +57,9 @@ private:
     double tolerance_;
     double acceptance_;
     const std::vector<Vec2>& cornerPoints() const; // built on first use
+    void buildCornerPoints() const;
     std::vector<Ring> rings_;
-    mutable bool cornersBuilt_ = false;
+    mutable std::once_flag cornersBuilt_;
     mutable std::vector<Vec2> cornerPoints_; // clear points hugging wall corners
     BoundingBox extent_;
 };

@@ -76,10 +76,6 @@ inline double edgeCost(const GraphEdge& e, bool cellCovered) {
     return e.length;
 }
 
-struct GraphOptions {
-    double coverageWidth = 1.0;
-};
-
 CornerGraph buildCornerGraph(const Decomposition& decomposition);
 
 // Nearest node to a point (sweep frame); prefers nodes of reachable cells.

@@ -21,7 +21,7 @@ struct StripeRun {
 
 class GraphBuilder {
 public:
-    explicit GraphBuilder(const Decomposition& dec) : dec_(dec), field_(clearanceField(dec)) {}
+    explicit GraphBuilder(const Decomposition& dec) : dec_(dec), field_(dec.clearance()) {}
 
     CornerGraph build() {
         graph_.cells.resize(dec_.cells.size());
@@ -40,7 +40,7 @@ private:
         const Vec2 b{to.x, top ? to.span.hi : to.span.lo};
         if (line.size() >= 2 && field_.polylineIsClear(line))
             return line;
-        return field_.findPath(a, b, {}, 8 * dec_.coverageWidth + distance(a, b));
+        return field_.findPath(a, b, {}, 8 * dec_.coverageWidth() + distance(a, b));
     }
 
     // A flat head end leaves a wedge under a slanted floor or ceiling. Where no connection
@@ -50,7 +50,7 @@ private:
                  bool evenIfFlat = false) {
         const int begin = static_cast<int>(path.size()) - 1;
         if (detail::appendStripeEndSeal(path, cell, run.x, top ? run.span.hi : run.span.lo, top,
-                                        side, evenIfFlat, field_, dec_.coverageWidth))
+                                        side, evenIfFlat, field_, dec_.coverageWidth()))
             excursions_.push_back({begin, static_cast<int>(path.size()) - 1, top});
     }
 
@@ -205,7 +205,7 @@ private:
                 hints.push_back({x, piece.hi});
             }
         };
-        const double w = dec_.coverageWidth;
+        const double w = dec_.coverageWidth();
         if (a.kind == Adjacency::Kind::AcrossSweep) {
             sampleLine(a.shared.a.x, std::min(a.shared.a.y, a.shared.b.y),
                        std::max(a.shared.a.y, a.shared.b.y));
@@ -242,7 +242,7 @@ private:
         }
         // An inter-cell connection that needs a long detour is not one: the graph reaches
         // those corners through other cells.
-        return field_.findPath(p, q, hints, 8 * dec_.coverageWidth + distance(p, q));
+        return field_.findPath(p, q, hints, 8 * dec_.coverageWidth() + distance(p, q));
     }
 
     void addAdjacency(const Adjacency& a) {
@@ -274,7 +274,7 @@ private:
     }
 
     const Decomposition& dec_;
-    ClearanceField field_;
+    const ClearanceField& field_;
     CornerGraph graph_;
     std::set<std::pair<int, int>> connected_; // inter-cell pairs already joined
     std::vector<Excursion> excursions_;       // of the coverage pattern being built
@@ -284,7 +284,7 @@ private:
 
 CornerGraph buildCornerGraph(const Decomposition& decomposition) {
     CornerGraph graph = GraphBuilder(decomposition).build();
-    bridgeComponents(graph, clearanceField(decomposition));
+    bridgeComponents(graph, decomposition.clearance());
     return graph;
 }
 

@@ -2,6 +2,7 @@
 // validates the result with the planner's own validation.
 #include "importers/Import.h"
 
+#include "formats/FileIO.h"
 #include "importers/BuildingModelImport.h"
 #include "importers/ImportSupport.h"
 #include "model/Validation.h"

@@ -2,6 +2,7 @@
 // polygonizer, opened by a twentieth of a pixel (so that obstacles touching the wall at a corner
 // become part of it), simplified (Douglas-Peucker, topology kept) and placed in map
 // coordinates (origin + resolution, y up, rotated by the origin's yaw).
+#include "formats/FileIO.h"
 #include "importers/OgrSupport.h"
 
 #include <cmath>

@@ -2,8 +2,8 @@
 #pragma once
 
 #include "decomposition/Decomposition.h"
+#include "model/CoveragePath.h"
 #include "model/Plan.h"
-#include "path/CoveragePath.h"
 
 #include <string>
 #include <vector>

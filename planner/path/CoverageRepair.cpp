@@ -57,8 +57,8 @@ CoverageRepairStats repairCoverage(const Decomposition& dec, CoveragePath& path,
     CoverageRepairStats stats;
     if (missed.empty() || path.points.size() < 2)
         return stats;
-    const ClearanceField field = clearanceField(dec);
-    const double w = dec.coverageWidth;
+    const ClearanceField& field = dec.clearance();
+    const double w = dec.coverageWidth();
     std::vector<Vec2> local;
     local.reserve(path.points.size());
     for (const Vec2& p : path.points)

@@ -5,7 +5,7 @@
 #pragma once
 
 #include "decomposition/Decomposition.h"
-#include "path/CoveragePath.h"
+#include "model/CoveragePath.h"
 
 #include <vector>
 

@@ -67,7 +67,7 @@ CoveragePath finish(LocalPath& local, const ClearanceField& field, const Decompo
                joinFreePoint(field, local.path.points.back(), dec.frame.toLocal(*endPoint), "end"),
                SegmentKind::Transit);
     const std::vector<char> keep =
-        detail::prunableExcursions(local.path.points, local.excursions, dec.coverageWidth);
+        detail::prunableExcursions(local.path.points, local.excursions, dec.coverageWidth());
     CoveragePath world;
     for (size_t i = 0; i < local.path.points.size(); ++i) {
         if (!keep[i])
@@ -87,7 +87,7 @@ CoveragePath finish(LocalPath& local, const ClearanceField& field, const Decompo
 
 CoveragePath buildCoveragePath(const Decomposition& dec, const CornerGraph& graph, const Walk& walk,
                                std::optional<Vec2> startPoint, std::optional<Vec2> endPoint) {
-    const ClearanceField field = clearanceField(dec);
+    const ClearanceField& field = dec.clearance();
     if (walk.nodes.empty())
         return {};
     LocalPath local;
@@ -111,7 +111,7 @@ CoveragePath buildCoveragePath(const Decomposition& dec, const CornerGraph& grap
 
 CoveragePath buildCoveragePath(const Decomposition& dec, const DirectPath& direct,
                                std::optional<Vec2> startPoint, std::optional<Vec2> endPoint) {
-    const ClearanceField field = clearanceField(dec);
+    const ClearanceField& field = dec.clearance();
     const Polyline& points = direct.path.points;
     if (points.empty())
         return {};

@@ -2,7 +2,7 @@
 #pragma once
 
 #include "graph/CornerGraph.h"
-#include "path/CoveragePath.h"
+#include "model/CoveragePath.h"
 #include "solvers/Solver.h"
 
 #include <optional>

@@ -168,7 +168,8 @@ PlanResult planWithRoomAngles(const PlanRequest& request,
     for (double angle : distinct) {
         Group group;
         group.angle = angle;
-        group.prepared = preparePlan(request.plan, request.robot, angle, request.transitionCells);
+        group.prepared = preparePlan(request.plan, request.robot, angle, request.transitionCells,
+                                     solverNeedsClassicStages(request.solver));
         double area = 0.0;
         Vec2 weighted;
         for (const std::string& name : group.prepared.decomposition.roomNames) {

@@ -5,8 +5,6 @@
 #include "path/CoverageRepair.h"
 #include "path/PathBuilder.h"
 #include "pipeline/PerRoomSweep.h"
-#include "pipeline/SolverRegistry.h"
-#include "solvers/Baselines.h"
 
 #include <algorithm>
 #include <chrono>
@@ -18,22 +16,37 @@
 
 namespace fc {
 
+namespace {
+
+// The classic stages exactly as the baselines made them for themselves: at the prepared
+// decomposition's angle, for its W and L.
+void addClassicStages(PreparedPlan& prepared) {
+    prepared.classic = std::make_shared<const PlanStages>(
+        buildPlanStages(prepared.plan, prepared.decomposition.robot,
+                        prepared.decomposition.frame.stripeAngleDeg(), false));
+}
+
+} // namespace
+
 PreparedPlan preparePlan(const Plan& plan, const RobotProfile& robot, double stripeAngleDeg,
-                         bool transitionCells) {
+                         bool transitionCells, bool classicStages) {
     PreparedPlan prepared;
     prepared.plan = normalizedPlan(plan);
     prepared.robot = robot;
     validatePlan(prepared.plan, robot);
     if (!std::isfinite(stripeAngleDeg))
         throw InputError("the sweep angle must be a finite number of degrees");
-    DecompositionOptions options;
-    options.coverageWidth = robot.coverageWidth;
-    options.robotDiameter = robot.robotDiameter;
-    options.stripeAngleDeg = stripeAngleDeg;
-    options.transitionCells = transitionCells;
-    prepared.decomposition = decompose(prepared.plan, options);
-    prepared.graph = buildCornerGraph(prepared.decomposition);
+    PlanStages stages = buildPlanStages(prepared.plan, robot, stripeAngleDeg, transitionCells);
+    prepared.decomposition = std::move(stages.decomposition);
+    prepared.graph = std::move(stages.graph);
+    if (classicStages)
+        addClassicStages(prepared);
     return prepared;
+}
+
+bool solverNeedsClassicStages(const std::string& name) {
+    const std::optional<RegisteredSolver> solver = findRegisteredSolver(name);
+    return solver && solver->classicStages;
 }
 
 int defaultStartNode(const PreparedPlan& prepared, const std::vector<char>& required) {
@@ -145,28 +158,19 @@ PlanRequest planRequestFor(const Project& project) {
 }
 
 std::vector<std::string> solverNames() {
-    std::vector<std::string> names{"exact", "heuristic", "greedy", "reeb-cpp", "adjacency-ga"};
-    for (const std::string& name : registeredSolverNames())
-        if (std::find(names.begin(), names.end(), name) == names.end())
-            names.push_back(name);
-    return names;
+    return registeredSolverNames();
 }
 
 Solution runSolver(const std::string& name, const PreparedPlan& prepared, const Query& query,
                    const std::string& modelPath, const SolveControl& control) {
-    if (std::optional<RegisteredSolver> registered = findRegisteredSolver(name))
-        return registered->solve(prepared, query, modelPath, control);
-    if (name == "exact")
-        return solveExact(prepared.graph, query, {}, control);
-    if (name == "heuristic")
-        return solveHeuristic(prepared.graph, query, control);
-    if (name == "greedy")
-        return solveGreedy(prepared.graph, query);
-    if (name == "reeb-cpp" || name == "adjacency-ga") {
-        const BaselineQuery baseline =
-            makeBaselineQuery(prepared.plan, prepared.decomposition, prepared.graph, query);
-        return name == "reeb-cpp" ? solveReebPostman(baseline) : solveAdjacencyGa(baseline);
+    const std::optional<RegisteredSolver> solver = findRegisteredSolver(name);
+    if (solver && solver->classicStages && !prepared.classic) {
+        PreparedPlan withClassic = prepared;
+        addClassicStages(withClassic);
+        return solver->solve(withClassic, query, modelPath, control);
     }
+    if (solver)
+        return solver->solve(prepared, query, modelPath, control);
     std::ostringstream msg;
     msg << "unknown solver \"" << name << "\" (available:";
     for (const std::string& n : solverNames())
@@ -298,7 +302,8 @@ PlanResult planOneAngle(const PlanRequest& request, double angle, const SolveCon
     const auto t0 = std::chrono::steady_clock::now();
     PlanResult result;
     result.stripeAngleDeg = angle;
-    result.prepared = preparePlan(request.plan, request.robot, angle, request.transitionCells);
+    result.prepared = preparePlan(request.plan, request.robot, angle, request.transitionCells,
+                                  solverNeedsClassicStages(request.solver));
     result.query = makeQuery(result.prepared, request.rooms, request.start, request.end,
                              request.seed, result.warnings);
     result.solution =

@@ -3,12 +3,14 @@
 #pragma once
 
 #include "decomposition/Decomposition.h"
-#include "formats/PlanIO.h"
 #include "graph/CornerGraph.h"
+#include "graph/PreparedPlan.h"
 #include "metrics/Metrics.h"
+#include "model/CoveragePath.h"
 #include "model/Plan.h"
-#include "path/CoveragePath.h"
+#include "model/Project.h"
 #include "solvers/Solver.h"
+#include "solvers/SolverRegistry.h"
 
 #include <optional>
 #include <string>
@@ -32,14 +34,6 @@ struct PlanRequest {
 // The request a project file describes (its plan, robot, sweep, solver, rooms, start, end).
 PlanRequest planRequestFor(const Project& project);
 
-// Plan -> validated plan -> decomposition -> corner graph.
-struct PreparedPlan {
-    Plan plan; // normalized
-    RobotProfile robot;
-    Decomposition decomposition;
-    CornerGraph graph;
-};
-
 // One group of rooms planned at one sweep angle (per-room sweeps plan several in turn).
 struct PlanPart {
     double stripeAngleDeg = 90.0;
@@ -62,9 +56,13 @@ struct PlanResult {
     std::vector<PlanPart> parts;
 };
 
-// Validates (throws InputError) and builds decomposition and graph for one sweep angle.
+// Validates (throws InputError) and builds decomposition and graph for one sweep angle
+// (graph/PreparedPlan.h); with classicStages also PreparedPlan::classic.
 PreparedPlan preparePlan(const Plan& plan, const RobotProfile& robot, double stripeAngleDeg,
-                         bool transitionCells = true);
+                         bool transitionCells = true, bool classicStages = false);
+
+// Whether the named solver plans on PreparedPlan::classic (false for unknown names).
+bool solverNeedsClassicStages(const std::string& name);
 
 // The start corner when none is given: the corner of a required cell farthest from the
 // centre of the required area (the same corner at any rotation of the plan).
@@ -77,8 +75,11 @@ Query makeQuery(const PreparedPlan& prepared, const std::vector<std::string>& ro
                 std::optional<Vec2> start, std::optional<Vec2> end, std::uint64_t seed,
                 std::vector<std::string>& warnings);
 
-// Solver names accepted by runSolver, in the order the CLI lists them.
+// Solver names accepted by runSolver, in the order the CLI lists them (the registry's:
+// solvers/SolverRegistry.h).
 std::vector<std::string> solverNames();
+// Looks the solver up in the registry (InputError listing the registered names when unknown);
+// prepares PreparedPlan::classic on a copy when the solver needs it and it is missing.
 Solution runSolver(const std::string& name, const PreparedPlan& prepared, const Query& query,
                    const std::string& modelPath = {}, const SolveControl& control = {});
 

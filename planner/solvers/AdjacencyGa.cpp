@@ -266,7 +266,7 @@ std::vector<CoverOption> coverOptions(const BaselineWorld& w, const ClearanceFie
         for (bool startLow : {true, false}) {
             CoverOption o;
             o.pattern =
-                boustrophedon(w.decomposition.cells[cell], field, w.decomposition.coverageWidth,
+                boustrophedon(w.decomposition.cells[cell], field, w.decomposition.coverageWidth(),
                               CellPart::Whole, leftToRight, startLow);
             o.entry = o.pattern.points.front();
             o.exit = o.pattern.points.back();
@@ -279,9 +279,9 @@ std::vector<CoverOption> coverOptions(const BaselineWorld& w, const ClearanceFie
 
 } // namespace
 
-Solution solveAdjacencyGa(const BaselineQuery& query) {
-    const BaselineWorld world = makeBaselineWorld(query, kName);
-    const ClearanceField field = clearanceField(world.decomposition);
+Solution solveAdjacencyGa(const PreparedPlan& prepared, const Query& query) {
+    const BaselineWorld world = makeBaselineWorld(prepared, query, kName);
+    const ClearanceField& field = world.decomposition.clearance();
     CellTransits transits(world);
     std::vector<int> cells;
     std::vector<std::vector<CoverOption>> options;

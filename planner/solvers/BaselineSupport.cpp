@@ -8,22 +8,6 @@
 
 namespace fc {
 
-BaselineQuery makeBaselineQuery(const Plan& plan, const Decomposition& decomposition,
-                                const CornerGraph& graph, const Query& query) {
-    BaselineQuery out;
-    out.plan = &plan;
-    out.coverageWidth = decomposition.coverageWidth;
-    out.robotDiameter = 2.0 * decomposition.clearanceRadius;
-    out.stripeAngleDeg = decomposition.frame.stripeAngleDeg();
-    out.requiredRooms.assign(decomposition.roomNames.size(), 0);
-    for (const GraphCell& c : graph.cells)
-        if (c.id < static_cast<int>(query.required.size()) && query.required[c.id])
-            out.requiredRooms[c.room] = 1;
-    out.start = graph.nodes.at(query.startNode).position;
-    out.seed = query.seed;
-    return out;
-}
-
 namespace baseline_detail {
 namespace {
 
@@ -37,20 +21,22 @@ std::vector<std::pair<double, Interval>> clearRuns(const Cell& cell) {
 
 } // namespace
 
-BaselineWorld makeBaselineWorld(const BaselineQuery& query, const char* solverName) {
-    BaselineWorld world;
-    DecompositionOptions options;
-    options.coverageWidth = query.coverageWidth;
-    options.robotDiameter = query.robotDiameter;
-    options.stripeAngleDeg = query.stripeAngleDeg;
-    options.transitionCells = false; // the papers' classic decomposition
-    world.decomposition = decompose(*query.plan, options);
-    world.graph = buildCornerGraph(world.decomposition);
-    if (world.decomposition.roomNames.size() != query.requiredRooms.size())
+BaselineWorld makeBaselineWorld(const PreparedPlan& prepared, const Query& query,
+                                const char* solverName) {
+    if (!prepared.classic)
+        throw SolverError(std::string(solverName) +
+                          ": the classic decomposition was not prepared (PreparedPlan::classic)");
+    // The rooms of the required cells, and the start node's position.
+    std::vector<char> requiredRooms(prepared.decomposition.roomNames.size(), 0);
+    for (const GraphCell& c : prepared.graph.cells)
+        if (c.id < static_cast<int>(query.required.size()) && query.required[c.id])
+            requiredRooms[c.room] = 1;
+    BaselineWorld world(prepared.classic->decomposition, prepared.classic->graph);
+    if (world.decomposition.roomNames.size() != requiredRooms.size())
         throw SolverError(std::string(solverName) + ": the rooms of the plan changed");
-    world.start = query.start;
+    world.start = prepared.graph.nodes.at(query.startNode).position;
     world.seed = query.seed;
-    const int startNode = nearestNode(world.graph, query.start);
+    const int startNode = nearestNode(world.graph, world.start);
     world.startCell = world.graph.nodes[startNode].cell;
     // Cells whose corners the start node reaches over the graph's edges.
     world.usable.assign(world.graph.cells.size(), 0);
@@ -61,7 +47,7 @@ BaselineWorld makeBaselineWorld(const BaselineQuery& query, const char* solverNa
     for (const GraphCell& c : world.graph.cells) {
         world.usable[c.id] = world.usable[c.id] && c.reachable;
         world.required[c.id] =
-            world.usable[c.id] && query.requiredRooms[c.room] && !c.coverageEdges.empty();
+            world.usable[c.id] && requiredRooms[c.room] && !c.coverageEdges.empty();
     }
     if (std::none_of(world.required.begin(), world.required.end(), [](char r) { return r; }))
         throw SolverError(std::string(solverName) +

@@ -16,12 +16,14 @@ namespace fc::baseline_detail {
 
 constexpr double kInf = INFINITY; // a distance not reached
 
-// The classic Boustrophedon decomposition and its corner graph, which tells which cells are
-// connected (its inter-cell edges), where the cells' corners are (the Reeb nodes' positions)
-// and carries transits through gaps exactly W wide.
+// The classic Boustrophedon decomposition and its corner graph (PreparedPlan::classic), which
+// tells which cells are connected (its inter-cell edges), where the cells' corners are (the
+// Reeb nodes' positions) and carries transits through gaps exactly W wide.
 struct BaselineWorld {
-    Decomposition decomposition;
-    CornerGraph graph;
+    BaselineWorld(const Decomposition& d, const CornerGraph& g) : decomposition(d), graph(g) {}
+
+    const Decomposition& decomposition;
+    const CornerGraph& graph;
     std::vector<char> usable;   // per cell: sweepable and connected to the start
     std::vector<char> required; // per cell: usable and in a required room
     int startCell = -1;
@@ -29,8 +31,12 @@ struct BaselineWorld {
     std::uint64_t seed = 1;
 };
 
-// Throws SolverError when no required area is reachable from the start.
-BaselineWorld makeBaselineWorld(const BaselineQuery& query, const char* solverName);
+// The query of the corner-graph solvers restated on the classic decomposition: the rooms of
+// the required cells, and the start node's position (baselines always return to their start).
+// Throws SolverError when the classic stages were not prepared or no required area is
+// reachable from the start.
+BaselineWorld makeBaselineWorld(const PreparedPlan& prepared, const Query& query,
+                                const char* solverName);
 
 // Pairs (lower id, higher id) of cells joined by at least one collision-free inter-cell
 // edge of the graph.

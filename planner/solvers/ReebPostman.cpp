@@ -250,7 +250,7 @@ std::vector<Step> eulerCircuit(const ReebGraph& reeb, const std::vector<int>& to
 void coverPart(TourBuilder& tour, const BaselineWorld& w, const ClearanceField& field, int cell,
                CellPart part, bool leftToRight) {
     const Cell& c = w.decomposition.cells[cell];
-    const double width = w.decomposition.coverageWidth;
+    const double width = w.decomposition.coverageWidth();
     const Pattern up = boustrophedon(c, field, width, part, leftToRight, true);
     const Pattern down = boustrophedon(c, field, width, part, leftToRight, false);
     const bool upFirst = distance(up.points.front(), tour.position()) <=
@@ -260,8 +260,8 @@ void coverPart(TourBuilder& tour, const BaselineWorld& w, const ClearanceField& 
 
 } // namespace
 
-Solution solveReebPostman(const BaselineQuery& query) {
-    const BaselineWorld world = makeBaselineWorld(query, kName);
+Solution solveReebPostman(const PreparedPlan& prepared, const Query& query) {
+    const BaselineWorld world = makeBaselineWorld(prepared, query, kName);
     const ReebGraph reeb = buildReebGraph(world);
     std::vector<int> tour;
     for (size_t e = 0; e < reeb.edges.size(); ++e)
@@ -278,7 +278,7 @@ Solution solveReebPostman(const BaselineQuery& query) {
     makeEulerian(reeb, tour);
     const std::vector<Step> circuit = eulerCircuit(reeb, tour, startNode);
 
-    const ClearanceField field = clearanceField(world.decomposition);
+    const ClearanceField& field = world.decomposition.clearance();
     TourBuilder path(world.start, field, world.graph, kName);
     std::vector<int> passes(world.decomposition.cells.size(), 0), passesMade(passes.size(), 0);
     for (const Step& s : circuit)

@@ -3,7 +3,7 @@
 #pragma once
 
 #include "graph/CornerGraph.h"
-#include "path/CoveragePath.h"
+#include "model/CoveragePath.h"
 
 #include <cstdint>
 #include <functional>

@@ -1,12 +1,13 @@
 // The editor driven through its real widgets: drawing by mouse, undo/redo, files, room
 // selection, start/end, planning, exports and refused input.
-#include "document/Autosaver.h"
 #include "EditorFixture.h"
 #include "canvas/OverlayLayer.h"
 #include "canvas/PlanScene.h"
-#include "tasks/PlanningController.h"
 #include "docks/PlanningDock.h"
+#include "document/Autosaver.h"
+#include "formats/FileIO.h"
 #include "formats/PlanIO.h"
+#include "tasks/PlanningController.h"
 #include "tools/DrawPolygonTool.h"
 
 #include <QDoubleSpinBox>

@@ -1,9 +1,10 @@
 // File > Export through the window's API (the menus' dialog-free entry points): every path
 // format, the zones and the WGS84 plan land in files that parse back to the planned path.
 #include "EditorFixture.h"
-#include "tasks/PlanningController.h"
 #include "formats/Export.h"
+#include "formats/FileIO.h"
 #include "formats/PlanIO.h"
+#include "tasks/PlanningController.h"
 
 #include <QStandardPaths>
 #include <QTemporaryDir>

@@ -2,14 +2,14 @@
 // canvas shows the tiles and the tour, the figures appear in the dock, the waypoints export,
 // and an edit of the floor drops the stale tiling.
 #include "EditorFixture.h"
-#include "learning/ppo/PpoOrdering.h"
-#include "tiling/WaypointOrder.h"
 #include "modes/tiling/PpoTrainer.h"
 #include "modes/tiling/PpoTrainingPanel.h"
 #include "modes/tiling/TilingController.h"
 #include "modes/tiling/TilingDock.h"
 #include "modes/tiling/TilingItem.h"
 #include "modes/tiling/TilingMode.h"
+#include "tiling/WaypointOrder.h"
+#include "tiling/ppo/PpoOrdering.h"
 
 #include <QFile>
 #include <QTemporaryDir>

@@ -3,6 +3,7 @@
 // SVG/PDF drawings (checked with xmllint and qpdf when installed).
 #include "TestPlans.h"
 #include "formats/Export.h"
+#include "formats/FileIO.h"
 #include "formats/PlanIO.h"
 
 #include <array>

@@ -1,5 +1,6 @@
 // Plan and project files: reading, writing, error messages and atomic writes.
 #include "TestPlans.h"
+#include "formats/FileIO.h"
 #include "formats/PlanIO.h"
 
 #include <algorithm>

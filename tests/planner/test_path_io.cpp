@@ -1,5 +1,6 @@
 // Path and graph exports: metrics line, GeoJSON (checked with GDAL's ogrinfo), CSV, JSON,
 // ROS 2 YAML (checked with python3 yaml) and the corner graph JSON.
+#include "formats/FileIO.h"
 #include "formats/PathIO.h"
 #include "formats/PlanIO.h"
 

@@ -1,9 +1,9 @@
 // The PPO ordering policy of the tiling robot: candidate features by hand, the clipped loss
 // on a hand-made batch, masking, valid tours, reproducibility and the saved model.
-#include "learning/ppo/TourBuilder.h"
-#include "learning/torch/PointerPpo.h"
 #include "model/Plan.h"
 #include "tiling/RandomInstances.h"
+#include "tiling/ppo/TourBuilder.h"
+#include "tiling/ppo/torch/PointerPpo.h"
 
 #include <algorithm>
 #include <cmath>

@@ -3,7 +3,7 @@
 // timer at the robot's speed times a speed-up factor.
 #pragma once
 
-#include "path/CoveragePath.h"
+#include "model/CoveragePath.h"
 
 #include <QElapsedTimer>
 #include <QObject>

@@ -2,6 +2,7 @@
 
 #include "document/Document.h"
 #include "document/DocumentFiles.h"
+#include "formats/FileIO.h"
 
 #include <QDir>
 #include <QFile>

@@ -2,6 +2,7 @@
 
 #include "document/Conversions.h"
 #include "document/Document.h"
+#include "formats/FileIO.h"
 #include "model/Validation.h"
 
 #include <QCoreApplication>

@@ -2,8 +2,9 @@
 // code as `floorcover-cli export`).
 #include "document/Conversions.h"
 #include "document/Document.h"
-#include "window/MainWindow.h"
+#include "formats/FileIO.h"
 #include "tasks/PlanningController.h"
+#include "window/MainWindow.h"
 
 #include <QFileDialog>
 #include <QFileInfo>

@@ -1,6 +1,6 @@
 #include "learning/dqn/DqnModelFile.h"
 
-#include "formats/PlanIO.h"
+#include "formats/FileIO.h"
 #include "learning/GraphState.h"
 #include "model/Plan.h"
 

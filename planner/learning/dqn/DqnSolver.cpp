@@ -1,10 +1,10 @@
 #include "learning/dqn/DqnSolver.h"
 
+#include "graph/PreparedPlan.h"
 #include "learning/dqn/DqnModelFile.h"
 #include "learning/dqn/DqnPolicy.h"
 #include "model/Plan.h"
-#include "pipeline/Planner.h"
-#include "pipeline/SolverRegistry.h"
+#include "solvers/SolverRegistry.h"
 
 #include <filesystem>
 #include <map>

@@ -1,8 +1,8 @@
 #include "modes/tiling/PpoTrainer.h"
 
 #include "document/Conversions.h"
-#include "learning/ppo/PpoOrdering.h"
-#include "learning/torch/PointerPpo.h"
+#include "tiling/ppo/PpoOrdering.h"
+#include "tiling/ppo/torch/PointerPpo.h"
 
 #include <QDir>
 #include <QElapsedTimer>

@@ -1,6 +1,7 @@
 #include "modes/tiling/TilingDock.h"
 
 #include "document/Conversions.h"
+#include "formats/FileIO.h"
 #include "formats/PlanIO.h"
 #include "modes/tiling/PpoTrainingPanel.h"
 #include "modes/tiling/TilingController.h"

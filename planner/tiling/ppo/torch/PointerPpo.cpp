@@ -1,9 +1,9 @@
-#include "learning/torch/PointerPpo.h"
+#include "tiling/ppo/torch/PointerPpo.h"
 
-#include "learning/ppo/TourBuilder.h"
-#include "learning/ppo/TrainingInstances.h"
-#include "learning/torch/LocalPointer.h"
 #include "model/Plan.h"
+#include "tiling/ppo/TourBuilder.h"
+#include "tiling/ppo/TrainingInstances.h"
+#include "tiling/ppo/torch/LocalPointer.h"
 
 #include <algorithm>
 #include <chrono>

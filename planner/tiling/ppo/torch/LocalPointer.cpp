@@ -1,4 +1,4 @@
-#include "learning/torch/LocalPointer.h"
+#include "tiling/ppo/torch/LocalPointer.h"
 
 namespace fc {
 

@@ -1,4 +1,4 @@
-#include "learning/ppo/TrainingInstances.h"
+#include "tiling/ppo/TrainingInstances.h"
 
 #include "tiling/RandomInstances.h"
 #include "tiling/TilingPlanner.h"

@@ -1,4 +1,4 @@
-#include "learning/ppo/TourBuilder.h"
+#include "tiling/ppo/TourBuilder.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,6 +1,6 @@
 // Registers the tiling robot's ordering methods "ppo-policy" (the PPO pointer policy alone:
 // the best of its greedy tour and 64 sampled tours) and "ppo" (that tour polished by the
-// energy-aware 2-opt / Or-opt of tiling::polishTour), learning/torch/PointerPpo.
+// energy-aware 2-opt / Or-opt of tiling::polishTour), tiling/ppo/torch/PointerPpo.
 #pragma once
 
 #include <cstdint>

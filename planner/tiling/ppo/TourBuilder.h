@@ -1,7 +1,7 @@
 // The local view of the PPO ordering policy (seeds/001 sect. 4.2, made size-free): a tour is
 // built from waypoint 0 one move at a time, choosing among the `window` cheapest moves to
 // unvisited waypoints, each described relative to the robot's current pose. Plain C++; the
-// network that chooses lives in learning/torch/PointerPpo.
+// network that chooses lives in tiling/ppo/torch/PointerPpo.
 #pragma once
 
 #include "tiling/WaypointIndex.h"

@@ -1,4 +1,4 @@
-#include "path/CoveragePath.h"
+#include "model/CoveragePath.h"
 
 namespace fc {
 

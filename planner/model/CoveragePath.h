@@ -1,4 +1,5 @@
-// The robot-centre path (SPEC sect. 6), world frame.
+// The robot-centre path (SPEC sect. 6), world frame: a plain value that solvers, path
+// building, metrics and the formats share.
 #pragma once
 
 #include "geometry/Geometry.h"

@@ -3,7 +3,7 @@
 // cheapest candidate moves, LSTM decoder over the moves made so far, additive attention)
 // picks the next waypoint; a critic on the decoder state and the encoded window estimates
 // the return. Trained as an actor-critic with PPO's clipped objective and GAE on random
-// rooms (learning/ppo/TrainingInstances), reward = -energy of each move. The interface is
+// rooms (tiling/ppo/TrainingInstances), reward = -energy of each move. The interface is
 // free of torch types; LibTorch stays in PointerPpo.cpp.
 #pragma once
 

@@ -1,7 +1,7 @@
-#include "learning/ppo/PpoOrdering.h"
+#include "tiling/ppo/PpoOrdering.h"
 
-#include "learning/torch/PointerPpo.h"
 #include "tiling/WaypointOrder.h"
+#include "tiling/ppo/torch/PointerPpo.h"
 
 #include <map>
 #include <memory>

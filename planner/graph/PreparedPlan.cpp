@@ -1,0 +1,17 @@
+#include "graph/PreparedPlan.h"
+
+namespace fc {
+
+PlanStages buildPlanStages(const Plan& plan, const RobotProfile& robot, double stripeAngleDeg,
+                           bool transitionCells) {
+    DecompositionOptions options;
+    options.robot = robot;
+    options.stripeAngleDeg = stripeAngleDeg;
+    options.transitionCells = transitionCells;
+    PlanStages stages;
+    stages.decomposition = decompose(plan, options);
+    stages.graph = buildCornerGraph(stages.decomposition);
+    return stages;
+}
+
+} // namespace fc
