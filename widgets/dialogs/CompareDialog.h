@@ -35,8 +35,8 @@ public:
     ~CompareDialog() override;
 
     void start();
-    void cancel(); // the table stays as it is
-    void done(int result) override; // closing cancels
+    void cancel();                           // the table stays as it is
+    void done(int result) override;          // closing cancels
     bool runAndWait(int timeoutMs = 120000); // for tests
     Task* task() const { return task_; }     // the running comparison (null when none)
     const std::vector<SolverRun>& runs() const { return runs_; }

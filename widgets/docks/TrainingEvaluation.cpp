@@ -3,7 +3,6 @@
 // and solver dqn (the policy's walk after the model's refinement) are above the exact or
 // heuristic solver. Stop cancels it; a result for a model that no longer fits is dropped.
 #include "docks/TrainingDock.h"
-
 #include "tasks/Task.h"
 
 #include <QLabel>
@@ -16,10 +15,10 @@ void TrainingDock::evaluate() {
     evaluating_ = true;
     setState(state_);
     status_->setText(tr("Evaluating the model on its test queries…"));
-    Task* task = tasks_->run(tr("Evaluating the DQN model"),
-                             [session = session_](TaskFeedback& feedback) {
-                                 return evaluateDqn(*session, feedback);
-                             });
+    Task* task =
+        tasks_->run(tr("Evaluating the DQN model"), [session = session_](TaskFeedback& feedback) {
+            return evaluateDqn(*session, feedback);
+        });
     evaluation_ = task;
     connect(task, &Task::finished, this,
             [this, task] { onEvaluated(*task->result<TrainingEvaluation>()); });

@@ -28,7 +28,9 @@ TrainingRun trainLocked(DqnSession& session, double seconds, TaskFeedback& feedb
             feedback.cancelledFunction());
     } catch (const std::exception& e) {
         throw std::runtime_error(
-            QCoreApplication::translate("fc::ui::TrainingDock", "Training failed: %1").arg(QString::fromStdString(e.what())).toStdString());
+            QCoreApplication::translate("fc::ui::TrainingDock", "Training failed: %1")
+                .arg(QString::fromStdString(e.what()))
+                .toStdString());
     }
     return {stop == TrainingStop::Cancelled ? TrainingEnd::Interrupted : TrainingEnd::BudgetReached,
             session.trainer->modelInfo().trainingSeconds, session.trainer->episodes()};
@@ -40,12 +42,14 @@ TrainingRun startDqn(DqnSession& session, const PreparedPlan& prepared,
                      const TrainingOptions& options, double seconds, TaskFeedback& feedback) {
     const std::lock_guard<std::mutex> guard(session.mutex);
     try {
-        session.trainer = std::make_unique<DqnTrainer>(prepared.graph, options,
-                                                       prepared.decomposition.frame.stripeAngleDeg(),
-                                                       prepared.robot.coverageWidth);
+        session.trainer = std::make_unique<DqnTrainer>(
+            prepared.graph, options, prepared.decomposition.frame.stripeAngleDeg(),
+            prepared.robot.coverageWidth);
     } catch (const std::exception& e) {
         throw std::runtime_error(
-            QCoreApplication::translate("fc::ui::TrainingDock", "Training cannot start: %1").arg(QString::fromStdString(e.what())).toStdString());
+            QCoreApplication::translate("fc::ui::TrainingDock", "Training cannot start: %1")
+                .arg(QString::fromStdString(e.what()))
+                .toStdString());
     }
     return trainLocked(session, seconds, feedback);
 }
@@ -58,7 +62,9 @@ TrainingRun trainDqn(DqnSession& session, double seconds, TaskFeedback& feedback
 TrainingEvaluation evaluateDqn(DqnSession& session, TaskFeedback& feedback) {
     const std::lock_guard<std::mutex> guard(session.mutex);
     if (!session.trainer)
-        throw std::runtime_error(QCoreApplication::translate("fc::ui::TrainingDock", "there is no trained model yet").toStdString());
+        throw std::runtime_error(
+            QCoreApplication::translate("fc::ui::TrainingDock", "there is no trained model yet")
+                .toStdString());
     const EvaluationReport report = session.trainer->evaluate(feedback.solveControl());
     TrainingEvaluation result;
     result.queries = report.queries;

@@ -108,14 +108,14 @@ void PlanningController::startPrepare() {
                     return x.second < y.second;
                 })->first;
     }
-    Task* task = tasks_->run(
-        tr("Preparing the overlays"),
-        [project, angle](TaskFeedback& feedback) {
-            feedback.throwIfCancelled(); // edited again while this waited for a thread
-            project.robot.validate();
-            return preparePlan(project.plan, project.robot, angle);
-        },
-        {QStringLiteral("prepare")});
+    Task* task =
+        tasks_->run(tr("Preparing the overlays"),
+                    [project, angle](TaskFeedback& feedback) {
+                        feedback.throwIfCancelled(); // edited again while this waited for a thread
+                        project.robot.validate();
+                        return preparePlan(project.plan, project.robot, angle);
+                    },
+                    {QStringLiteral("prepare")});
     prepareTask_ = task;
     connect(task, &Task::finished, this, [this, task] {
         prepared_ = task->result<PreparedPlan>();
@@ -136,12 +136,11 @@ void PlanningController::plan() {
         return;
     PlanRequest request = planRequestFor(document_->project());
     request.modelPath = modelPath_;
-    Task* task = tasks_->run(
-        tr("Planning the path"),
-        [request](TaskFeedback& feedback) {
-            return planCoverage(request, feedback.solveControl());
-        },
-        {QStringLiteral("planning")});
+    Task* task = tasks_->run(tr("Planning the path"),
+                             [request](TaskFeedback& feedback) {
+                                 return planCoverage(request, feedback.solveControl());
+                             },
+                             {QStringLiteral("planning")});
     planTask_ = task;
     connect(task, &Task::finished, this, [this, task] {
         result_ = task->result<PlanResult>();

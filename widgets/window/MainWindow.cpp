@@ -1,26 +1,26 @@
 #include "window/MainWindow.h"
 
-#include "document/Autosaver.h"
 #include "canvas/CanvasView.h"
+#include "canvas/PathPreview.h"
+#include "canvas/PlanScene.h"
 #include "dialogs/CompareDialog.h"
+#include "dialogs/PreferencesDialog.h"
+#include "docks/LegendDock.h"
+#include "docks/PathPreviewBar.h"
+#include "docks/PlanningDock.h"
+#include "docks/TrainingDock.h"
+#include "document/Autosaver.h"
 #include "document/Document.h"
 #include "document/DocumentFiles.h"
-#include "docks/LegendDock.h"
-#include "canvas/PathPreview.h"
-#include "docks/PathPreviewBar.h"
-#include "canvas/PlanScene.h"
+#include "modes/tiling/TilingMode.h"
 #include "tasks/PlanningController.h"
 #include "tasks/Task.h"
 #include "tasks/TaskListWidget.h"
-#include "docks/PlanningDock.h"
-#include "dialogs/PreferencesDialog.h"
-#include "modes/tiling/TilingMode.h"
 #include "tools/DrawPolygonTool.h"
 #include "tools/EditVerticesTool.h"
 #include "tools/PickRoomTool.h"
 #include "tools/PlaceEndpointTool.h"
 #include "tools/ToolManager.h"
-#include "docks/TrainingDock.h"
 
 #include <QAction>
 #include <QApplication>
@@ -40,9 +40,8 @@ namespace fc::ui {
 MainWindow::MainWindow(QWidget* parent)
     : QMainWindow(parent), undoGroup_(new QUndoGroup(this)), scene_(new PlanScene(this)),
       view_(new CanvasView(this)), tasks_(new TaskManager(this)),
-      planner_(new PlanningController(tasks_, this)),
-      tools_(new ToolManager(this)), planningDock_(new PlanningDock(this)),
-      autosaver_(new Autosaver(this)) {
+      planner_(new PlanningController(tasks_, this)), tools_(new ToolManager(this)),
+      planningDock_(new PlanningDock(this)), autosaver_(new Autosaver(this)) {
     setObjectName(QStringLiteral("MainWindow"));
     setAcceptDrops(true);
     view_->setScene(scene_);

@@ -55,15 +55,15 @@ void TilingController::run(const QString& solver, quint64 seed) {
     request.solver = solver.toStdString();
     request.seed = seed;
     const bool wasBusy = isBusy();
-    Task* task = tasks_->run(
-        tr("Tiling with %1").arg(solver),
-        [request](TaskFeedback& feedback) {
-            tiling::TilingPlan plan = tiling::tilePlan(request);
-            feedback.setProgress(0.25); // the ordering is the long part
-            tiling::orderTiles(plan, request.solver, request.seed, feedback.cancelledFunction());
-            return plan;
-        },
-        {QStringLiteral("tiling")});
+    Task* task = tasks_->run(tr("Tiling with %1").arg(solver),
+                             [request](TaskFeedback& feedback) {
+                                 tiling::TilingPlan plan = tiling::tilePlan(request);
+                                 feedback.setProgress(0.25); // the ordering is the long part
+                                 tiling::orderTiles(plan, request.solver, request.seed,
+                                                    feedback.cancelledFunction());
+                                 return plan;
+                             },
+                             {QStringLiteral("tiling")});
     task_ = task;
     connect(task, &Task::finished, this, [this, task] {
         result_ = task->result<tiling::TilingPlan>();
