@@ -24,7 +24,6 @@ namespace {
 
 // Milliseconds from `cancel` (a click, a call) until `task` ended.
 template <typename Cancel> qint64 timeToEnd(Task* task, Cancel cancel) {
-    QPointer<Task> guard(task);
     if (!task || !task->isActive())
         return 0;
     QSignalSpy ended(task, &Task::ended);

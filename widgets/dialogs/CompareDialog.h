@@ -6,6 +6,7 @@
 #pragma once
 
 #include "pipeline/Planner.h"
+#include "tasks/Task.h"
 
 #include <QDialog>
 #include <QImage>
@@ -18,8 +19,6 @@ class QLabel;
 class QTableWidget;
 
 namespace fc::ui {
-
-class Task;
 
 struct SolverRun {
     std::string solver;

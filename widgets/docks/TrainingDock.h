@@ -8,6 +8,7 @@
 #pragma once
 
 #include "tasks/DqnTraining.h"
+#include "tasks/Task.h"
 
 #include <QDockWidget>
 #include <QPointer>
@@ -22,9 +23,6 @@ class QProgressBar;
 class QPushButton;
 
 namespace fc::ui {
-
-class Task;
-class TaskManager;
 
 class TrainingDock : public QDockWidget {
     Q_OBJECT

@@ -5,6 +5,7 @@
 #pragma once
 
 #include "pipeline/Planner.h"
+#include "tasks/Task.h"
 
 #include <QObject>
 #include <QPointer>
@@ -16,8 +17,6 @@ class QTimer;
 namespace fc::ui {
 
 class Document;
-class Task;
-class TaskManager;
 
 class PlanningController : public QObject {
     Q_OBJECT

@@ -79,10 +79,10 @@ void Task::poll() {
 
 void Task::complete(std::any result, QString error, bool threw) {
     poll(); // the last progress and posted values come before the end
-    const bool cancelled = feedback_->isCancelled();
-    if (dropped_ || (cancelled && (threw || !options_.keepResultWhenCancelled))) {
+    const bool cancelRequested = feedback_->isCancelled();
+    if (dropped_ || (cancelRequested && (threw || !options_.keepResultWhenCancelled))) {
         state_ = State::Cancelled;
-        emit this->cancelled();
+        emit cancelled();
     } else if (threw) {
         state_ = State::Failed;
         error_ = std::move(error);

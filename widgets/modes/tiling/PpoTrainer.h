@@ -5,14 +5,13 @@
 // second); the model is then saved and "ppo" plans with it.
 #pragma once
 
+#include "tasks/Task.h"
+
 #include <QObject>
 #include <QPointer>
 #include <QString>
 
 namespace fc::ui {
-
-class Task;
-class TaskManager;
 
 class PpoTrainer : public QObject {
     Q_OBJECT

@@ -5,6 +5,7 @@
 // iteration.
 #pragma once
 
+#include "tasks/Task.h"
 #include "tiling/TilingPlanner.h"
 
 #include <QObject>
@@ -15,8 +16,6 @@
 namespace fc::ui {
 
 class Document;
-class Task;
-class TaskManager;
 
 class TilingController : public QObject {
     Q_OBJECT
