@@ -27,7 +27,7 @@ void TaskListWidget::add(Task* task) {
     layout->setContentsMargins(0, 0, 0, 0);
     auto* label = new QLabel(task->description(), row);
     auto* bar = new QProgressBar(row);
-    bar->setRange(0, 1000);
+    bar->setRange(0, 0); // busy until the work reports how far it is
     bar->setMaximumWidth(120);
     bar->setTextVisible(false);
     auto* cancel = new QToolButton(row);
@@ -38,6 +38,8 @@ void TaskListWidget::add(Task* task) {
     layout->addWidget(bar);
     layout->addWidget(cancel);
     connect(task, &Task::progressChanged, bar, [bar](double fraction) {
+        if (fraction > 0.0)
+            bar->setRange(0, 1000);
         bar->setValue(static_cast<int>(std::lround(1000.0 * fraction)));
     });
     connect(task, &Task::statusChanged, label, [label, task](const QString& status) {

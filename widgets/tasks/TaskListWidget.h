@@ -1,5 +1,6 @@
 // The main window's task list (in the status bar): each running task with its description,
-// a progress bar and a Cancel button; hidden when nothing runs.
+// a progress bar (busy until the work reports progress) and a Cancel button; hidden when
+// nothing runs.
 #pragma once
 
 #include <QHash>
