@@ -352,7 +352,18 @@ PlanResult planPerRoom(const PlanRequest& request, const SolveControl& control) 
         Metrics metrics;
     };
     std::vector<Screened> screened;
+    // Progress: the screening is the first half, the finalists the second.
+    const double candidates =
+        2.0 + static_cast<double>(std::min(groups.size(), kPerRoomSearchLimit));
+    double screenedCount = 0.0;
+    auto report = [&control](double fraction) {
+        if (control.progress)
+            control.progress(fraction);
+    };
     auto screen = [&](const std::map<std::string, double>& candidate) {
+        if (control.cancelled && control.cancelled())
+            throw SolverError("cancelled");
+        report(0.5 * screenedCount++ / candidates);
         for (const Screened& previous : screened) {
             bool same = true;
             for (const auto& [room, angle] : candidate)
@@ -398,7 +409,10 @@ PlanResult planPerRoom(const PlanRequest& request, const SolveControl& control) 
         }));
     std::optional<PlanResult> best;
     std::exception_ptr failure;
+    report(0.5);
     for (auto& plan : plans) { // in order, so that ties go to the family plan
+        report(0.5 +
+               0.5 * static_cast<double>(&plan - plans.data()) / static_cast<double>(plans.size()));
         try {
             PlanResult result = plan.get();
             if (!best || betterPlanChoice(result.metrics, best->metrics))
