@@ -1,6 +1,5 @@
 #include "tasks/Task.h"
 
-#include <QEventLoop>
 #include <QTimer>
 #include <algorithm>
 
@@ -85,8 +84,7 @@ void Task::complete(std::any result, QString error, bool threw) {
         emit cancelled();
     } else if (threw) {
         state_ = State::Failed;
-        error_ = std::move(error);
-        emit failed(error_);
+        emit failed(error);
     } else {
         state_ = State::Finished;
         result_ = std::move(result);
@@ -184,20 +182,6 @@ void TaskManager::cancelKind(const QString& kind) {
     for (Task* task : tasks_)
         if (task->kind() == kind)
             task->drop();
-}
-
-bool TaskManager::waitForIdle(int timeoutMs) {
-    if (!isBusy())
-        return true;
-    QEventLoop loop;
-    const auto idle = connect(this, &TaskManager::busyChanged, &loop, [&loop](bool busy) {
-        if (!busy)
-            loop.quit();
-    });
-    QTimer::singleShot(timeoutMs, &loop, &QEventLoop::quit);
-    loop.exec();
-    disconnect(idle);
-    return !isBusy();
 }
 
 } // namespace fc::ui

@@ -84,8 +84,6 @@ public:
     bool isActive() const { return state_ == State::Running; }
     double progress() const { return progress_; }
     QString status() const { return status_; }
-    bool isCancelRequested() const { return feedback_->isCancelled(); }
-    QString errorMessage() const { return error_; }
 
     // The value the work returned (valid in and after finished()).
     template <typename R> std::shared_ptr<const R> result() const {
@@ -120,7 +118,6 @@ private:
     QString status_;
     bool dropped_ = false;
     std::any result_;
-    QString error_;
 };
 
 // One per main window (standalone docks and dialogs make their own).
@@ -153,8 +150,6 @@ public:
     void cancelAll();
     // Cancels the running tasks of `kind` and drops their results.
     void cancelKind(const QString& kind);
-    // Waits (processing events) until no task runs or timeoutMs passed; true when idle.
-    bool waitForIdle(int timeoutMs = 60000);
 
 signals:
     void taskAdded(fc::ui::Task* task);
