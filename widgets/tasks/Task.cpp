@@ -1,5 +1,6 @@
 #include "tasks/Task.h"
 
+#include <QThread>
 #include <QTimer>
 #include <algorithm>
 
@@ -95,6 +96,9 @@ void Task::complete(std::any result, QString error, bool threw) {
 
 TaskManager::TaskManager(QObject* parent) : QObject(parent), poll_(new QTimer(this)) {
     setObjectName(QStringLiteral("TaskManager"));
+    // Tasks are few (one per kind, the trainings) and some run for minutes: each gets a
+    // thread, so a training never holds the overlays or a plan in the queue.
+    pool_.setMaxThreadCount(std::max(8, 2 * QThread::idealThreadCount()));
     poll_->setInterval(100);
     connect(poll_, &QTimer::timeout, this, [this] {
         for (Task* task : tasks_)
