@@ -140,6 +140,11 @@ double sweepAngleOfRoom(const std::map<std::string, double>& angles, const std::
 
 namespace {
 
+void throwIfCancelled(const SolveControl& control) {
+    if (control.cancelled && control.cancelled())
+        throw SolverError("cancelled");
+}
+
 // Plans the request with the given angle per room (see roomSweepAngles).
 PlanResult planWithRoomAngles(const PlanRequest& request,
                               const std::map<std::string, double>& angles,
@@ -168,6 +173,7 @@ PlanResult planWithRoomAngles(const PlanRequest& request,
     for (double angle : distinct) {
         Group group;
         group.angle = angle;
+        throwIfCancelled(control); // each decomposition takes a while on large floors
         group.prepared = preparePlan(request.plan, request.robot, angle, request.transitionCells);
         double area = 0.0;
         Vec2 weighted;
@@ -281,6 +287,7 @@ PlanResult planWithRoomAngles(const PlanRequest& request,
         result.parts.push_back(std::move(part));
     }
 
+    throwIfCancelled(control); // before measuring the path
     const PlanPart& first = result.parts.front();
     (void)t0;
     result.prepared = first.prepared;
@@ -361,8 +368,7 @@ PlanResult planPerRoom(const PlanRequest& request, const SolveControl& control) 
             control.progress(fraction);
     };
     auto screen = [&](const std::map<std::string, double>& candidate) {
-        if (control.cancelled && control.cancelled())
-            throw SolverError("cancelled");
+        throwIfCancelled(control);
         report(0.5 * screenedCount++ / candidates);
         for (const Screened& previous : screened) {
             bool same = true;
