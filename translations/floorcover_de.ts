@@ -133,6 +133,22 @@
         <source>%1 of %2 solvers answered; overlaps are drawn in blue.</source>
         <translation>%1 von %2 Lösern haben geantwortet; Überlappungen sind blau gezeichnet.</translation>
     </message>
+    <message>
+        <source>Comparing the solvers</source>
+        <translation>Löser werden verglichen</translation>
+    </message>
+    <message>
+        <source>Planning with every solver… (%1)</source>
+        <translation>Planung mit jedem Löser… (%1)</translation>
+    </message>
+    <message>
+        <source>The comparison failed: %1</source>
+        <translation>Der Vergleich ist fehlgeschlagen: %1</translation>
+    </message>
+    <message>
+        <source>The comparison was cancelled.</source>
+        <translation>Der Vergleich wurde abgebrochen.</translation>
+    </message>
 </context>
 <context>
     <name>fc::ui::Document</name>
@@ -931,6 +947,17 @@ Abdeckungspfadplanung für Reinigungs- und Desinfektionsroboter.</translation>
     </message>
 </context>
 <context>
+    <name>fc::ui::PlanningController</name>
+    <message>
+        <source>Preparing the overlays</source>
+        <translation>Überlagerungen werden vorbereitet</translation>
+    </message>
+    <message>
+        <source>Planning the path</source>
+        <translation>Pfad wird geplant</translation>
+    </message>
+</context>
+<context>
     <name>fc::ui::PlanningDock</name>
     <message>
         <source>Planning</source>
@@ -1114,6 +1141,13 @@ Abdeckungspfadplanung für Reinigungs- und Desinfektionsroboter.</translation>
     </message>
 </context>
 <context>
+    <name>fc::ui::PpoTrainer</name>
+    <message>
+        <source>Training ppo</source>
+        <translation>PPO-Training</translation>
+    </message>
+</context>
+<context>
     <name>fc::ui::PpoTrainingPanel</name>
     <message>
         <source> s</source>
@@ -1159,6 +1193,10 @@ Abdeckungspfadplanung für Reinigungs- und Desinfektionsroboter.</translation>
         <source>Update %1, %2 kg m per waypoint, %3 s</source>
         <translation>Aktualisierung %1, %2 kg m je Wegpunkt, %3 s</translation>
     </message>
+    <message>
+        <source>Training cancelled before its first update; no model.</source>
+        <translation>Training vor der ersten Aktualisierung abgebrochen; kein Modell.</translation>
+    </message>
 </context>
 <context>
     <name>fc::ui::PreferencesDialog</name>
@@ -1173,6 +1211,32 @@ Abdeckungspfadplanung für Reinigungs- und Desinfektionsroboter.</translation>
     <message>
         <source>Language</source>
         <translation>Sprache</translation>
+    </message>
+</context>
+<context>
+    <name>fc::ui::TaskListWidget</name>
+    <message>
+        <source>Cancel</source>
+        <translation>Abbrechen</translation>
+    </message>
+    <message>
+        <source>Cancel: %1</source>
+        <translation>Abbrechen: %1</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+    <message>
+        <source>%1 (cancelling…)</source>
+        <translation>%1 (wird abgebrochen…)</translation>
+    </message>
+</context>
+<context>
+    <name>fc::ui::TilingController</name>
+    <message>
+        <source>Tiling with %1</source>
+        <translation>Kachelung mit %1</translation>
     </message>
 </context>
 <context>
@@ -1442,24 +1506,25 @@ Abdeckungspfadplanung für Reinigungs- und Desinfektionsroboter.</translation>
         <source>Evaluation failed: %1</source>
         <translation>Bewertung fehlgeschlagen: %1</translation>
     </message>
-</context>
-<context>
-    <name>fc::ui::TrainingWorker</name>
     <message>
-        <source>There is no valid plan to train for.</source>
-        <translation>Es gibt keinen gültigen Plan zum Trainieren.</translation>
-    </message>
-    <message>
-        <source>Training cannot start: %1</source>
-        <translation>Das Training kann nicht beginnen: %1</translation>
-    </message>
-    <message>
-        <source>Training failed: %1</source>
-        <translation>Das Training ist fehlgeschlagen: %1</translation>
+        <source>Training the DQN</source>
+        <translation>DQN wird trainiert</translation>
     </message>
     <message>
         <source>there is no trained model yet</source>
         <translation>es gibt noch kein trainiertes Modell</translation>
+    </message>
+    <message>
+        <source>Evaluating the DQN model</source>
+        <translation>DQN-Modell wird bewertet</translation>
+    </message>
+    <message>
+        <source>Training failed: %1</source>
+        <translation>Training fehlgeschlagen: %1</translation>
+    </message>
+    <message>
+        <source>Training cannot start: %1</source>
+        <translation>Training kann nicht starten: %1</translation>
     </message>
 </context>
 <context>

@@ -133,6 +133,22 @@
         <source>%1 of %2 solvers answered; overlaps are drawn in blue.</source>
         <translation>%1 solveurs sur %2 ont répondu ; les recouvrements sont tracés en bleu.</translation>
     </message>
+    <message>
+        <source>Comparing the solvers</source>
+        <translation>Comparaison des solveurs</translation>
+    </message>
+    <message>
+        <source>Planning with every solver… (%1)</source>
+        <translation>Planification avec chaque solveur… (%1)</translation>
+    </message>
+    <message>
+        <source>The comparison failed: %1</source>
+        <translation>La comparaison a échoué : %1</translation>
+    </message>
+    <message>
+        <source>The comparison was cancelled.</source>
+        <translation>La comparaison a été annulée.</translation>
+    </message>
 </context>
 <context>
     <name>fc::ui::Document</name>
@@ -931,6 +947,17 @@ Planification de trajets de couverture pour robots de nettoyage et de désinfect
     </message>
 </context>
 <context>
+    <name>fc::ui::PlanningController</name>
+    <message>
+        <source>Preparing the overlays</source>
+        <translation>Préparation des calques</translation>
+    </message>
+    <message>
+        <source>Planning the path</source>
+        <translation>Planification du trajet</translation>
+    </message>
+</context>
+<context>
     <name>fc::ui::PlanningDock</name>
     <message>
         <source>Planning</source>
@@ -1114,6 +1141,13 @@ Planification de trajets de couverture pour robots de nettoyage et de désinfect
     </message>
 </context>
 <context>
+    <name>fc::ui::PpoTrainer</name>
+    <message>
+        <source>Training ppo</source>
+        <translation>Entraînement PPO</translation>
+    </message>
+</context>
+<context>
     <name>fc::ui::PpoTrainingPanel</name>
     <message>
         <source> s</source>
@@ -1159,6 +1193,10 @@ Planification de trajets de couverture pour robots de nettoyage et de désinfect
         <source>Update %1, %2 kg m per waypoint, %3 s</source>
         <translation>Mise à jour %1, %2 kg m par point de passage, %3 s</translation>
     </message>
+    <message>
+        <source>Training cancelled before its first update; no model.</source>
+        <translation>Entraînement annulé avant sa première mise à jour ; aucun modèle.</translation>
+    </message>
 </context>
 <context>
     <name>fc::ui::PreferencesDialog</name>
@@ -1173,6 +1211,32 @@ Planification de trajets de couverture pour robots de nettoyage et de désinfect
     <message>
         <source>Language</source>
         <translation>Langue</translation>
+    </message>
+</context>
+<context>
+    <name>fc::ui::TaskListWidget</name>
+    <message>
+        <source>Cancel</source>
+        <translation>Annuler</translation>
+    </message>
+    <message>
+        <source>Cancel: %1</source>
+        <translation>Annuler : %1</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1 : %2</translation>
+    </message>
+    <message>
+        <source>%1 (cancelling…)</source>
+        <translation>%1 (annulation…)</translation>
+    </message>
+</context>
+<context>
+    <name>fc::ui::TilingController</name>
+    <message>
+        <source>Tiling with %1</source>
+        <translation>Pavage avec %1</translation>
     </message>
 </context>
 <context>
@@ -1442,24 +1506,25 @@ Planification de trajets de couverture pour robots de nettoyage et de désinfect
         <source>Evaluation failed: %1</source>
         <translation>Échec de l’évaluation : %1</translation>
     </message>
-</context>
-<context>
-    <name>fc::ui::TrainingWorker</name>
     <message>
-        <source>There is no valid plan to train for.</source>
-        <translation>Aucun plan valide pour l’entraînement.</translation>
+        <source>Training the DQN</source>
+        <translation>Entraînement du DQN</translation>
     </message>
     <message>
-        <source>Training cannot start: %1</source>
-        <translation>L’entraînement ne peut pas démarrer : %1</translation>
+        <source>there is no trained model yet</source>
+        <translation>il n’y a pas encore de modèle entraîné</translation>
+    </message>
+    <message>
+        <source>Evaluating the DQN model</source>
+        <translation>Évaluation du modèle DQN</translation>
     </message>
     <message>
         <source>Training failed: %1</source>
         <translation>Échec de l’entraînement : %1</translation>
     </message>
     <message>
-        <source>there is no trained model yet</source>
-        <translation>il n’y a pas encore de modèle entraîné</translation>
+        <source>Training cannot start: %1</source>
+        <translation>L’entraînement ne peut pas démarrer : %1</translation>
     </message>
 </context>
 <context>

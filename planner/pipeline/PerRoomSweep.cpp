@@ -140,6 +140,11 @@ double sweepAngleOfRoom(const std::map<std::string, double>& angles, const std::
 
 namespace {
 
+void throwIfCancelled(const SolveControl& control) {
+    if (control.cancelled && control.cancelled())
+        throw SolverError("cancelled");
+}
+
 // Plans the request with the given angle per room (see roomSweepAngles).
 PlanResult planWithRoomAngles(const PlanRequest& request,
                               const std::map<std::string, double>& angles,
@@ -168,6 +173,7 @@ PlanResult planWithRoomAngles(const PlanRequest& request,
     for (double angle : distinct) {
         Group group;
         group.angle = angle;
+        throwIfCancelled(control); // each decomposition takes a while on large floors
         group.prepared = preparePlan(request.plan, request.robot, angle, request.transitionCells,
                                      solverNeedsClassicStages(request.solver));
         double area = 0.0;
@@ -282,6 +288,7 @@ PlanResult planWithRoomAngles(const PlanRequest& request,
         result.parts.push_back(std::move(part));
     }
 
+    throwIfCancelled(control); // before measuring the path
     const PlanPart& first = result.parts.front();
     (void)t0;
     result.prepared = first.prepared;
@@ -353,7 +360,17 @@ PlanResult planPerRoom(const PlanRequest& request, const SolveControl& control) 
         Metrics metrics;
     };
     std::vector<Screened> screened;
+    // Progress: the screening is the first half, the finalists the second.
+    const double candidates =
+        2.0 + static_cast<double>(std::min(groups.size(), kPerRoomSearchLimit));
+    double screenedCount = 0.0;
+    auto report = [&control](double fraction) {
+        if (control.progress)
+            control.progress(fraction);
+    };
     auto screen = [&](const std::map<std::string, double>& candidate) {
+        throwIfCancelled(control);
+        report(0.5 * screenedCount++ / candidates);
         for (const Screened& previous : screened) {
             bool same = true;
             for (const auto& [room, angle] : candidate)
@@ -399,7 +416,10 @@ PlanResult planPerRoom(const PlanRequest& request, const SolveControl& control) 
         }));
     std::optional<PlanResult> best;
     std::exception_ptr failure;
+    report(0.5);
     for (auto& plan : plans) { // in order, so that ties go to the family plan
+        report(0.5 +
+               0.5 * static_cast<double>(&plan - plans.data()) / static_cast<double>(plans.size()));
         try {
             PlanResult result = plan.get();
             if (!best || betterPlanChoice(result.metrics, best->metrics))

@@ -70,8 +70,9 @@ Solution solveExact(const CornerGraph& graph, const Query& query, const ExactOpt
     // Incumbent: the heuristic's walk (deterministic, near-optimal on these sizes); on small
     // queries the instant greedy walk, the search being short anyway (DQN validation calls
     // exact many times on them).
-    Solution incumbent =
-        tasks <= kGreedyIncumbentCells ? solveGreedy(graph, query) : solveHeuristic(graph, query);
+    Solution incumbent = tasks <= kGreedyIncumbentCells
+                             ? solveGreedy(graph, query)
+                             : solveHeuristic(graph, query, {control.cancelled, {}});
     incumbent.solver = kName;
     const double upper = incumbent.graphCost * (1.0 + 1e-12) + 1e-9;
     throwIfCancelled(control, kName);

@@ -123,6 +123,8 @@ Tour orderAntColony(const OrderingProblem& problem, const AntColonyOptions& opti
     const int iterations =
         options.iterations > 0 ? options.iterations : std::clamp(300000 / n, 10, 300);
     for (int it = 0; it < iterations; ++it) {
+        if (options.cancelled && options.cancelled())
+            throw OrderingCancelled();
         for (int ant = 0; ant < options.ants; ++ant) {
             Tour tour = colony.buildTour(index, random);
             const double cost = tourCost(problem, tour);

@@ -96,6 +96,8 @@ Tour orderGenetic(const OrderingProblem& problem, const GeneticOptions& options)
         options.generations > 0 ? options.generations : std::clamp(20000000 / (size * n), 20, 500);
     const auto byCost = [](const Individual& a, const Individual& b) { return a.cost < b.cost; };
     for (int g = 0; g < generations; ++g) {
+        if (options.cancelled && options.cancelled())
+            throw OrderingCancelled();
         std::sort(population.begin(), population.end(), byCost);
         std::vector<Individual> next(population.begin(), population.begin() + 2);
         while (static_cast<int>(next.size()) < size) {

@@ -197,7 +197,8 @@ std::vector<std::string> orderingSolverNames() {
     return names;
 }
 
-Tour solveOrdering(const std::string& solver, const OrderingProblem& problem, std::uint64_t seed) {
+Tour solveOrdering(const std::string& solver, const OrderingProblem& problem, std::uint64_t seed,
+                   const std::function<bool()>& cancelled) {
     if (solver == "zigzag")
         return orderZigzag(problem);
     if (solver == "spiral")
@@ -207,16 +208,19 @@ Tour solveOrdering(const std::string& solver, const OrderingProblem& problem, st
     if (solver == "aco") {
         AntColonyOptions options;
         options.seed = seed;
+        options.cancelled = cancelled;
         return orderAntColony(problem, options);
     }
     if (solver == "aco+2opt") {
         AntColonyOptions options;
         options.seed = seed;
+        options.cancelled = cancelled;
         return polishTour(problem, orderAntColony(problem, options));
     }
     if (solver == "ga") {
         GeneticOptions options;
         options.seed = seed;
+        options.cancelled = cancelled;
         return orderGenetic(problem, options);
     }
     if (solver == "exact")

@@ -43,9 +43,12 @@ TilingPlan tilePlan(const TilingRequest& request) {
     return result;
 }
 
-void orderTiles(TilingPlan& plan, const std::string& solver, std::uint64_t seed) {
+void orderTiles(TilingPlan& plan, const std::string& solver, std::uint64_t seed,
+                const std::function<bool()>& cancelled) {
+    if (cancelled && cancelled())
+        throw OrderingCancelled();
     const auto start = std::chrono::steady_clock::now();
-    plan.tour = solveOrdering(solver, plan.problem, seed);
+    plan.tour = solveOrdering(solver, plan.problem, seed, cancelled);
     plan.orderingSeconds = secondsSince(start);
     plan.solver = solver;
     plan.energy = tourEnergy(plan.problem, plan.tour);
@@ -55,7 +58,7 @@ void orderTiles(TilingPlan& plan, const std::string& solver, std::uint64_t seed)
 
 TilingPlan planTiling(const TilingRequest& request) {
     TilingPlan plan = tilePlan(request);
-    orderTiles(plan, request.solver, request.seed);
+    orderTiles(plan, request.solver, request.seed, request.cancelled);
     return plan;
 }
 

@@ -8,6 +8,7 @@
 #include "tiling/WaypointOrder.h"
 
 #include <cstdint>
+#include <functional>
 #include <string>
 
 namespace fc::tiling {
@@ -18,6 +19,8 @@ struct TilingRequest {
     std::string solver = "greedy";
     std::uint64_t seed = 1;
     TilingOptions tiling;
+    // May be empty: planTiling stops (OrderingCancelled) after tiling and within aco and ga.
+    std::function<bool()> cancelled;
 };
 
 struct TilingPlan {
@@ -37,7 +40,8 @@ struct TilingPlan {
 TilingPlan planTiling(const TilingRequest& request);
 // Lattice and tile set only (ordering left empty), e.g. to reuse them across solvers.
 TilingPlan tilePlan(const TilingRequest& request);
-void orderTiles(TilingPlan& plan, const std::string& solver, std::uint64_t seed);
+void orderTiles(TilingPlan& plan, const std::string& solver, std::uint64_t seed,
+                const std::function<bool()>& cancelled = {});
 
 // One JSON line: energy, length, shape_changes, waypoints, seconds, then details.
 std::string tilingMetricsJson(const TilingPlan& plan);

@@ -8,6 +8,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -49,6 +50,7 @@ struct AntColonyOptions {
     double rho = 0.1;  // evaporation
     double q0 = 0.9;   // probability of the best move instead of a random one
     std::uint64_t seed = 1;
+    std::function<bool()> cancelled; // may be empty; checked every iteration
 };
 Tour orderAntColony(const OrderingProblem& problem, const AntColonyOptions& options = {});
 
@@ -59,6 +61,7 @@ struct GeneticOptions {
     int generations = 0; // 0: scaled to the problem size (see Genetic.cpp)
     double mutationRate = 0.3;
     std::uint64_t seed = 1;
+    std::function<bool()> cancelled; // may be empty; checked every generation
 };
 Tour orderGenetic(const OrderingProblem& problem, const GeneticOptions& options = {});
 
@@ -76,7 +79,15 @@ void registerOrderingMethod(const std::string& name, OrderingMethod method);
 
 // The built-in methods, then the registered ones.
 std::vector<std::string> orderingSolverNames();
-// Throws InputError for an unknown solver name.
-Tour solveOrdering(const std::string& solver, const OrderingProblem& problem, std::uint64_t seed);
+// Thrown when the caller's cancellation callback returns true.
+class OrderingCancelled : public std::runtime_error {
+public:
+    OrderingCancelled() : std::runtime_error("tiling cancelled") {}
+};
+
+// Throws InputError for an unknown solver name. `cancelled` (may be empty) stops aco and ga
+// between iterations (OrderingCancelled).
+Tour solveOrdering(const std::string& solver, const OrderingProblem& problem, std::uint64_t seed,
+                   const std::function<bool()>& cancelled = {});
 
 } // namespace fc::tiling

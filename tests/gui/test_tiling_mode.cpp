@@ -8,11 +8,16 @@
 #include "modes/tiling/TilingDock.h"
 #include "modes/tiling/TilingItem.h"
 #include "modes/tiling/TilingMode.h"
+#include "tasks/Task.h"
+#include "tasks/TaskListWidget.h"
 #include "tiling/WaypointOrder.h"
 #include "tiling/ppo/PpoOrdering.h"
 
+#include <QElapsedTimer>
 #include <QFile>
+#include <QSignalSpy>
 #include <QTemporaryDir>
+#include <QToolButton>
 #include <QtTest>
 
 using namespace fc;
@@ -25,6 +30,7 @@ private slots:
     void tilesOrdersShowsAndExports();
     void badRobotIsReportedNotCrashing();
     void trainsPpoWithALiveCurveAndPlansWithIt();
+    void taskListCancelsPpoTrainingPromptly();
 };
 
 void TilingModeTest::tilesOrdersShowsAndExports() {
@@ -136,6 +142,35 @@ void TilingModeTest::trainsPpoWithALiveCurveAndPlansWithIt() {
     const auto plan = mode->controller()->result();
     QVERIFY2(plan, qPrintable(mode->controller()->errorMessage()));
     QVERIFY(tiling::isTour(plan->tour, plan->problem.size()));
+}
+
+// PPO training is a task of the window: it reports progress, and Cancel in the status bar
+// ends it after the current update (the model so far is kept).
+void TilingModeTest::taskListCancelsPpoTrainingPromptly() {
+    auto window = test::makeWindow();
+    QVERIFY(window->openFile(QStringLiteral(FC_PLANS_DIR "/simple.geojson")));
+    TilingMode* mode = window->tilingMode();
+    mode->action()->trigger();
+    PpoTrainingPanel* panel = mode->dock()->trainingPanel();
+    panel->setSeconds(600);
+    panel->start();
+    Task* task = panel->trainer()->task();
+    QVERIFY(task);
+    QTRY_VERIFY_WITH_TIMEOUT(task->progress() > 0.0, 60000);
+    QWidget* row = window->taskList()->rowOf(task);
+    QVERIFY(row);
+    auto* cancel = row->findChild<QToolButton*>(QStringLiteral("CancelTask"));
+    QVERIFY(cancel);
+    QSignalSpy ended(task, &Task::ended);
+    QElapsedTimer clock;
+    clock.start();
+    QTest::mouseClick(cancel, Qt::LeftButton);
+    QVERIFY(ended.wait(10000) || !ended.isEmpty());
+    QVERIFY2(clock.elapsed() < 2000, qPrintable(QString::number(clock.elapsed())));
+    QVERIFY(!panel->trainer()->isRunning());
+    QVERIFY2(panel->statusText().contains(QStringLiteral("Trained")),
+             qPrintable(panel->statusText()));
+    QVERIFY(window->taskList()->isHidden());
 }
 
 QTEST_MAIN(TilingModeTest)

@@ -1,18 +1,22 @@
 // The training dock driven as a user would: start, see points on the reward plot, pause,
 // resume, stop, save and reload the model, and the model offered to solver "dqn". The
-// trainer runs on the dock's worker thread while this (GUI) thread keeps processing events.
+// trainer runs as a task on the window's pool while this (GUI) thread keeps processing
+// events; Cancel in the status bar's task list pauses it and cancels an evaluation.
 #include "EditorFixture.h"
-#include "tasks/PlanningController.h"
+#include "docks/TrainingDock.h"
 #include "formats/PlanIO.h"
 #include "learning/dqn/DqnModelFile.h"
 #include "learning/dqn/DqnSolver.h"
-#include "docks/TrainingDock.h"
+#include "tasks/PlanningController.h"
+#include "tasks/Task.h"
+#include "tasks/TaskListWidget.h"
 
 #include <QComboBox>
 #include <QElapsedTimer>
 #include <QPushButton>
 #include <QSignalSpy>
 #include <QTemporaryDir>
+#include <QToolButton>
 #include <QtTest>
 #include <qcustomplot.h>
 
@@ -46,6 +50,7 @@ private slots:
     void mainWindowTrainsAndPlansWithDqn();
     void trainsWithTheGraphStateSetting();
     void evaluatesTheModelAndStopCancels();
+    void taskListCancelsTrainingAndEvaluationPromptly();
 };
 
 void TrainingDockTest::trainsPausesResumesAndSaves() {
@@ -200,9 +205,6 @@ void TrainingDockTest::mainWindowTrainsAndPlansWithDqn() {
     QVERIFY(result->metrics.coverage >= 0.99);
 }
 
-QTEST_MAIN(TrainingDockTest)
-#include "test_training.moc"
-
 // Evaluate plans the trainer's test queries with the model on the worker thread and reports
 // the gaps; Stop cancels an evaluation in progress and leaves the model usable.
 void TrainingDockTest::evaluatesTheModelAndStopCancels() {
@@ -252,3 +254,61 @@ void TrainingDockTest::evaluatesTheModelAndStopCancels() {
     QVERIFY(evaluateButton->isEnabled());
     QVERIFY2(dock.saveModel(dir.filePath("again.fcdqn")), qPrintable(dock.lastError()));
 }
+
+// Milliseconds from clicking `task`'s Cancel in the window's task list until it ended.
+static qint64 cancelFromTaskList(MainWindow& window, Task* task) {
+    if (!task || !task->isActive())
+        return -1;
+    QWidget* row = window.taskList()->rowOf(task);
+    auto* button = row ? row->findChild<QToolButton*>(QStringLiteral("CancelTask")) : nullptr;
+    if (!button)
+        return -1;
+    QSignalSpy ended(task, &Task::ended);
+    QElapsedTimer clock;
+    clock.start();
+    QTest::mouseClick(button, Qt::LeftButton);
+    if (ended.isEmpty() && !ended.wait(10000))
+        return 10000;
+    return clock.elapsed();
+}
+
+// Training and evaluation are tasks of the window: both report progress, and Cancel in the
+// status bar stops them within a fraction of a second (the training keeps its model).
+void TrainingDockTest::taskListCancelsTrainingAndEvaluationPromptly() {
+    registerDqnSolver();
+    auto window = fc::ui::test::makeWindow();
+    QVERIFY(window->openFile(QStringLiteral(FC_PLANS_DIR "/room-obstacle.geojson")));
+    TrainingDock* dock = window->trainingDock();
+    TrainingOptions options = smallOptions();
+    options.evaluationQueries = 5000; // an evaluation of minutes
+    dock->setTrainingOptions(options);
+    QTRY_VERIFY_WITH_TIMEOUT(window->planningController()->prepared() != nullptr, 30000);
+    dock->start();
+    Task* training = dock->trainingTask();
+    QVERIFY(training);
+    QTRY_VERIFY_WITH_TIMEOUT(training->progress() > 0.0 && dock->plottedPoints() > 0, 30000);
+    qint64 ms = cancelFromTaskList(*window, training);
+    QVERIFY2(ms >= 0 && ms < 2000, qPrintable(QStringLiteral("cancel took %1 ms").arg(ms)));
+    QCOMPARE(dock->state(), TrainingDock::State::Paused); // the model so far stays
+    QTRY_VERIFY_WITH_TIMEOUT(!dock->modelPath().isEmpty(), 10000);
+
+    dock->evaluate();
+    Task* evaluation = dock->evaluationTask();
+    QVERIFY(evaluation);
+    QTRY_VERIFY_WITH_TIMEOUT(evaluation->progress() > 0.0, 30000);
+    ms = cancelFromTaskList(*window, evaluation);
+    QVERIFY2(ms >= 0 && ms < 2000, qPrintable(QStringLiteral("cancel took %1 ms").arg(ms)));
+    QVERIFY(!dock->evaluating());
+    QVERIFY2(dock->lastError().contains(QStringLiteral("cancelled")),
+             qPrintable(dock->lastError()));
+
+    // Still usable: training resumes.
+    const long episodes = dock->episodes();
+    dock->resumeTraining();
+    QTRY_VERIFY_WITH_TIMEOUT(dock->episodes() > episodes, 30000);
+    dock->stop();
+    QTRY_COMPARE_WITH_TIMEOUT(dock->state(), TrainingDock::State::Finished, 10000);
+}
+
+QTEST_MAIN(TrainingDockTest)
+#include "test_training.moc"

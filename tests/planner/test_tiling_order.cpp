@@ -54,6 +54,20 @@ TEST(TilingOrder, EveryMethodVisitsEachTileOnce) {
     EXPECT_THROW(solveOrdering("ppo-typo", problem, 1), InputError);
 }
 
+// The editor's Cancel: aco and ga stop between iterations; the others ignore the callback.
+TEST(TilingOrder, CancelledOrderingStops) {
+    const OrderingProblem problem = randomProblem(60, 11);
+    int calls = 0;
+    const auto cancelAfterThree = [&calls] { return ++calls > 3; };
+    for (const std::string solver : {"aco", "aco+2opt", "ga"}) {
+        calls = 0;
+        EXPECT_THROW(solveOrdering(solver, problem, 1, cancelAfterThree), OrderingCancelled)
+            << solver;
+        EXPECT_EQ(calls, 4) << solver;
+    }
+    EXPECT_TRUE(isTour(solveOrdering("greedy", problem, 1, [] { return true; }), problem.size()));
+}
+
 TEST(TilingOrder, TinyProblems) {
     for (int n = 0; n <= 3; ++n) {
         const OrderingProblem problem = randomProblem(n, 2);

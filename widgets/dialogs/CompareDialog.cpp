@@ -1,7 +1,9 @@
 #include "dialogs/CompareDialog.h"
 
 #include "pipeline/Comparison.h"
+#include "tasks/Task.h"
 
+#include <QCloseEvent>
 #include <QEventLoop>
 #include <QGridLayout>
 #include <QHeaderView>
@@ -12,29 +14,39 @@
 #include <QTableWidget>
 #include <QTimer>
 #include <QVBoxLayout>
-#include <QtConcurrent>
 #include <algorithm>
 #include <cmath>
 
 namespace fc::ui {
 namespace {
 
-std::vector<SolverRun> planAll(const PlanRequest& base) {
+std::vector<SolverRun> planAll(const PlanRequest& base, TaskFeedback& feedback) {
+    std::vector<std::string> names;
+    for (const std::string& name : solverNames())
+        if (name != "dqn" || !base.modelPath.empty())
+            names.push_back(name);
     std::vector<SolverRun> runs;
-    for (const std::string& name : solverNames()) {
-        if (name == "dqn" && base.modelPath.empty())
-            continue;
+    for (std::size_t i = 0; i < names.size(); ++i) {
+        feedback.throwIfCancelled();
+        feedback.setStatus(QString::fromStdString(names[i]));
         SolverRun run;
-        run.solver = name;
+        run.solver = names[i];
         PlanRequest request = base;
-        request.solver = name;
+        request.solver = names[i];
+        SolveControl control; // this solver's share of the whole
+        control.cancelled = feedback.cancelledFunction();
+        control.progress = [&feedback, i, n = names.size()](double fraction) {
+            feedback.setProgress((static_cast<double>(i) + fraction) / static_cast<double>(n));
+        };
         try {
-            run.result = planCoverage(request);
+            run.result = planCoverage(request, control);
         } catch (const std::exception& e) {
             run.error = e.what();
         }
         runs.push_back(std::move(run));
+        feedback.setProgress(static_cast<double>(i + 1) / static_cast<double>(names.size()));
     }
+    feedback.throwIfCancelled(); // a cancelled solver "refused": not a comparison
     return runs;
 }
 
@@ -67,19 +79,50 @@ CompareDialog::CompareDialog(PlanRequest request, QWidget* parent)
     scroll->setWidgetResizable(true);
     layout->addWidget(scroll, 1);
     resize(1000, 760);
-    connect(&watcher_, &QFutureWatcher<std::vector<SolverRun>>::finished, this, [this] {
-        runs_ = watcher_.result();
-        showRuns();
-        emit finished();
-    });
 }
 
 CompareDialog::~CompareDialog() {
-    watcher_.waitForFinished();
+    cancel(); // the window's manager lets the work end; nothing waits here
 }
 
 void CompareDialog::start() {
-    watcher_.setFuture(QtConcurrent::run([request = request_] { return planAll(request); }));
+    cancel();
+    status_->setText(tr("Planning with every solver…"));
+    task_ = TaskManager::forObject(this)->run(
+        tr("Comparing the solvers"),
+        [request = request_](TaskFeedback& feedback) { return planAll(request, feedback); });
+    connect(task_, &Task::statusChanged, this, [this](const QString& solver) {
+        status_->setText(tr("Planning with every solver… (%1)").arg(solver));
+    });
+    connect(task_, &Task::finished, this, [this, task = task_.data()] {
+        runs_ = *task->result<std::vector<SolverRun>>();
+        showRuns();
+        emit finished();
+    });
+    connect(task_, &Task::failed, this, [this](const QString& message) {
+        status_->setText(tr("The comparison failed: %1").arg(message));
+        emit finished();
+    });
+    connect(task_, &Task::cancelled, this, [this] {
+        status_->setText(tr("The comparison was cancelled."));
+        emit finished();
+    });
+    connect(task_, &Task::ended, this, [this] { task_ = nullptr; });
+}
+
+void CompareDialog::cancel() {
+    if (task_)
+        task_->cancel();
+}
+
+void CompareDialog::closeEvent(QCloseEvent* event) {
+    cancel();
+    QDialog::closeEvent(event);
+}
+
+void CompareDialog::done(int result) {
+    cancel();
+    QDialog::done(result);
 }
 
 bool CompareDialog::runAndWait(int timeoutMs) {
@@ -88,7 +131,7 @@ bool CompareDialog::runAndWait(int timeoutMs) {
     QTimer::singleShot(timeoutMs, &loop, &QEventLoop::quit);
     start();
     loop.exec();
-    return watcher_.isFinished() && !runs_.empty();
+    return !task_ && !runs_.empty();
 }
 
 void CompareDialog::showRuns() {

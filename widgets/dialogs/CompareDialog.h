@@ -1,14 +1,16 @@
 // Plan > Compare Solvers (issue 6): every solver, the paper's baselines included, on the same
-// plan, robot, start, end and rooms, planned off the GUI thread; a table of the SPEC's
-// metrics and planning time, the paper's ratios against each baseline, and the paths side
-// by side with their overlaps in blue.
+// plan, robot, start, end and rooms, planned as one task (tasks/Task.h) of the window; a
+// table of the SPEC's metrics and planning time, the paper's ratios against each baseline,
+// and the paths side by side with their overlaps in blue. Closing the dialog cancels the
+// task and returns at once.
 #pragma once
 
 #include "pipeline/Planner.h"
+#include "tasks/Task.h"
 
 #include <QDialog>
-#include <QFutureWatcher>
 #include <QImage>
+#include <QPointer>
 #include <QString>
 #include <vector>
 
@@ -32,7 +34,10 @@ public:
     ~CompareDialog() override;
 
     void start();
+    void cancel();                           // the table stays as it is
+    void done(int result) override;          // closing cancels
     bool runAndWait(int timeoutMs = 120000); // for tests
+    Task* task() const { return task_; }     // the running comparison (null when none)
     const std::vector<SolverRun>& runs() const { return runs_; }
     QTableWidget* table() const { return table_; }
     QString ratiosText() const;
@@ -44,13 +49,16 @@ public:
 signals:
     void finished();
 
+protected:
+    void closeEvent(QCloseEvent* event) override;
+
 private:
     void showRuns();
 
     PlanRequest request_;
     std::vector<SolverRun> runs_;
     std::vector<QImage> images_;
-    QFutureWatcher<std::vector<SolverRun>> watcher_;
+    QPointer<Task> task_;
     QTableWidget* table_;
     QLabel* ratios_;
     QLabel* status_;

@@ -1,9 +1,10 @@
 #include "docks/TrainingDock.h"
 
+#include "tasks/Task.h"
+
 #include <QComboBox>
 #include <QDir>
 #include <QDoubleSpinBox>
-#include <QEventLoop>
 #include <QFileDialog>
 #include <QHBoxLayout>
 #include <QLabel>
@@ -28,31 +29,19 @@ QString minutesAndSeconds(double seconds) {
 
 } // namespace
 
-TrainingDock::TrainingDock(QWidget* parent) : QDockWidget(tr("Training"), parent) {
+TrainingDock::TrainingDock(QWidget* parent)
+    : QDockWidget(tr("Training"), parent), tasks_(TaskManager::forObject(this)) {
     setObjectName(QStringLiteral("TrainingDock"));
     buildUi();
-    worker_ = new TrainingWorker;
-    worker_->moveToThread(&thread_);
-    connect(&thread_, &QThread::finished, worker_, &QObject::deleteLater);
-    connect(worker_, &TrainingWorker::progress, this, &TrainingDock::appendPoints);
-    connect(worker_, &TrainingWorker::finished, this, &TrainingDock::onFinished);
-    connect(worker_, &TrainingWorker::evaluated, this, &TrainingDock::onEvaluated);
-    connect(worker_, &TrainingWorker::evaluationFailed, this, &TrainingDock::onEvaluationFailed);
-    connect(worker_, &TrainingWorker::failed, this, [this](const QString& message) {
-        lastError_ = message;
-        status_->setText(message);
-        emit errorOccurred(message);
-    });
-    thread_.setObjectName(QStringLiteral("floorcover-training"));
-    thread_.start(QThread::LowPriority); // the GUI thread keeps precedence
     setState(State::Idle);
 }
 
 TrainingDock::~TrainingDock() {
-    worker_->requestStop();
-    worker_->cancelEvaluation();
-    thread_.quit();
-    thread_.wait();
+    // The tasks keep the session; they see the cancellation and end on their own.
+    if (training_)
+        training_->cancel();
+    if (evaluation_)
+        evaluation_->cancel();
 }
 
 void TrainingDock::buildUi() {
@@ -146,14 +135,15 @@ void TrainingDock::setPreparedPlan(std::shared_ptr<const PreparedPlan> prepared)
     const bool sameGraph = prepared && prepared_ &&
                            graphFingerprint(prepared->graph) == graphFingerprint(prepared_->graph);
     prepared_ = std::move(prepared);
-    QMetaObject::invokeMethod(worker_, [w = worker_, p = prepared_] { w->setPlan(p); });
     if (sameGraph)
         return;
     lastEvaluation_.reset();
-    if (evaluating_)
-        worker_->cancelEvaluation(); // its figures would be for the old plan
+    if (evaluation_)
+        evaluation_->cancel(); // its figures would be for the old plan
+    if (training_)
+        training_->cancel();
+    session_ = std::make_shared<DqnSession>(); // the old model no longer fits
     if (state_ == State::Running || state_ == State::Paused) {
-        worker_->requestStop();
         status_->setText(tr("The plan changed: the model no longer fits it. Start to train for "
                             "the new plan."));
     }
@@ -190,15 +180,52 @@ void TrainingDock::start() {
     lastEvaluation_.reset();
     const double seconds = budgetSeconds();
     setState(State::Running);
-    QMetaObject::invokeMethod(
-        worker_, [w = worker_, p = prepared_, options, seconds] { w->start(p, options, seconds); });
+    session_ = std::make_shared<DqnSession>();
+    runTraining(tasks_->run(
+        tr("Training the DQN"),
+        [session = session_, prepared = prepared_, options, seconds](TaskFeedback& feedback) {
+            return startDqn(*session, *prepared, options, seconds, feedback);
+        },
+        TaskOptions{QString(), true}));
+}
+
+void TrainingDock::runTraining(Task* task) {
+    training_ = task;
+    // A task of an older model (the plan changed) or one a resumed run followed is past.
+    const auto current = [this, task, session = session_] {
+        return task == training_ && session == session_;
+    };
+    connect(task, &Task::posted, this, [this, current](const QVariantList& points) {
+        if (current())
+            appendPoints(points);
+    });
+    connect(task, &Task::finished, this, [this, task, current] {
+        if (current())
+            onFinished(*task->result<TrainingRun>());
+    });
+    connect(task, &Task::failed, this, [this, current](const QString& message) {
+        if (current())
+            onFailed(message);
+    });
+    connect(task, &Task::ended, this, [this, task] {
+        if (task == training_)
+            training_ = nullptr;
+    });
+}
+
+void TrainingDock::onFailed(const QString& message) {
+    lastError_ = message;
+    status_->setText(message);
+    emit errorOccurred(message);
+    setState(State::Idle);
 }
 
 void TrainingDock::pause() {
     if (state_ != State::Running)
         return;
-    worker_->requestStop();
-    setState(State::Paused); // the worker confirms with finished(Interrupted)
+    if (training_)
+        training_->cancel();
+    setState(State::Paused); // the task confirms with finished(Interrupted)
 }
 
 void TrainingDock::resumeTraining() {
@@ -208,24 +235,34 @@ void TrainingDock::resumeTraining() {
     lastEvaluation_.reset(); // the model is about to change
     const double seconds = budgetSeconds();
     setState(State::Running);
-    QMetaObject::invokeMethod(worker_, [w = worker_, seconds] { w->resume(seconds); });
+    // Waits in the pool for the paused task to end its episode (the session's lock).
+    runTraining(tasks_->run(
+        tr("Training the DQN"),
+        [session = session_, seconds](TaskFeedback& feedback) {
+            return trainDqn(*session, seconds, feedback);
+        },
+        TaskOptions{QString(), true}));
 }
 
 void TrainingDock::stop() {
     if (evaluating_) { // Stop cancels an evaluation; the model stays as it is
-        worker_->cancelEvaluation();
+        if (evaluation_)
+            evaluation_->cancel();
         return;
     }
-    if (state_ == State::Running)
-        worker_->requestStop();
+    if (state_ == State::Running && training_)
+        training_->cancel();
     if (state_ == State::Running || state_ == State::Paused)
         setState(State::Finished);
 }
 
-void TrainingDock::appendPoints(const QVector<TrainingPoint>& points) {
-    if (points.isEmpty())
+void TrainingDock::appendPoints(const QVariantList& values) {
+    if (values.isEmpty())
         return;
-    for (const TrainingPoint& p : points) {
+    TrainingPoint last;
+    for (const QVariant& value : values) {
+        const auto p = value.value<TrainingPoint>();
+        last = p;
         const double x = static_cast<double>(p.episode);
         plot_->graph(kRewardGraph)->addData(x, p.reward);
         plot_->graph(kAverageGraph)->addData(x, p.average);
@@ -233,7 +270,6 @@ void TrainingDock::appendPoints(const QVector<TrainingPoint>& points) {
             plot_->graph(kLossGraph)->addData(x, p.loss);
         plot_->graph(kEpsilonGraph)->addData(x, p.epsilon);
     }
-    const TrainingPoint& last = points.back();
     episodes_ = last.episode;
     lastSeconds_ = last.seconds;
     plot_->rescaleAxes();
@@ -255,11 +291,10 @@ void TrainingDock::updateProgress(double seconds) {
                              .arg(minutesAndSeconds(budget * (1.0 - done))));
 }
 
-void TrainingDock::onFinished(TrainingEnd end, double trainedSeconds, long episodes) {
-    if (end == TrainingEnd::Failed) {
-        setState(State::Idle);
-        return;
-    }
+void TrainingDock::onFinished(const TrainingRun& run) {
+    const TrainingEnd end = run.end;
+    const double trainedSeconds = run.trainedSeconds;
+    const long episodes = run.episodes;
     episodes_ = episodes;
     lastSeconds_ = trainedSeconds;
     if (state_ == State::Running)
@@ -279,19 +314,17 @@ bool TrainingDock::saveModel(const QString& path) {
         lastError_ = tr("Pause the training before saving the model.");
         return false;
     }
-    // Connected before the request, so the answer cannot be missed.
-    QEventLoop loop;
     QString error;
-    const auto connection = connect(worker_, &TrainingWorker::saved, &loop,
-                                    [&](const QString& savedPath, const QString& message) {
-                                        if (savedPath != path)
-                                            return;
-                                        error = message;
-                                        loop.quit();
-                                    });
-    QMetaObject::invokeMethod(worker_, [w = worker_, path] { w->save(path); });
-    loop.exec();
-    disconnect(connection);
+    {
+        const std::lock_guard<std::mutex> guard(session_->mutex);
+        try {
+            if (!session_->trainer)
+                throw InputError(tr("there is no trained model yet").toStdString());
+            session_->trainer->save(path.toStdString());
+        } catch (const std::exception& e) {
+            error = QString::fromStdString(e.what());
+        }
+    }
     if (!error.isEmpty()) {
         lastError_ = tr("Cannot save the model to %1: %2").arg(path, error);
         status_->setText(lastError_);
@@ -308,25 +341,16 @@ bool TrainingDock::loadModel(const QString& path) {
         lastError_ = tr("Stop the training before loading a model.");
         return false;
     }
-    QEventLoop loop;
-    bool ok = false;
-    QString error;
-    auto loaded =
-        connect(worker_, &TrainingWorker::modelLoaded, &loop, [&](const QString&, long episodes) {
-            ok = true;
-            episodes_ = episodes;
-            loop.quit();
-        });
-    auto failed = connect(worker_, &TrainingWorker::failed, &loop, [&](const QString& message) {
-        error = message;
-        loop.quit();
-    });
-    QMetaObject::invokeMethod(worker_, [w = worker_, path] { w->resume(0.0, path); });
-    loop.exec();
-    disconnect(loaded);
-    disconnect(failed);
-    if (!ok) {
-        lastError_ = error;
+    try {
+        if (!prepared_)
+            throw InputError("there is no valid plan to load the model for");
+        const std::string file = path.toStdString();
+        auto trainer = std::make_unique<DqnTrainer>(prepared_->graph, loadDqnModelFile(file), file);
+        const std::lock_guard<std::mutex> guard(session_->mutex);
+        session_->trainer = std::move(trainer);
+        episodes_ = session_->trainer->episodes();
+    } catch (const std::exception& e) {
+        lastError_ = QString::fromStdString(e.what()); // the current model stays in place
         return false;
     }
     clearPlot();

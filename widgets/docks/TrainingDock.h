@@ -1,15 +1,17 @@
 // The training dock (issue 4, item 6): start, pause/resume and stop the DQN training for the
-// current plan on a worker thread, a live QCustomPlot of episode reward and its moving
+// current plan as a task of the window (tasks/DqnTraining.h: Pause and Stop cancel the task,
+// which keeps the model so far; Resume starts a new task on the same trainer), a live
+// QCustomPlot of episode reward and its moving
 // average with loss and epsilon, a progress bar with the time left, and saving/loading the
 // model. When a model is ready it is saved (to the chosen file, or to the cache) and offered
 // to the planner through modelReady(), so that solver "dqn" uses it.
 #pragma once
 
-#include "tasks/TrainingWorker.h"
+#include "tasks/DqnTraining.h"
+#include "tasks/Task.h"
 
 #include <QDockWidget>
-#include <QElapsedTimer>
-#include <QThread>
+#include <QPointer>
 #include <memory>
 #include <optional>
 
@@ -46,16 +48,19 @@ public:
     QString lastError() const { return lastError_; }
     bool evaluating() const { return evaluating_; }
     const std::optional<TrainingEvaluation>& lastEvaluation() const { return lastEvaluation_; }
+    // The running training and evaluation tasks (null when none).
+    Task* trainingTask() const { return training_; }
+    Task* evaluationTask() const { return evaluation_; }
 
 public slots:
     void start();
     void pause();
     void resumeTraining();
     void stop();
-    // Saves synchronously from the caller's point of view (waits for the worker).
+    // Saves synchronously (waits for a pausing training to end its episode).
     bool saveModel(const QString& path);
     bool loadModel(const QString& path);
-    // Measures the model on the trainer's fixed test queries on the worker thread
+    // Measures the model on the trainer's fixed test queries as a task
     // (TrainingEvaluation.cpp); the result shows in the status line.
     void evaluate();
 
@@ -67,8 +72,10 @@ signals:
 private:
     void buildUi();
     void setState(State state);
-    void appendPoints(const QVector<fc::ui::TrainingPoint>& points);
-    void onFinished(fc::ui::TrainingEnd end, double trainedSeconds, long episodes);
+    void runTraining(Task* task);
+    void appendPoints(const QVariantList& points);
+    void onFinished(const TrainingRun& run);
+    void onFailed(const QString& message);
     void updateProgress(double seconds);
     void clearPlot();
     void onEvaluated(const fc::ui::TrainingEvaluation& result);
@@ -78,8 +85,11 @@ private:
     QString cacheModelPath() const;
     double budgetSeconds() const;
 
-    QThread thread_;
-    TrainingWorker* worker_ = nullptr; // lives on thread_
+    TaskManager* tasks_;
+    // A new session for every new model, so a task still ending keeps the old one.
+    std::shared_ptr<DqnSession> session_ = std::make_shared<DqnSession>();
+    QPointer<Task> training_;
+    QPointer<Task> evaluation_;
     std::shared_ptr<const fc::PreparedPlan> prepared_;
     fc::TrainingOptions options_;
     bool customOptions_ = false;

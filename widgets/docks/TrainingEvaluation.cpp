@@ -1,11 +1,11 @@
 // The Training dock's evaluation: the current model plans the trainer's fixed test queries
-// on the worker thread (DqnTrainer::evaluate), and the dock reports how far the policy alone
+// as a task (DqnTrainer::evaluate), and the dock reports how far the policy alone
 // and solver dqn (the policy's walk after the model's refinement) are above the exact or
 // heuristic solver. Stop cancels it; a result for a model that no longer fits is dropped.
 #include "docks/TrainingDock.h"
+#include "tasks/Task.h"
 
 #include <QLabel>
-#include <QMetaObject>
 
 namespace fc::ui {
 
@@ -15,8 +15,15 @@ void TrainingDock::evaluate() {
     evaluating_ = true;
     setState(state_);
     status_->setText(tr("Evaluating the model on its test queries…"));
-    worker_->armEvaluation();
-    QMetaObject::invokeMethod(worker_, [w = worker_] { w->evaluate(); });
+    Task* task =
+        tasks_->run(tr("Evaluating the DQN model"), [session = session_](TaskFeedback& feedback) {
+            return evaluateDqn(*session, feedback);
+        });
+    evaluation_ = task;
+    connect(task, &Task::finished, this,
+            [this, task] { onEvaluated(*task->result<TrainingEvaluation>()); });
+    connect(task, &Task::failed, this, &TrainingDock::onEvaluationFailed);
+    connect(task, &Task::cancelled, this, [this] { onEvaluationFailed(QString()); });
 }
 
 void TrainingDock::onEvaluated(const TrainingEvaluation& result) {

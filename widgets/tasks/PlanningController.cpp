@@ -3,40 +3,17 @@
 #include "document/Conversions.h"
 #include "document/Document.h"
 #include "pipeline/PerRoomSweep.h"
+#include "tasks/Task.h"
 
 #include <QEventLoop>
-#include <QFutureWatcher>
 #include <QTimer>
-#include <QtConcurrent>
 #include <algorithm>
 #include <map>
 
 namespace fc::ui {
 
-namespace {
-
-// Either a value or the planner's message: exceptions must not cross threads silently.
-template <typename T> struct Outcome {
-    std::shared_ptr<const T> value;
-    QString error;
-};
-
-template <typename T, typename Job> Outcome<T> capture(const Job& job) {
-    Outcome<T> outcome;
-    try {
-        outcome.value = std::make_shared<const T>(job());
-    } catch (const std::exception& e) {
-        outcome.error = fromStd(e.what());
-    }
-    return outcome;
-}
-
-} // namespace
-
-PlanningController::PlanningController(QObject* parent)
-    : QObject(parent), prepareTimer_(new QTimer(this)),
-      latestPrepare_(std::make_shared<std::atomic<quint64>>(0)),
-      latestPlan_(std::make_shared<std::atomic<quint64>>(0)) {
+PlanningController::PlanningController(TaskManager* tasks, QObject* parent)
+    : QObject(parent), tasks_(tasks), prepareTimer_(new QTimer(this)) {
     prepareTimer_->setSingleShot(true);
     prepareTimer_->setInterval(120);
     connect(prepareTimer_, &QTimer::timeout, this, &PlanningController::startPrepare);
@@ -63,15 +40,18 @@ void PlanningController::setDocument(Document* document) {
 
 void PlanningController::schedulePrepare() {
     invalidateResult();
-    *latestPrepare_ = ++prepareGeneration_;
-    if (!pendingPrepare_)
-        emit busyChanged(true);
+    tasks_->cancelKind(QStringLiteral("prepare")); // its overlays are for the old geometry
     pendingPrepare_ = true;
+    updateBusy();
     prepareTimer_->start();
 }
 
+void PlanningController::cancelPlanning() {
+    tasks_->cancelKind(QStringLiteral("planning"));
+}
+
 void PlanningController::invalidateResult() {
-    *latestPlan_ = ++planGeneration_;
+    cancelPlanning(); // the solvers stop when the document changes under them
     if (!result_)
         return;
     result_.reset();
@@ -85,32 +65,33 @@ void PlanningController::setError(const QString& message) {
     emit errorChanged(error_);
 }
 
-template <typename T, typename Job, typename Done>
-void PlanningController::runInBackground(Job job, Done done) {
-    auto* watcher = new QFutureWatcher<Outcome<T>>(this);
-    ++running_;
-    connect(watcher, &QFutureWatcherBase::finished, this, [this, watcher, done]() {
-        --running_;
-        done(watcher->result());
-        watcher->deleteLater();
-        if (!isBusy())
-            emit busyChanged(false);
-    });
-    watcher->setFuture(QtConcurrent::run([job]() { return capture<T>(job); }));
+void PlanningController::updateBusy() {
+    if (isBusy() == busy_)
+        return;
+    busy_ = isBusy();
+    emit busyChanged(busy_);
+}
+
+void PlanningController::taskEnded(Task* task) {
+    if (task == prepareTask_)
+        prepareTask_ = nullptr;
+    if (task == planTask_)
+        planTask_ = nullptr;
+    updateBusy();
 }
 
 void PlanningController::startPrepare() {
     pendingPrepare_ = false;
-    if (!document_)
+    if (!document_) {
+        updateBusy();
         return;
+    }
     const Project project = document_->project();
-    const quint64 generation = prepareGeneration_;
     if (project.plan.boundary.empty()) {
         prepared_.reset();
         emit preparedChanged();
         setError(QString()); // a new drawing, not a mistake: the dock shows a hint
-        if (!isBusy())
-            emit busyChanged(false);
+        updateBusy();
         return;
     }
     // "auto" picks its angle while planning; until then the overlays use its first
@@ -127,20 +108,27 @@ void PlanningController::startPrepare() {
                     return x.second < y.second;
                 })->first;
     }
-    runInBackground<PreparedPlan>(
-        [project, angle, latest = latestPrepare_, generation]() {
-            if (*latest != generation) // edited again while this waited for a thread
-                throw InputError("superseded");
-            project.robot.validate();
-            return preparePlan(project.plan, project.robot, angle);
-        },
-        [this, generation](const Outcome<PreparedPlan>& outcome) {
-            if (generation != prepareGeneration_)
-                return; // superseded by a later edit
-            prepared_ = outcome.value;
-            setError(outcome.error);
-            emit preparedChanged();
-        });
+    Task* task =
+        tasks_->run(tr("Preparing the overlays"),
+                    [project, angle](TaskFeedback& feedback) {
+                        feedback.throwIfCancelled(); // edited again while this waited for a thread
+                        project.robot.validate();
+                        return preparePlan(project.plan, project.robot, angle);
+                    },
+                    {QStringLiteral("prepare")});
+    prepareTask_ = task;
+    connect(task, &Task::finished, this, [this, task] {
+        prepared_ = task->result<PreparedPlan>();
+        setError(QString());
+        emit preparedChanged();
+    });
+    connect(task, &Task::failed, this, [this](const QString& message) {
+        prepared_.reset();
+        setError(message);
+        emit preparedChanged();
+    });
+    connect(task, &Task::ended, this, [this, task] { taskEnded(task); });
+    updateBusy();
 }
 
 void PlanningController::plan() {
@@ -148,20 +136,24 @@ void PlanningController::plan() {
         return;
     PlanRequest request = planRequestFor(document_->project());
     request.modelPath = modelPath_;
-    const quint64 generation = ++planGeneration_;
-    *latestPlan_ = generation;
-    if (!isBusy())
-        emit busyChanged(true);
-    SolveControl control; // the solvers stop when the document changes under them
-    control.cancelled = [latest = latestPlan_, generation]() { return *latest != generation; };
-    runInBackground<PlanResult>([request, control]() { return planCoverage(request, control); },
-                                [this, generation](const Outcome<PlanResult>& outcome) {
-                                    if (generation != planGeneration_)
-                                        return;
-                                    result_ = outcome.value;
-                                    setError(outcome.error);
-                                    emit resultChanged();
-                                });
+    Task* task = tasks_->run(tr("Planning the path"),
+                             [request](TaskFeedback& feedback) {
+                                 return planCoverage(request, feedback.solveControl());
+                             },
+                             {QStringLiteral("planning")});
+    planTask_ = task;
+    connect(task, &Task::finished, this, [this, task] {
+        result_ = task->result<PlanResult>();
+        setError(QString());
+        emit resultChanged();
+    });
+    connect(task, &Task::failed, this, [this](const QString& message) {
+        result_.reset();
+        setError(message);
+        emit resultChanged();
+    });
+    connect(task, &Task::ended, this, [this, task] { taskEnded(task); });
+    updateBusy();
 }
 
 bool PlanningController::planAndWait(int timeoutMs) {

@@ -1,15 +1,15 @@
-// Runs the planner for the current document off the GUI thread: the decomposition and
-// corner graph (overlays) whenever geometry, robot or sweep angle change, and the full plan
-// when asked. Results of superseded runs are dropped, so a slow run never overwrites a
-// newer one.
+// Runs the planner for the current document as tasks (tasks/Task.h): the decomposition and
+// corner graph (overlays, kind "prepare") whenever geometry, robot or sweep angle change,
+// and the full plan (kind "planning") when asked. A newer task of a kind supersedes the
+// older one, whose result is dropped, so a slow run never overwrites a newer one.
 #pragma once
 
 #include "pipeline/Planner.h"
+#include "tasks/Task.h"
 
 #include <QObject>
 #include <QPointer>
 #include <QString>
-#include <atomic>
 #include <memory>
 
 class QTimer;
@@ -21,7 +21,8 @@ class Document;
 class PlanningController : public QObject {
     Q_OBJECT
 public:
-    explicit PlanningController(QObject* parent = nullptr);
+    // The tasks run on `tasks` (the window's manager).
+    explicit PlanningController(TaskManager* tasks, QObject* parent = nullptr);
 
     void setDocument(Document* document);
 
@@ -37,7 +38,10 @@ public:
                        : prepared_;
     }
     QString errorMessage() const { return error_; }
-    bool isBusy() const { return running_ > 0 || pendingPrepare_; }
+    bool isBusy() const { return prepareTask_ || planTask_ || pendingPrepare_; }
+    // The running planning task (null when none): its progress, Cancel.
+    Task* planningTask() const { return planTask_; }
+    void cancelPlanning();
 
     // Plans synchronously in the event loop's sense: starts plan() and waits for it.
     // Returns false (message in errorMessage()) on failure or after timeoutMs.
@@ -60,22 +64,21 @@ private:
     void startPrepare();
     void invalidateResult();
     void setError(const QString& message);
-    template <typename T, typename Job, typename Done> void runInBackground(Job job, Done done);
+    void taskEnded(Task* task);
+    void updateBusy();
 
+    TaskManager* tasks_;
     QPointer<Document> document_;
     QTimer* prepareTimer_;
     std::shared_ptr<const PreparedPlan> prepared_;
     std::shared_ptr<const PlanResult> result_;
     QString error_;
     std::string modelPath_;
-    // Bumped by every edit; a finished run whose stamp is older is ignored, and a queued or
-    // running one stops early (the workers read the atomic copies).
-    quint64 prepareGeneration_ = 0;
-    quint64 planGeneration_ = 0;
-    std::shared_ptr<std::atomic<quint64>> latestPrepare_;
-    std::shared_ptr<std::atomic<quint64>> latestPlan_;
-    int running_ = 0;
+    // The current tasks (null when none); an edit cancels them.
+    QPointer<Task> prepareTask_;
+    QPointer<Task> planTask_;
     bool pendingPrepare_ = false;
+    bool busy_ = false; // as last announced by busyChanged
 };
 
 } // namespace fc::ui

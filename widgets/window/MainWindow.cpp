@@ -1,24 +1,26 @@
 #include "window/MainWindow.h"
 
-#include "document/Autosaver.h"
 #include "canvas/CanvasView.h"
+#include "canvas/PathPreview.h"
+#include "canvas/PlanScene.h"
 #include "dialogs/CompareDialog.h"
+#include "dialogs/PreferencesDialog.h"
+#include "docks/LegendDock.h"
+#include "docks/PathPreviewBar.h"
+#include "docks/PlanningDock.h"
+#include "docks/TrainingDock.h"
+#include "document/Autosaver.h"
 #include "document/Document.h"
 #include "document/DocumentFiles.h"
-#include "docks/LegendDock.h"
-#include "canvas/PathPreview.h"
-#include "docks/PathPreviewBar.h"
-#include "canvas/PlanScene.h"
-#include "tasks/PlanningController.h"
-#include "docks/PlanningDock.h"
-#include "dialogs/PreferencesDialog.h"
 #include "modes/tiling/TilingMode.h"
+#include "tasks/PlanningController.h"
+#include "tasks/Task.h"
+#include "tasks/TaskListWidget.h"
 #include "tools/DrawPolygonTool.h"
 #include "tools/EditVerticesTool.h"
 #include "tools/PickRoomTool.h"
 #include "tools/PlaceEndpointTool.h"
 #include "tools/ToolManager.h"
-#include "docks/TrainingDock.h"
 
 #include <QAction>
 #include <QApplication>
@@ -37,9 +39,9 @@ namespace fc::ui {
 
 MainWindow::MainWindow(QWidget* parent)
     : QMainWindow(parent), undoGroup_(new QUndoGroup(this)), scene_(new PlanScene(this)),
-      view_(new CanvasView(this)), planner_(new PlanningController(this)),
-      tools_(new ToolManager(this)), planningDock_(new PlanningDock(this)),
-      autosaver_(new Autosaver(this)) {
+      view_(new CanvasView(this)), tasks_(new TaskManager(this)),
+      planner_(new PlanningController(tasks_, this)), tools_(new ToolManager(this)),
+      planningDock_(new PlanningDock(this)), autosaver_(new Autosaver(this)) {
     setObjectName(QStringLiteral("MainWindow"));
     setAcceptDrops(true);
     view_->setScene(scene_);
@@ -191,7 +193,9 @@ void MainWindow::createStatusBar() {
     problem_->setStyleSheet(QStringLiteral("color: #d03030"));
     coordinates_ = new QLabel;
     coordinates_->setMinimumWidth(200);
+    taskList_ = new TaskListWidget(tasks_);
     statusBar()->addPermanentWidget(problem_, 1);
+    statusBar()->addPermanentWidget(taskList_);
     statusBar()->addPermanentWidget(coordinates_);
     connect(view_, &CanvasView::cursorMoved, this, [this](QPointF p) {
         coordinates_->setText(tr("x %1 m   y %2 m").arg(p.x(), 0, 'f', 2).arg(p.y(), 0, 'f', 2));
@@ -259,6 +263,7 @@ void MainWindow::closeEvent(QCloseEvent* event) {
         return;
     }
     autosaver_->discard(); // a normal end: nothing to recover next time
+    tasks_->cancelAll();   // returns at once; the pool waits for them when the window goes
     event->accept();
 }
 

@@ -26,6 +26,8 @@ class PathPreview;
 class PlanScene;
 class PlanningController;
 class PlanningDock;
+class TaskListWidget;
+class TaskManager;
 class TilingMode;
 class ToolManager;
 class TrainingDock;
@@ -41,6 +43,9 @@ public:
     PlanScene* scene() const { return scene_; }
     ToolManager* toolManager() const { return tools_; }
     PlanningController* planningController() const { return planner_; }
+    // The window's long work (tasks/Task.h) and its list in the status bar.
+    TaskManager* taskManager() const { return tasks_; }
+    TaskListWidget* taskList() const { return taskList_; }
     PlanningDock* planningDock() const { return planningDock_; }
     TrainingDock* trainingDock() const { return trainingDock_; }
     TilingMode* tilingMode() const { return tilingMode_; }
@@ -112,6 +117,7 @@ private:
     QUndoGroup* undoGroup_;
     PlanScene* scene_;
     CanvasView* view_;
+    TaskManager* tasks_;
     PlanningController* planner_;
     ToolManager* tools_;
     PlanningDock* planningDock_;
@@ -123,6 +129,7 @@ private:
     QMenu* recentFilesMenu_ = nullptr;
     QLabel* coordinates_ = nullptr;
     QLabel* problem_ = nullptr;
+    TaskListWidget* taskList_ = nullptr;
     std::array<QAction*, kOverlayKindCount> overlayActions_{};
     bool dialogsEnabled_ = true;
     QString lastError_;

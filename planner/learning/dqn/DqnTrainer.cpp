@@ -227,6 +227,18 @@ EvaluationReport DqnTrainer::evaluate(const SolveControl& control) {
         if (control.cancelled && control.cancelled())
             throw SolverError("evaluation cancelled");
     };
+    // The solvers below see the cancellation only; the progress counts queries (references
+    // first when they are still to compute).
+    const SolveControl inner{control.cancelled, {}};
+    const std::size_t steps =
+        evaluationQueries_.empty()
+            ? 2 * static_cast<std::size_t>(std::max(1, options_.evaluationQueries))
+            : evaluationQueries_.size();
+    std::size_t done = 0;
+    auto advance = [&control, &done, steps] {
+        if (control.progress)
+            control.progress(static_cast<double>(++done) / static_cast<double>(steps));
+    };
     if (evaluationQueries_.empty()) {
         const QuerySet kind = roomCount(*graph_) > 1 ? QuerySet::RoomSubsets : QuerySet::AllCells;
         std::vector<Query> queries = randomQueries(*graph_, std::max(1, options_.evaluationQueries),
@@ -238,8 +250,9 @@ EvaluationReport DqnTrainer::evaluate(const SolveControl& control) {
             const int cells = static_cast<int>(std::count(q.required.begin(), q.required.end(), 1));
             const bool exact = cells <= kExactReferenceCells;
             exactCount += exact ? 1 : 0;
-            costs.push_back(exact ? solveExact(*graph_, q, {}, control).graphCost
-                                  : solveHeuristic(*graph_, q, control).graphCost);
+            costs.push_back(exact ? solveExact(*graph_, q, {}, inner).graphCost
+                                  : solveHeuristic(*graph_, q, inner).graphCost);
+            advance();
         }
         evaluationQueries_ = std::move(queries); // only complete references are kept
         referenceCosts_ = std::move(costs);
@@ -257,10 +270,10 @@ EvaluationReport DqnTrainer::evaluate(const SolveControl& control) {
         try {
             const Solution raw =
                 solveWithPolicy(*agent_, *graph_, evaluationQueries_[i], options_.environment,
-                                OrderRefinement::None, control);
+                                OrderRefinement::None, inner);
             const Solution refined =
                 refineCellOrder(*graph_, evaluationQueries_[i], raw, options_.refinement,
-                                kPolicyRefinementBudget, control);
+                                kPolicyRefinementBudget, inner);
             report.meanMilliseconds += 1000.0 * secondsSince(start);
             const double reference = std::max(referenceCosts_[i], 1e-9);
             const double gap = raw.graphCost / reference - 1.0;
@@ -272,6 +285,7 @@ EvaluationReport DqnTrainer::evaluate(const SolveControl& control) {
             throwIfCancelled(); // a cancelled rollout is not a failure of the policy
             ++report.failures;
         }
+        advance();
     }
     if (finished > 0) {
         report.meanGap /= finished;

@@ -53,6 +53,9 @@ PpoTrainingPanel::PpoTrainingPanel(QWidget* parent)
     connect(trainer_, &PpoTrainer::failed, this, [this](const QString& message) {
         status_->setText(tr("<b>Training failed:</b> %1").arg(message));
     });
+    connect(trainer_, &PpoTrainer::cancelled, this, [this] {
+        status_->setText(tr("Training cancelled before its first update; no model."));
+    });
     setRunning(false);
 }
 

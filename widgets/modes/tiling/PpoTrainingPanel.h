@@ -1,6 +1,6 @@
 // The Tiling Robot dock's training panel for "ppo": a time budget, Train / Stop, and a live
 // QCustomPlot of the sampled tours' energy per waypoint against the PPO update, like the
-// DQN's Training dock. The plot is fed by queued signals from the worker thread.
+// DQN's Training dock. The plot is fed by the training task's posted points.
 #pragma once
 
 #include <QWidget>

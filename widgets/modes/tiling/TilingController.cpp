@@ -2,24 +2,15 @@
 
 #include "document/Conversions.h"
 #include "document/Document.h"
+#include "tasks/Task.h"
 
 #include <QEventLoop>
-#include <QFutureWatcher>
 #include <QTimer>
-#include <QtConcurrent>
 
 namespace fc::ui {
 
-namespace {
-
-struct TilingOutcome {
-    std::shared_ptr<const tiling::TilingPlan> plan;
-    QString error;
-};
-
-} // namespace
-
-TilingController::TilingController(QObject* parent) : QObject(parent) {}
+TilingController::TilingController(TaskManager* tasks, QObject* parent)
+    : QObject(parent), tasks_(tasks) {}
 
 void TilingController::setDocument(Document* document) {
     if (document_)
@@ -35,8 +26,12 @@ void TilingController::setRobot(const tiling::TilingRobotProfile& robot) {
     clear(); // the tiles' size changed with the blocks
 }
 
+void TilingController::cancel() {
+    tasks_->cancelKind(QStringLiteral("tiling"));
+}
+
 void TilingController::clear() {
-    ++generation_;
+    cancel(); // a running tiling is for the old floor or robot
     setError(QString());
     if (!result_)
         return;
@@ -59,30 +54,35 @@ void TilingController::run(const QString& solver, quint64 seed) {
     request.robot = robot_;
     request.solver = solver.toStdString();
     request.seed = seed;
-    const quint64 generation = ++generation_;
-    if (running_++ == 0)
-        emit busyChanged(true);
-    auto* watcher = new QFutureWatcher<TilingOutcome>(this);
-    connect(watcher, &QFutureWatcherBase::finished, this, [this, watcher, generation]() {
-        const TilingOutcome outcome = watcher->result();
-        watcher->deleteLater();
-        if (generation == generation_) {
-            result_ = outcome.plan;
-            setError(outcome.error);
-            emit resultChanged();
-        }
-        if (--running_ == 0)
-            emit busyChanged(false);
+    const bool wasBusy = isBusy();
+    Task* task = tasks_->run(tr("Tiling with %1").arg(solver),
+                             [request](TaskFeedback& feedback) {
+                                 tiling::TilingPlan plan = tiling::tilePlan(request);
+                                 feedback.setProgress(0.25); // the ordering is the long part
+                                 tiling::orderTiles(plan, request.solver, request.seed,
+                                                    feedback.cancelledFunction());
+                                 return plan;
+                             },
+                             {QStringLiteral("tiling")});
+    task_ = task;
+    connect(task, &Task::finished, this, [this, task] {
+        result_ = task->result<tiling::TilingPlan>();
+        setError(QString());
+        emit resultChanged();
     });
-    watcher->setFuture(QtConcurrent::run([request]() {
-        TilingOutcome outcome;
-        try {
-            outcome.plan = std::make_shared<const tiling::TilingPlan>(tiling::planTiling(request));
-        } catch (const std::exception& e) {
-            outcome.error = fromStd(e.what());
-        }
-        return outcome;
-    }));
+    connect(task, &Task::failed, this, [this](const QString& message) {
+        result_.reset();
+        setError(message);
+        emit resultChanged();
+    });
+    connect(task, &Task::ended, this, [this, task] {
+        if (task != task_)
+            return; // superseded: a newer run is the busy one
+        task_ = nullptr;
+        emit busyChanged(false);
+    });
+    if (!wasBusy)
+        emit busyChanged(true);
 }
 
 bool TilingController::runAndWait(const QString& solver, quint64 seed, int timeoutMs) {

@@ -1,8 +1,11 @@
 // The tiling-robot mode's planner (issue 7): tiles the document's floor and orders the tiles
-// with the chosen method off the GUI thread. A result is dropped when the geometry changes
-// or a newer run starts, so a slow ordering (aco, ga, ppo) never shows a stale floor.
+// with the chosen method as a task (tasks/Task.h, kind "tiling"). A result is dropped when
+// the geometry changes or a newer run starts (the older task is cancelled), so a slow
+// ordering (aco, ga, ppo) never shows a stale floor; Cancel stops aco and ga within an
+// iteration.
 #pragma once
 
+#include "tasks/Task.h"
 #include "tiling/TilingPlanner.h"
 
 #include <QObject>
@@ -17,7 +20,7 @@ class Document;
 class TilingController : public QObject {
     Q_OBJECT
 public:
-    explicit TilingController(QObject* parent = nullptr);
+    TilingController(TaskManager* tasks, QObject* parent = nullptr);
 
     void setDocument(Document* document);
     void setRobot(const tiling::TilingRobotProfile& robot);
@@ -25,7 +28,8 @@ public:
 
     std::shared_ptr<const tiling::TilingPlan> result() const { return result_; }
     QString errorMessage() const { return error_; }
-    bool isBusy() const { return running_ > 0; }
+    bool isBusy() const { return task_ != nullptr; }
+    Task* task() const { return task_; } // the running one (null when none)
     // Starts run() and waits for it (tests, scripts). False on failure or timeout.
     bool runAndWait(const QString& solver, quint64 seed, int timeoutMs = 120000);
 
@@ -40,13 +44,14 @@ signals:
 
 private:
     void setError(const QString& message);
+    void cancel();
 
+    TaskManager* tasks_;
+    QPointer<Task> task_;
     QPointer<Document> document_;
     tiling::TilingRobotProfile robot_;
     std::shared_ptr<const tiling::TilingPlan> result_;
     QString error_;
-    quint64 generation_ = 0;
-    int running_ = 0;
 };
 
 } // namespace fc::ui

@@ -3,6 +3,7 @@
 #include "modes/tiling/TilingController.h"
 #include "modes/tiling/TilingDock.h"
 #include "modes/tiling/TilingItem.h"
+#include "tasks/Task.h"
 
 #include <QAction>
 #include <QGraphicsScene>
@@ -11,7 +12,8 @@
 namespace fc::ui {
 
 TilingMode::TilingMode(QMainWindow* window, QGraphicsScene* scene)
-    : QObject(window), scene_(scene), controller_(new TilingController(this)),
+    : QObject(window), scene_(scene),
+      controller_(new TilingController(TaskManager::forObject(window), this)),
       dock_(new TilingDock(controller_, window)), item_(new TilingItem) {
     scene_->addItem(item_);
     item_->setVisible(false);
