@@ -94,9 +94,10 @@ class GeneticTour {
 public:
     // firstTask: the task covered first (the start cell), or -1 when it is not required.
     GeneticTour(const BaselineWorld& w, const CellTransits& transits, std::vector<int> cells,
-                std::vector<std::vector<CoverOption>> options, int firstTask)
+                std::vector<std::vector<CoverOption>> options, int firstTask,
+                const SolveControl& control)
         : w_(w), transits_(transits), cells_(std::move(cells)), options_(std::move(options)),
-          firstTask_(firstTask), random_(w.seed) {}
+          firstTask_(firstTask), random_(w.seed), control_(control) {}
 
     // The whole visiting order of an individual: the first task, then its order.
     std::vector<int> visits(const Individual& ind) const {
@@ -116,6 +117,9 @@ public:
         for (Individual& ind : population)
             ind.cost = cost(ind);
         for (int g = 0; g < generations; ++g) {
+            // Thousands of generations on large floors: the editor's Cancel must be heard.
+            solver_detail::throwIfCancelled(control_, kName);
+            solver_detail::reportProgress(control_, static_cast<double>(g) / generations);
             std::stable_sort(
                 population.begin(), population.end(),
                 [](const Individual& a, const Individual& b) { return a.cost < b.cost; });
@@ -255,6 +259,7 @@ private:
     std::vector<std::vector<CoverOption>> options_;
     int firstTask_;
     solver_detail::SeededRandom random_;
+    const SolveControl& control_;
 };
 
 // Start at any of the four corners: stripes left to right or right to left, the first
@@ -279,7 +284,8 @@ std::vector<CoverOption> coverOptions(const BaselineWorld& w, const ClearanceFie
 
 } // namespace
 
-Solution solveAdjacencyGa(const PreparedPlan& prepared, const Query& query) {
+Solution solveAdjacencyGa(const PreparedPlan& prepared, const Query& query,
+                          const SolveControl& control) {
     const BaselineWorld world = makeBaselineWorld(prepared, query, kName);
     const ClearanceField& field = world.decomposition.clearance();
     CellTransits transits(world);
@@ -296,7 +302,7 @@ Solution solveAdjacencyGa(const PreparedPlan& prepared, const Query& query) {
         options.push_back(coverOptions(world, field, c.id));
         transits.computeRoutesFrom(c.id);
     }
-    GeneticTour tour(world, transits, cells, options, firstTask);
+    GeneticTour tour(world, transits, cells, options, firstTask, control);
     const Individual best = tour.run();
     if (best.cost == kInf)
         throw SolverError(std::string(kName) + ": a required cell is not connected");

@@ -21,6 +21,8 @@ namespace fc {
 
 // Both throw SolverError when no collision-free tour exists.
 Solution solveReebPostman(const PreparedPlan& prepared, const Query& query);
-Solution solveAdjacencyGa(const PreparedPlan& prepared, const Query& query);
+// Cancellable between generations (SolverError when control.cancelled() says so).
+Solution solveAdjacencyGa(const PreparedPlan& prepared, const Query& query,
+                          const SolveControl& control = {});
 
 } // namespace fc

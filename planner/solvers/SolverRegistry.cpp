@@ -41,7 +41,9 @@ std::vector<RegisteredSolver> builtInSolvers() {
     solvers[3].classicStages = true;
     solvers[4].name = "adjacency-ga";
     solvers[4].solve = [](const PreparedPlan& prepared, const Query& query, const std::string&,
-                          const SolveControl&) { return solveAdjacencyGa(prepared, query); };
+                          const SolveControl& control) {
+        return solveAdjacencyGa(prepared, query, control);
+    };
     solvers[4].classicStages = true;
     return solvers;
 }
