@@ -1,6 +1,6 @@
 #include "pipeline/PerRoomSweep.h"
 
-#include "path/PathBuilder.h"
+#include "pipeline/PathChoice.h"
 
 #include <algorithm>
 #include <chrono>
@@ -262,10 +262,12 @@ PlanResult planWithRoomAngles(const PlanRequest& request,
             makeQuery(part.prepared, part.rooms, start, end, request.seed, result.warnings);
         if (k == 0 && !home)
             home = worldOf(part.prepared, part.query.startNode);
-        part.solution =
-            runSolver(request.solver, part.prepared, part.query, request.modelPath, control);
-        part.path = buildCoveragePath(part.prepared.decomposition, part.prepared.graph,
-                                      part.solution, start, end);
+        ChosenPath chosen = choosePathByTime(
+            part.prepared, part.query,
+            runSolver(request.solver, part.prepared, part.query, request.modelPath, control), start,
+            end, part.rooms);
+        part.solution = std::move(chosen.solution);
+        part.path = std::move(chosen.path);
         // The next part starts where this one ended.
         start = part.path.empty() ? end : std::optional<Vec2>(part.path.points.back());
         for (size_t i = 0; i < part.path.points.size(); ++i) {

@@ -3,7 +3,7 @@
 #include "graph/ComponentBridges.h"
 #include "model/Validation.h"
 #include "path/CoverageRepair.h"
-#include "path/PathBuilder.h"
+#include "pipeline/PathChoice.h"
 #include "pipeline/PerRoomSweep.h"
 
 #include <algorithm>
@@ -306,18 +306,20 @@ PlanResult planOneAngle(const PlanRequest& request, double angle, const SolveCon
                                   solverNeedsClassicStages(request.solver));
     result.query = makeQuery(result.prepared, request.rooms, request.start, request.end,
                              request.seed, result.warnings);
-    result.solution =
-        runSolver(request.solver, result.prepared, result.query, request.modelPath, control);
-    result.path = buildCoveragePath(result.prepared.decomposition, result.prepared.graph,
-                                    result.solution, request.start, request.end);
-    const double seconds =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-
     // Every selected room counts, also cells the start could not reach (no silent loss).
     std::vector<std::string> required = request.rooms;
     if (required.empty())
         required = result.prepared.decomposition.roomNames;
-    result.metrics = measurePath(result.prepared, required, result.path);
+    ChosenPath chosen = choosePathByTime(
+        result.prepared, result.query,
+        runSolver(request.solver, result.prepared, result.query, request.modelPath, control),
+        request.start, request.end, required);
+    result.solution = std::move(chosen.solution);
+    result.path = std::move(chosen.path);
+    const double seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    result.metrics = chosen.metrics ? std::move(*chosen.metrics)
+                                    : measurePath(result.prepared, required, result.path);
     result.metrics.graphCost = result.solution.graphCost;
     result.metrics.lowerBound = result.solution.lowerBound;
     result.metrics.seconds = seconds;

@@ -186,6 +186,20 @@ void OrderPolish::descend(const SolveControl& control) {
     queue_.clear();
 }
 
+void OrderPolish::keepLocalOptimum() {
+    const double cost = evaluator_.baseCost();
+    const std::vector<int>& order = evaluator_.baseOrder();
+    if (!(cost < kInfinity) || std::any_of(optima_.begin(), optima_.end(),
+                                           [&](const auto& o) { return o.order == order; }))
+        return;
+    optima_.push_back({cost, order});
+    std::stable_sort(optima_.begin(), optima_.end(),
+                     [](const auto& a, const auto& b) { return a.cost < b.cost; });
+    const double limit = optima_.front().cost * (1.0 + kOptimaSlack) + kImprovement;
+    while (optima_.size() > kKeptOptima || optima_.back().cost > limit)
+        optima_.pop_back();
+}
+
 double OrderPolish::improve(std::vector<int>& order, std::uint64_t workBudget,
                             const SolveControl& control) {
     workLimit_ = evaluator_.work() + workBudget;
@@ -206,6 +220,7 @@ double OrderPolish::improve(std::vector<int>& order, std::uint64_t workBudget,
 
     std::vector<int> best = evaluator_.baseOrder();
     double bestCost = evaluator_.baseCost();
+    keepLocalOptimum();
     // Perturbations stop when the budget is spent or many in a row found nothing.
     const int patience = std::max(10, count_);
     for (int failures = 0;
@@ -225,6 +240,7 @@ double OrderPolish::improve(std::vector<int>& order, std::uint64_t workBudget,
         for (int k = std::max(a - 1, 0); k <= std::min(c, count_ - 1); ++k)
             markDirty(trial[k]);
         descend(control);
+        keepLocalOptimum();
         if (evaluator_.baseCost() < bestCost - kImprovement) {
             best = evaluator_.baseOrder();
             bestCost = evaluator_.baseCost();

@@ -23,6 +23,17 @@ public:
     // new cost (+inf, order unchanged, if the order is infeasible).
     double improve(std::vector<int>& order, std::uint64_t workBudget, const SolveControl& control);
 
+    // The distinct local optima `improve` reached (its result among them), cheapest first,
+    // at most kKeptOptima, each within kOptimaSlack of the cheapest: the graph cost is a
+    // proxy, so the pipeline judges these as paths (estimated time) before choosing.
+    struct LocalOptimum {
+        double cost = 0.0;
+        std::vector<int> order;
+    };
+    static constexpr std::size_t kKeptOptima = 6;
+    static constexpr double kOptimaSlack = 0.05;
+    const std::vector<LocalOptimum>& localOptima() const { return optima_; }
+
 private:
     // First-improvement moves around the queued tasks until none improves or the budget is
     // spent; an accepted move queues the tasks around it.
@@ -39,6 +50,7 @@ private:
     void coverOnTheWayRounds(const SolveControl& control);
     bool exhausted() const { return evaluator_.work() >= workLimit_; }
     std::vector<int> partnerGaps(int index) const;
+    void keepLocalOptimum(); // the evaluator's base, if distinct and cheap enough
 
     OrderEvaluator& evaluator_;
     const ProxyDistances& distances_;
@@ -49,6 +61,7 @@ private:
     std::vector<char> dirty_;
     std::vector<int> queue_;
     std::uint64_t workLimit_ = 0;
+    std::vector<LocalOptimum> optima_;
 };
 
 } // namespace fc::solver_detail

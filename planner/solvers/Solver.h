@@ -46,6 +46,10 @@ struct Solution {
     // is optimal (then lowerBound == graphCost).
     double lowerBound = -1.0;
     bool provenOptimal = false;
+    // Other walks the solver found nearly as cheap (the heuristic's distinct local optima):
+    // the graph cost is a proxy for the path's time, so the pipeline builds each as a path
+    // and keeps the fastest (see pipeline/PathChoice.h). Empty for most solvers.
+    std::vector<Walk> alternatives;
 };
 
 struct WalkEvaluation {

@@ -1,0 +1,77 @@
+#include "pipeline/PathChoice.h"
+
+#include "path/PathBuilder.h"
+#include "pipeline/Planner.h"
+
+#include <algorithm>
+
+namespace fc {
+namespace {
+
+double estimatedTime(const CoveragePath& path, const RobotProfile& robot) {
+    // As Metrics::time (computeMetrics), without measuring coverage.
+    const double length = polylineLength(path.points);
+    return (robot.speed > 0.0 ? length / robot.speed : 0.0) +
+           countTurns(path.points) * robot.turnTime;
+}
+
+} // namespace
+
+ChosenPath choosePathByTime(const PreparedPlan& prepared, const Query& query, Solution solution,
+                            std::optional<Vec2> start, std::optional<Vec2> end,
+                            const std::vector<std::string>& requiredRooms) {
+    const Decomposition& dec = prepared.decomposition;
+    const CornerGraph& graph = prepared.graph;
+    std::vector<Walk> alternatives = std::move(solution.alternatives);
+    solution.alternatives.clear();
+    ChosenPath chosen;
+    chosen.path = buildCoveragePath(dec, graph, solution, start, end);
+    chosen.candidates = 1 + static_cast<int>(alternatives.size());
+    if (alternatives.empty()) {
+        chosen.solution = std::move(solution);
+        return chosen;
+    }
+    // The fastest alternative by its path's time; ties keep the solver's own best.
+    const double bestTime = estimatedTime(chosen.path, prepared.robot);
+    double fastest = bestTime;
+    int fastestIndex = -1;
+    CoveragePath fastestPath;
+    for (size_t i = 0; i < alternatives.size(); ++i) {
+        const WalkEvaluation check = evaluateWalk(graph, query, alternatives[i]);
+        if (!check.connected || !check.coversAllRequired)
+            continue; // never trusted blindly, as for the solver's own walk
+        CoveragePath path = buildCoveragePath(dec, graph, alternatives[i], start, end);
+        const double time = estimatedTime(path, prepared.robot);
+        if (time < fastest - 1e-9 * std::max(1.0, fastest)) {
+            fastest = time;
+            fastestIndex = static_cast<int>(i);
+            fastestPath = std::move(path);
+        }
+    }
+    if (fastestIndex < 0) {
+        chosen.solution = std::move(solution);
+        return chosen;
+    }
+    // Measured in full: a faster path must also cover as much (seal excursions differ).
+    Metrics own = measurePath(prepared, requiredRooms, chosen.path);
+    Metrics faster = measurePath(prepared, requiredRooms, fastestPath);
+    if (!betterPlanChoice(faster, own)) {
+        chosen.solution = std::move(solution);
+        chosen.metrics = std::move(own);
+        return chosen;
+    }
+    const Walk& walk = alternatives[static_cast<size_t>(fastestIndex)];
+    const WalkEvaluation evaluation = evaluateWalk(graph, query, walk);
+    solution.walk = walk;
+    solution.cellOrder = evaluation.cellOrder;
+    solution.graphCost = evaluation.graphCost;
+    // The bound still holds for every walk; optimality is the chosen walk's own.
+    solution.provenOptimal =
+        solution.lowerBound >= 0.0 && !(solution.lowerBound < solution.graphCost - 1e-9);
+    chosen.solution = std::move(solution);
+    chosen.path = std::move(fastestPath);
+    chosen.metrics = std::move(faster);
+    return chosen;
+}
+
+} // namespace fc
