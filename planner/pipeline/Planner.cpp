@@ -413,13 +413,13 @@ PlanResult planCoverage(const PlanRequest& request, const SolveControl& control)
     const auto t0 = std::chrono::steady_clock::now();
     PlanResult result = planWithoutTouchUps(request, control);
     // Wall touch-ups once, on the chosen plan (the candidates compare without them), where
-    // it misses more than the reported share of the floor: each adds turns, so a plan that
-    // already covers 99.5% keeps its clean pattern.
+    // it misses more than kTouchUpFraction of the floor: each adds turns, so a plan that
+    // already covers 99.65% keeps its clean pattern.
     const Metrics before = result.metrics;
     std::vector<std::string> required = request.rooms;
     if (required.empty())
         required = result.prepared.decomposition.roomNames;
-    if (before.uncoveredArea > kReportedLossFraction * before.requiredArea)
+    if (before.uncoveredArea > kTouchUpFraction * before.requiredArea)
         touchUpCoverage(result.prepared, required, result.path, result.metrics);
     if (result.metrics.coveredArea > before.coveredArea) {
         result.metrics.graphCost = before.graphCost;
