@@ -20,6 +20,26 @@ double ringArea(const Ring& ring) {
     return std::abs(signedArea(ring));
 }
 
+int countTurns(const Polyline& points) {
+    const double threshold = std::cos(45.0 * M_PI / 180.0);
+    int turns = 0;
+    bool haveHeading = false;
+    Vec2 heading;
+    for (size_t i = 1; i < points.size(); ++i) {
+        const Vec2 delta = points[i] - points[i - 1];
+        const double length = norm(delta);
+        if (length <= 1e-9)
+            continue;
+        const Vec2 direction = delta * (1.0 / length);
+        // cos(change) <= cos(45 deg), with slack so that an exact 45 degrees counts.
+        if (haveHeading && dot(heading, direction) <= threshold + 1e-12)
+            ++turns;
+        heading = direction;
+        haveHeading = true;
+    }
+    return turns;
+}
+
 double polylineLength(const Polyline& line) {
     double len = 0.0;
     for (size_t i = 1; i < line.size(); ++i)

@@ -65,6 +65,9 @@ struct BoundingBox {
 double signedArea(const Ring& ring);
 double ringArea(const Ring& ring); // absolute value
 double polylineLength(const Polyline& line);
+// Turns of a polyline (SPEC sect. 6): interior vertices where the heading changes by >= 45
+// degrees; segments of 1 nm or less carry no heading.
+int countTurns(const Polyline& points);
 BoundingBox boundsOf(const Ring& ring);
 bool pointInRing(const Ring& ring, Vec2 p); // even-odd, boundary undefined
 double pointSegmentDistance(Vec2 p, Vec2 a, Vec2 b);

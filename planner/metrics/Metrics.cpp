@@ -19,7 +19,6 @@ namespace fc {
 namespace {
 
 constexpr double kMaxPixels = 16e6;           // keeps memory and time bounded on huge plans
-constexpr double kTurnThresholdDeg = 45.0;    // SPEC: heading change >= 45 degrees
 constexpr double kMitreLimitInWidths = 2.0;   // longer mitres are bevelled
 constexpr double kOverlapSweptFraction = 0.8; // share of the head over already swept area
 constexpr double kDegenerateLength = 1e-9;    // shorter segments carry no heading
@@ -232,26 +231,6 @@ bool roomRequired(const MetricsInput& input, int room) {
 }
 
 } // namespace
-
-int countTurns(const Polyline& points) {
-    const double threshold = std::cos(kTurnThresholdDeg * M_PI / 180.0);
-    int turns = 0;
-    bool haveHeading = false;
-    Vec2 heading;
-    for (size_t i = 1; i < points.size(); ++i) {
-        const Vec2 delta = points[i] - points[i - 1];
-        const double length = norm(delta);
-        if (length <= kDegenerateLength)
-            continue;
-        const Vec2 direction = delta * (1.0 / length);
-        // cos(change) <= cos(45 deg), with slack so that an exact 45 degrees counts.
-        if (haveHeading && dot(heading, direction) <= threshold + 1e-12)
-            ++turns;
-        heading = direction;
-        haveHeading = true;
-    }
-    return turns;
-}
 
 Metrics computeMetrics(const MetricsInput& input) {
     Metrics metrics;

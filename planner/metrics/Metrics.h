@@ -49,7 +49,6 @@ struct MetricsInput {
 
 Metrics computeMetrics(const MetricsInput& input);
 
-// Turns of a polyline: interior vertices where the heading changes by >= 45 degrees.
-int countTurns(const Polyline& points);
+// Turns are counted by countTurns (geometry/Geometry.h).
 
 } // namespace fc

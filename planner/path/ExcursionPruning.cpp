@@ -159,4 +159,80 @@ std::vector<char> prunableExcursions(const Polyline& pts,
     return keep;
 }
 
+namespace {
+
+// Estimated time of a polyline: length / speed + turns x turn time.
+double timeOf(const Polyline& line, const RobotProfile& robot) {
+    return (robot.speed > 0.0 ? polylineLength(line) / robot.speed : 0.0) +
+           countTurns(line) * robot.turnTime;
+}
+
+} // namespace
+
+void foldExcursionsIntoTransits(const Polyline& pts, const std::vector<PathExcursion>& excursions,
+                                const ClearanceField& field, const RobotProfile& robot,
+                                std::vector<char>& keep, std::vector<SegmentKind>& arriving) {
+    const int n = static_cast<int>(pts.size());
+    // Points another excursion starts or ends at stay: two seals can share a stripe end.
+    std::vector<int> bases(n, 0);
+    for (const PathExcursion& ex : excursions)
+        ++bases[ex.begin], ++bases[ex.end];
+    auto keptBefore = [&](int i) {
+        for (--i; i >= 0 && !keep[i];)
+            --i;
+        return i;
+    };
+    auto keptAfter = [&](int i) {
+        for (++i; i < n && !keep[i];)
+            ++i;
+        return i < n ? i : -1;
+    };
+    for (const PathExcursion& ex : excursions) {
+        if (ex.end - ex.begin < 2 || distance(pts[ex.begin], pts[ex.end]) > 1e-9 ||
+            bases[ex.begin] > 1 || bases[ex.end] > 1 || !keep[ex.begin])
+            continue;
+        bool whole = true;
+        for (int k = ex.begin + 1; k <= ex.end; ++k)
+            whole = whole && keep[k];
+        if (!whole)
+            continue; // pruned by prunableExcursions
+        int tip = ex.begin;
+        for (int k = ex.begin; k <= ex.end; ++k)
+            if (distance(pts[k], pts[ex.begin]) > distance(pts[tip], pts[ex.begin]))
+                tip = k;
+        const int prev = keptBefore(ex.begin), next = keptAfter(ex.end);
+        if (tip == ex.begin || prev < 0 || next < 0)
+            continue;
+        // The neighbourhood as it is and with each fold, one kept point wider on each side
+        // so that the turns at prev and next count.
+        const int outerPrev = std::max(keptBefore(prev), 0), outerNext = keptAfter(next);
+        auto window = [&](int skipFrom, int skipTo) { // points skipFrom..skipTo left out
+            Polyline line{pts[outerPrev]};
+            for (int k = prev; k <= ex.end; ++k)
+                if (k < skipFrom || k > skipTo)
+                    line.push_back(pts[k]);
+            line.push_back(pts[next]);
+            if (outerNext >= 0)
+                line.push_back(pts[outerNext]);
+            return line;
+        };
+        const double now = timeOf(window(1, 0), robot);
+        const bool entry =
+            arriving[ex.begin] == SegmentKind::Transit && field.segmentIsClear(pts[prev], pts[tip]);
+        const bool exit =
+            arriving[next] == SegmentKind::Transit && field.segmentIsClear(pts[tip], pts[next]);
+        const double entryTime = entry ? timeOf(window(ex.begin, tip - 1), robot) : INFINITY;
+        const double exitTime = exit ? timeOf(window(tip + 1, ex.end), robot) : INFINITY;
+        if (!(std::min(entryTime, exitTime) < now - 1e-9))
+            continue;
+        if (entryTime <= exitTime) {
+            std::fill(keep.begin() + ex.begin, keep.begin() + tip, 0);
+            arriving[tip] = SegmentKind::Transit;
+        } else {
+            std::fill(keep.begin() + tip + 1, keep.begin() + ex.end + 1, 0);
+            arriving[next] = SegmentKind::Transit;
+        }
+    }
+}
+
 } // namespace fc::detail

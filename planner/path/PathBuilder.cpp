@@ -66,8 +66,13 @@ CoveragePath finish(LocalPath& local, const ClearanceField& field, const Decompo
         append(local.path,
                joinFreePoint(field, local.path.points.back(), dec.frame.toLocal(*endPoint), "end"),
                SegmentKind::Transit);
-    const std::vector<char> keep =
+    std::vector<char> keep =
         detail::prunableExcursions(local.path.points, local.excursions, dec.coverageWidth());
+    std::vector<SegmentKind> arriving(local.path.points.size(), SegmentKind::Transit);
+    for (size_t i = 1; i < arriving.size(); ++i)
+        arriving[i] = local.path.kinds[i - 1];
+    detail::foldExcursionsIntoTransits(local.path.points, local.excursions, field, dec.robot, keep,
+                                       arriving);
     CoveragePath world;
     for (size_t i = 0; i < local.path.points.size(); ++i) {
         if (!keep[i])
@@ -76,7 +81,7 @@ CoveragePath finish(LocalPath& local, const ClearanceField& field, const Decompo
         if (!world.points.empty()) {
             if (distance(world.points.back(), p) < 1e-9)
                 continue;
-            world.kinds.push_back(local.path.kinds[i - 1]);
+            world.kinds.push_back(arriving[i]);
         }
         world.points.push_back(p);
     }

@@ -76,24 +76,45 @@ TEST(PathChoice, KeepsTheFastestValidPath) {
 }
 
 TEST(PathChoice, NeverTradesCoverageForTime) {
-    // On office at 90 degrees the greedy walk's path is 3% faster than the heuristic's, but
-    // leaves 5.5 m^2 (about 1%) unswept where the heuristic's leaves 0.7 m^2: it is refused.
-    const PreparedPlan p = preparedSample("office");
-    const Query q = wholeFloor(p);
-    Solution answer = runSolver("heuristic", p, q);
-    const Solution greedy = runSolver("greedy", p, q);
-    answer.alternatives = {greedy.walk};
-    const CoveragePath own = buildCoveragePath(p.decomposition, p.graph, answer);
-    const CoveragePath faster = buildCoveragePath(p.decomposition, p.graph, greedy);
-    ASSERT_LT(timeOf(faster, p.robot), timeOf(own, p.robot));
-    const Metrics fasterMetrics = measurePath(p, {}, faster);
-    ASSERT_GT(fasterMetrics.uncoveredArea, 0.005 * fasterMetrics.requiredArea);
-
-    const ChosenPath chosen = choosePathByTime(p, q, answer, std::nullopt, std::nullopt, {});
-    EXPECT_EQ(chosen.solution.walk.nodes, answer.walk.nodes);
-    EXPECT_NEAR(timeOf(chosen.path, p.robot), timeOf(own, p.robot), 1e-9);
-    ASSERT_TRUE(chosen.metrics.has_value());
-    EXPECT_LE(chosen.metrics->uncoveredArea, 0.005 * chosen.metrics->requiredArea);
+    // Greedy and heuristic walks on office at four angles and for robots that
+    // weigh turns lightly or heavily: wherever one walk's path is faster but leaves more than
+    // 0.5% of the floor unswept while the other's does not, the complete one is kept. (On
+    // office at 90 degrees the greedy path misses about 1%.)
+    int decided = 0;
+    for (const char* name : {"office"})
+        for (double angle : {0.0, 30.0, 60.0, 90.0})
+            for (double turnTime : {0.2, 2.0, 10.0, 30.0}) {
+                RobotProfile robot{0.6, 1.0, 1.0};
+                robot.turnTime = turnTime;
+                const PreparedPlan p = preparePlan(
+                    loadProjectFile(std::string(FC_PLANS_DIR) + "/" + name + ".geojson").plan,
+                    robot, angle);
+                const Query q = wholeFloor(p);
+                const Solution walks[2] = {runSolver("heuristic", p, q), runSolver("greedy", p, q)};
+                CoveragePath paths[2];
+                Metrics metrics[2];
+                for (int k = 0; k < 2; ++k) {
+                    paths[k] = buildCoveragePath(p.decomposition, p.graph, walks[k]);
+                    metrics[k] = measurePath(p, {}, paths[k]);
+                }
+                auto complete = [](const Metrics& m) {
+                    return m.uncoveredArea <= kReportedLossFraction * m.requiredArea;
+                };
+                const int fast = timeOf(paths[0], robot) < timeOf(paths[1], robot) ? 0 : 1;
+                const int full = 1 - fast;
+                if (complete(metrics[fast]) || !complete(metrics[full]))
+                    continue;
+                ++decided;
+                Solution answer = walks[full];
+                answer.alternatives = {walks[fast].walk};
+                const ChosenPath chosen =
+                    choosePathByTime(p, q, answer, std::nullopt, std::nullopt, {});
+                EXPECT_EQ(chosen.solution.walk.nodes, walks[full].walk.nodes)
+                    << name << " " << angle << " " << turnTime;
+                ASSERT_TRUE(chosen.metrics.has_value());
+                EXPECT_TRUE(complete(*chosen.metrics));
+            }
+    EXPECT_GE(decided, 1); // the case this test exists for occurred
 }
 
 TEST(PathChoice, PlannedPathIsNoSlowerThanTheSolversOwnBest) {

@@ -1,0 +1,109 @@
+// Seal excursions next to a transit are folded into it (issue 13: fewer reversals at stripe
+// ends): the transit runs to the seal's far end and the robot drives the margin once.
+#include "TestPlans.h"
+#include "decomposition/Decomposition.h"
+#include "path/ExcursionPruning.h"
+
+#include <gtest/gtest.h>
+
+using namespace fc;
+using fc::detail::PathExcursion;
+
+namespace {
+
+// A 10 x 10 m room, with a wall segment (a thin obstacle) where `blocked` asks for one.
+Decomposition room(bool blocked) {
+    Plan plan;
+    plan.boundary = test::rectangle(0, 0, 10, 10);
+    if (blocked)
+        plan.obstacles.push_back(test::rectangle(2.6, 1.6, 3.4, 4.0));
+    DecompositionOptions options;
+    options.robot = RobotProfile{0.6, 1.0, 1.0};
+    return decompose(plan, options);
+}
+
+struct Folded {
+    Polyline points;
+    std::vector<SegmentKind> kinds; // of each kept segment
+};
+
+// Runs the fold on a path given in the decomposition's sweep frame.
+Folded fold(const Decomposition& dec, const Polyline& local, std::vector<SegmentKind> arriving,
+            const std::vector<PathExcursion>& excursions) {
+    std::vector<char> keep(local.size(), 1);
+    detail::foldExcursionsIntoTransits(local, excursions, dec.clearance(), dec.robot, keep,
+                                       arriving);
+    Folded out;
+    for (size_t i = 0; i < local.size(); ++i)
+        if (keep[i]) {
+            if (!out.points.empty())
+                out.kinds.push_back(arriving[i]);
+            out.points.push_back(local[i]);
+        }
+    return out;
+}
+
+} // namespace
+
+TEST(ExcursionFold, TransitRunsToTheSealsFarEnd) {
+    const Decomposition dec = room(false);
+    const Frame& f = dec.frame;
+    // A transit from the middle to a stripe start, a seal half a column to the left and
+    // back, then the stripe up.
+    const Vec2 from = f.toLocal({6, 5}), a = f.toLocal({2, 1}), tip = f.toLocal({1.5, 1}),
+               top = f.toLocal({2, 9});
+    const Polyline path{from, a, tip, a, top};
+    using K = SegmentKind;
+    const Folded out =
+        fold(dec, path, {K::Transit, K::Transit, K::Stripe, K::Stripe, K::Stripe}, {{1, 3, false}});
+    ASSERT_EQ(out.points.size(), 4u);
+    EXPECT_LT(distance(out.points[1], tip), 1e-9); // straight to the far end
+    EXPECT_LT(distance(out.points[2], a), 1e-9);   // the margin once, back to the stripe
+    EXPECT_EQ(out.kinds[0], K::Transit);
+    EXPECT_LT(polylineLength(out.points), polylineLength(path));
+    EXPECT_LT(countTurns(out.points), countTurns(path));
+}
+
+TEST(ExcursionFold, LeavesFromTheFarEndWhenTheTransitFollows) {
+    const Decomposition dec = room(false);
+    const Frame& f = dec.frame;
+    // The stripe comes down to its end, seals to the left and back, then a transit away.
+    const Vec2 top = f.toLocal({2, 9}), b = f.toLocal({2, 1}), tip = f.toLocal({1.5, 1}),
+               to = f.toLocal({1, 6});
+    const Polyline path{top, b, tip, b, to};
+    using K = SegmentKind;
+    const Folded out =
+        fold(dec, path, {K::Transit, K::Stripe, K::Stripe, K::Stripe, K::Transit}, {{1, 3, false}});
+    ASSERT_EQ(out.points.size(), 4u);
+    EXPECT_LT(distance(out.points[2], tip), 1e-9);
+    EXPECT_LT(distance(out.points[3], to), 1e-9);
+    EXPECT_EQ(out.kinds[2], K::Transit);
+    EXPECT_LT(countTurns(out.points), countTurns(path));
+}
+
+TEST(ExcursionFold, KeepsTheSealWhereTheShortcutHitsAWallOrNoTransitIsNext) {
+    using K = SegmentKind;
+    {
+        // The transit passes the obstacle's corner L/2 clear; the shortcut to the seal's far
+        // end would graze it.
+        const Decomposition dec = room(true);
+        const Frame& f = dec.frame;
+        ASSERT_TRUE(dec.clearance().segmentIsClear(f.toLocal({4, 6}), f.toLocal({4, 1})));
+        const Polyline path{f.toLocal({4, 6}), f.toLocal({4, 1}), f.toLocal({3.5, 1}),
+                            f.toLocal({4, 1}), f.toLocal({5, 1})};
+        const Folded out = fold(
+            dec, path, {K::Transit, K::Transit, K::Stripe, K::Stripe, K::Stripe}, {{1, 3, false}});
+        EXPECT_EQ(out.points.size(), path.size());
+    }
+    {
+        // Stripes on both sides: nothing to fold into.
+        const Decomposition dec = room(false);
+        const Frame& f = dec.frame;
+        const Polyline path{f.toLocal({2, 9}), f.toLocal({2, 1}), f.toLocal({1.5, 1}),
+                            f.toLocal({2, 1}), f.toLocal({3, 1}), f.toLocal({3, 9})};
+        const Folded out =
+            fold(dec, path, {K::Transit, K::Stripe, K::Stripe, K::Stripe, K::Stripe, K::Stripe},
+                 {{1, 3, false}});
+        EXPECT_EQ(out.points.size(), path.size());
+    }
+}
