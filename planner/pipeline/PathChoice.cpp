@@ -26,6 +26,9 @@ ChosenPath choosePathByTime(const PreparedPlan& prepared, const Query& query, So
     solution.alternatives.clear();
     ChosenPath chosen;
     chosen.path = buildCoveragePath(dec, graph, solution, start, end);
+    const auto required = std::count(query.required.begin(), query.required.end(), 1);
+    if (required > kPathChoiceMaxCells)
+        alternatives.clear();
     chosen.candidates = 1 + static_cast<int>(alternatives.size());
     if (alternatives.empty()) {
         chosen.solution = std::move(solution);
@@ -52,13 +55,17 @@ ChosenPath choosePathByTime(const PreparedPlan& prepared, const Query& query, So
         chosen.solution = std::move(solution);
         return chosen;
     }
-    // Measured in full: a faster path must also cover as much (seal excursions differ).
-    Metrics own = measurePath(prepared, requiredRooms, chosen.path);
+    // Measured: a faster path must also cover everything reachable (seal excursions and
+    // transits differ). A complete faster path wins outright (betterPlanChoice), so the
+    // solver's own path is measured only when the faster one is not complete.
     Metrics faster = measurePath(prepared, requiredRooms, fastestPath);
-    if (!betterPlanChoice(faster, own)) {
-        chosen.solution = std::move(solution);
-        chosen.metrics = std::move(own);
-        return chosen;
+    if (!completePlan(faster)) {
+        Metrics own = measurePath(prepared, requiredRooms, chosen.path);
+        if (!betterPlanChoice(faster, own)) {
+            chosen.solution = std::move(solution);
+            chosen.metrics = std::move(own);
+            return chosen;
+        }
     }
     const Walk& walk = alternatives[static_cast<size_t>(fastestIndex)];
     const WalkEvaluation evaluation = evaluateWalk(graph, query, walk);

@@ -23,9 +23,14 @@ struct ChosenPath {
     int candidates = 1; // walks built and compared
 };
 
+// Queries of more required cells keep the solver's own walk: building and measuring each
+// alternative path costs seconds there (a 1,000-room floor: about 4 s per alternative).
+inline constexpr long kPathChoiceMaxCells = 1000;
+
 // Builds `solution`'s walk and each alternative as a path from `start` to `end` (world
 // frame), and keeps the fastest. An alternative replaces the solver's best only when its
 // measured metrics are a better plan choice (betterPlanChoice: complete first, then time).
+// Up to kPathChoiceMaxCells required cells.
 ChosenPath choosePathByTime(const PreparedPlan& prepared, const Query& query, Solution solution,
                             std::optional<Vec2> start, std::optional<Vec2> end,
                             const std::vector<std::string>& requiredRooms);

@@ -332,10 +332,12 @@ PlanResult planOneAngle(const PlanRequest& request, double angle, const SolveCon
 
 } // namespace
 
+bool completePlan(const Metrics& metrics) {
+    return metrics.uncoveredArea <= kReportedLossFraction * metrics.requiredArea;
+}
+
 bool betterPlanChoice(const Metrics& candidate, const Metrics& best) {
-    auto complete = [](const Metrics& m) {
-        return m.uncoveredArea <= kReportedLossFraction * m.requiredArea;
-    };
+    const auto complete = completePlan;
     if (complete(candidate) != complete(best))
         return complete(candidate);
     if (!complete(candidate) &&

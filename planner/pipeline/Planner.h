@@ -99,6 +99,8 @@ inline constexpr double kReportedLossFraction = 0.005;
 // that does not; then the shorter estimated time, then the shorter path. A shorter path
 // never buys less coverage.
 bool betterPlanChoice(const Metrics& candidate, const Metrics& best);
+// Whether a plan covers everything reachable: uncovered at most kReportedLossFraction.
+bool completePlan(const Metrics& metrics);
 
 // One warning per kind of loss above kReportedLossFraction of the required area: area
 // the path misses (uncovered) and area no robot position can sweep (unreachable).

@@ -97,9 +97,7 @@ TEST(PathChoice, NeverTradesCoverageForTime) {
                     paths[k] = buildCoveragePath(p.decomposition, p.graph, walks[k]);
                     metrics[k] = measurePath(p, {}, paths[k]);
                 }
-                auto complete = [](const Metrics& m) {
-                    return m.uncoveredArea <= kReportedLossFraction * m.requiredArea;
-                };
+                const auto complete = completePlan;
                 const int fast = timeOf(paths[0], robot) < timeOf(paths[1], robot) ? 0 : 1;
                 const int full = 1 - fast;
                 if (complete(metrics[fast]) || !complete(metrics[full]))
