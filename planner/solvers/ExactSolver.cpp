@@ -47,6 +47,12 @@ struct HeapItem {
     bool operator<(const HeapItem& o) const { return key > o.key; } // min-heap
 };
 
+std::string seconds(double value) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%g s", value);
+    return text;
+}
+
 std::string percent(double fraction) {
     char text[32];
     std::snprintf(text, sizeof text, "%.2f%%", 100.0 * fraction);
@@ -194,7 +200,7 @@ Solution solveExact(const CornerGraph& graph, const Query& query, const ExactOpt
                               " required cells: no proof of optimality within its budget (" +
                               withThousands(options.maxStates) + " states" +
                               (options.timeLimitSeconds > 0.0
-                                   ? ", " + std::to_string(options.timeLimitSeconds) + " s"
+                                   ? " or " + seconds(options.timeLimitSeconds)
                                    : std::string()) +
                               "; the best walk known is within " +
                               percent(incumbent.graphCost / std::max(lowerBound, 1e-12) - 1.0) +

@@ -84,6 +84,10 @@ struct ExactOptions {
     double timeLimitSeconds = 0.0; // > 0: also stops (as for maxStates) after this long
 };
 
+// The time limit of the `exact` solver as the pipeline runs it (CLI, editor): a query it
+// cannot prove within this is refused with the gap reached, never left running for minutes.
+inline constexpr double kExactTimeLimitSeconds = 60.0;
+
 Solution solveExact(const CornerGraph& graph, const Query& query, const ExactOptions& options = {},
                     const SolveControl& control = {});
 Solution solveHeuristic(const CornerGraph& graph, const Query& query,

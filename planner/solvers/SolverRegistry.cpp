@@ -25,7 +25,10 @@ std::vector<RegisteredSolver> builtInSolvers() {
     solvers[0].name = "exact";
     solvers[0].solve = [](const PreparedPlan& prepared, const Query& query, const std::string&,
                           const SolveControl& control) {
-        return solveExact(prepared.graph, query, {}, control);
+        // A user waits at most this long for a proof; then the refusal names the gap.
+        ExactOptions options;
+        options.timeLimitSeconds = kExactTimeLimitSeconds;
+        return solveExact(prepared.graph, query, options, control);
     };
     solvers[1].name = "heuristic";
     solvers[1].solve = [](const PreparedPlan& prepared, const Query& query, const std::string&,

@@ -425,6 +425,31 @@ TEST(ExactSolver, RefusesAboveItsLimits) {
     EXPECT_EQ(answered.provenOptimal, answered.lowerBound >= answered.graphCost);
 }
 
+// A query it cannot prove in time is refused with the gap reached, naming the limit, never
+// left running: four office rooms (20 required cells) take minutes to prove.
+TEST(ExactSolver, RefusesWhenItsTimeLimitPasses) {
+    const Project project = loadProjectFile(std::string(FC_PLANS_DIR) + "/office.geojson");
+    const PreparedPlan prepared = preparePlan(project.plan, project.robot, 90.0);
+    std::vector<std::string> warnings;
+    const Query query =
+        makeQuery(prepared, {"S01", "S02", "S03", "N01"}, std::nullopt, std::nullopt, 1, warnings);
+    ExactOptions options;
+    options.timeLimitSeconds = 0.5;
+    const auto t0 = std::chrono::steady_clock::now();
+    try {
+        solveExact(prepared.graph, query, options);
+        FAIL() << "expected a refusal";
+    } catch (const SolverError& e) {
+        const std::string what = e.what();
+        EXPECT_NE(what.find("no proof of optimality"), std::string::npos) << what;
+        EXPECT_NE(what.find("or 0.5 s"), std::string::npos) << what;
+        EXPECT_NE(what.find("% of optimal"), std::string::npos) << what;
+        EXPECT_NE(what.find("--solver heuristic"), std::string::npos) << what;
+    }
+    // The heuristic incumbent and the search together, well within a few seconds.
+    EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(), 10.0);
+}
+
 TEST(ExactSolver, SameOptimumAsTheNodeLevelSearchUpToTwelveCells) {
     for (unsigned seed = 500; seed < 530; ++seed) {
         const int cells = 4 + static_cast<int>(seed % 9); // 4..12
