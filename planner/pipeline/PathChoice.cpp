@@ -39,8 +39,9 @@ ChosenPath choosePathByTime(const PreparedPlan& prepared, const Query& query, So
     double fastest = bestTime;
     int fastestIndex = -1;
     CoveragePath fastestPath;
+    WalkEvaluation fastestEvaluation;
     for (size_t i = 0; i < alternatives.size(); ++i) {
-        const WalkEvaluation check = evaluateWalk(graph, query, alternatives[i]);
+        WalkEvaluation check = evaluateWalk(graph, query, alternatives[i]);
         if (!check.connected || !check.coversAllRequired)
             continue; // never trusted blindly, as for the solver's own walk
         CoveragePath path = buildCoveragePath(dec, graph, alternatives[i], start, end);
@@ -49,6 +50,7 @@ ChosenPath choosePathByTime(const PreparedPlan& prepared, const Query& query, So
             fastest = time;
             fastestIndex = static_cast<int>(i);
             fastestPath = std::move(path);
+            fastestEvaluation = std::move(check);
         }
     }
     if (fastestIndex < 0) {
@@ -67,11 +69,9 @@ ChosenPath choosePathByTime(const PreparedPlan& prepared, const Query& query, So
             return chosen;
         }
     }
-    const Walk& walk = alternatives[static_cast<size_t>(fastestIndex)];
-    const WalkEvaluation evaluation = evaluateWalk(graph, query, walk);
-    solution.walk = walk;
-    solution.cellOrder = evaluation.cellOrder;
-    solution.graphCost = evaluation.graphCost;
+    solution.walk = std::move(alternatives[static_cast<size_t>(fastestIndex)]);
+    solution.cellOrder = std::move(fastestEvaluation.cellOrder);
+    solution.graphCost = fastestEvaluation.graphCost;
     // The bound still holds for every walk; optimality is the chosen walk's own.
     solution.provenOptimal =
         solution.lowerBound >= 0.0 && !(solution.lowerBound < solution.graphCost - 1e-9);

@@ -80,6 +80,9 @@ Solution solveExact(const CornerGraph& graph, const Query& query, const ExactOpt
                              ? solveGreedy(graph, query)
                              : solveHeuristic(graph, query, {control.cancelled, {}});
     incumbent.solver = kName;
+    // Exact answers one walk, optimal for the graph cost: the heuristic's alternatives (for a
+    // path-time choice) would let the pipeline swap in a walk that is not.
+    incumbent.alternatives.clear();
     const double upper = incumbent.graphCost * (1.0 + 1e-12) + 1e-9;
     throwIfCancelled(control, kName);
 

@@ -97,10 +97,10 @@ Solution solveHeuristic(const CornerGraph& graph, const Query& query, const Solv
     tour.iterate(proxyKicks(tasks), control);
     reportProgress(control, 0.6);
 
-    // The true-cost polish of the proxy optimum and, on small instances, of the greedy walk
-    // (which already reflects the covered state at every step); the cheaper walk wins.
     // Nearest uncovered cell next: a polish start, the fallback and an alternative.
     Solution greedy = solveGreedy(graph, query);
+    // The true-cost polish of the proxy optimum and, on small instances, of the greedy walk
+    // (which already reflects the covered state at every step); the cheaper walk wins.
     std::vector<int> best;
     double bestCost = kInfinity;
     std::vector<OrderPolish::LocalOptimum> optima; // of every start, for the path choice

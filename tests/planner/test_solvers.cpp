@@ -515,7 +515,12 @@ TEST(ExactSolver, ProvesTwentySixCellsOfTheWard) {
     const Solution exact = solveExact(prepared.graph, query);
     expectValid(prepared.graph, query, exact);
     EXPECT_TRUE(exact.provenOptimal);
-    EXPECT_LE(exact.graphCost, solveHeuristic(prepared.graph, query).graphCost + 1e-9);
+    const Solution heuristic = solveHeuristic(prepared.graph, query);
+    EXPECT_LE(exact.graphCost, heuristic.graphCost + 1e-9);
+    // It starts from the heuristic's walk but answers only its optimal walk: no alternatives
+    // for the pipeline's path-time choice to swap in.
+    EXPECT_FALSE(heuristic.alternatives.empty());
+    EXPECT_TRUE(exact.alternatives.empty());
 }
 
 TEST(ExactSolver, RunsFastOnTwelveCells) {
