@@ -26,8 +26,71 @@ std::string summaryLine(const std::string& format, const ImportResult& r) {
         line << "[" << r.robotStartPose->x << "," << r.robotStartPose->y << "]";
     else
         line << "null";
+    if (r.cleaning) {
+        const MapCleaningReport& c = *r.cleaning;
+        char cleaning[512];
+        std::snprintf(cleaning, sizeof cleaning,
+                      ",\"cleaning\":{\"cells\":[%d,%d],\"resolution\":%g,\"unknown_cells\":%lld,"
+                      "\"specks_removed\":%d,\"speck_area\":%.3f,\"fragments_dropped\":%d,"
+                      "\"fragment_area\":%.3f,\"smoothed_area\":%.3f,\"opened_area\":%.3f,\"closed_"
+                      "area\":%.3f,"
+                      "\"free_area_before\":%.3f,\"free_area_after\":%.3f,"
+                      "\"vertices_traced\":%d,\"vertices_kept\":%d}",
+                      c.width, c.height, c.resolution, c.unknownCells, c.specksRemoved, c.speckArea,
+                      c.fragmentsDropped, c.fragmentArea, c.smoothedArea, c.openedArea,
+                      c.closedArea, c.freeAreaBefore, c.freeAreaAfter, c.verticesTraced,
+                      c.verticesKept);
+        line << cleaning;
+    }
     line << "}";
     return line.str();
+}
+
+double nonNegative(const Arguments& args, const std::string& name, double fallback) {
+    const auto value = args.number(name);
+    if (!value)
+        return fallback;
+    if (!(*value >= 0))
+        throw InputError(name + " must be 0 or a positive number");
+    return *value;
+}
+
+// Occupancy-map cleaning and room segmentation (issue 15).
+void mapOptionsFrom(const Arguments& args, ImportOptions& options) {
+    MapCleaningOptions& c = options.cleaning;
+    c.enabled = !args.has("--no-cleaning");
+    if (auto smooth = args.text("--smooth")) {
+        if (*smooth != "on" && *smooth != "off")
+            throw InputError("--smooth " + *smooth + ": expected on or off");
+        c.smoothEdges = *smooth == "on";
+    }
+    if (auto unknown = args.text("--unknown")) {
+        if (*unknown != "wall" && *unknown != "free")
+            throw InputError("--unknown " + *unknown + ": expected wall or free");
+        c.unknownIsFree = *unknown == "free";
+    }
+    c.speckleArea = nonNegative(args, "--speckle", c.speckleArea);
+    c.fragmentArea = nonNegative(args, "--fragment", c.fragmentArea);
+    c.openingRadius = nonNegative(args, "--opening", c.openingRadius);
+    c.closingRadius = nonNegative(args, "--closing", c.closingRadius);
+    if (auto diameter = args.number("--robot-diameter")) {
+        if (!(*diameter > 0 && *diameter < 100))
+            throw InputError("--robot-diameter must be a positive size in metres");
+        options.robotDiameter = *diameter;
+    }
+    if (auto rooms = args.text("--segment-rooms")) {
+        if (*rooms == "none")
+            options.roomSegmentation.method = RoomSegmentationMethod::None;
+        else if (*rooms == "distance")
+            options.roomSegmentation.method = RoomSegmentationMethod::Distance;
+        else if (*rooms == "morphological")
+            options.roomSegmentation.method = RoomSegmentationMethod::Morphological;
+        else
+            throw InputError("--segment-rooms " + *rooms +
+                             ": expected distance, morphological or none");
+    }
+    options.roomSegmentation.minRoomArea =
+        nonNegative(args, "--min-room", options.roomSegmentation.minRoomArea);
 }
 
 ImportOptions optionsFrom(const Arguments& args) {
@@ -43,8 +106,8 @@ ImportOptions optionsFrom(const Arguments& args) {
     }
     if (auto gap = args.number("--gap"))
         options.gapTolerance = *gap;
-    if (auto simplify = args.number("--simplify"))
-        options.simplifyTolerance = *simplify;
+    options.simplifyTolerance = nonNegative(args, "--simplify", options.simplifyTolerance);
+    mapOptionsFrom(args, options);
     if (auto epsg = args.integer("--epsg"))
         options.epsg = static_cast<int>(*epsg);
     if (auto storey = args.text("--storey"))
@@ -60,9 +123,13 @@ ImportOptions optionsFrom(const Arguments& args) {
 } // namespace
 
 int commandImport(const Arguments& args) {
-    args.allowOnly({"--out", "--boundary-layers", "--obstacle-layers", "--room-layers",
-                    "--ignore-layers", "--units", "--gap", "--simplify", "--epsg", "--storey",
-                    "--height"});
+    args.allowOnly({"--out",           "--boundary-layers", "--obstacle-layers",
+                    "--room-layers",   "--ignore-layers",   "--units",
+                    "--gap",           "--simplify",        "--epsg",
+                    "--storey",        "--height",          "--no-cleaning",
+                    "--unknown",       "--speckle",         "--fragment",
+                    "--opening",       "--closing",         "--robot-diameter",
+                    "--segment-rooms", "--min-room"});
     if (args.positional().size() != 1)
         throw InputError("import needs exactly one FILE (see floorcover-cli --help)");
     const std::string& path = args.positional()[0];

@@ -172,6 +172,12 @@ Polyline ClearanceField::findPath(Vec2 a, Vec2 b, const std::vector<Vec2>& hints
         Polyline path = searchWindow(a, b, window, hints);
         if (!path.empty())
             return path;
+        // Before searching wider: provably apart? (cheap once the grid exists)
+        if (round == 0) {
+            const int ra = openRegionOf(a), rb = openRegionOf(b);
+            if (ra >= 0 && rb >= 0 && ra != rb)
+                return {};
+        }
         const bool coversAll = window.minX <= extent_.minX && window.minY <= extent_.minY &&
                                window.maxX >= extent_.maxX && window.maxY >= extent_.maxY;
         if (coversAll || margin >= maxMargin)
@@ -179,6 +185,13 @@ Polyline ClearanceField::findPath(Vec2 a, Vec2 b, const std::vector<Vec2>& hints
         margin = std::min(3 * margin, maxMargin);
     }
     return {};
+}
+
+int ClearanceField::openRegionOf(Vec2 p) const {
+    std::call_once(regionsBuilt_, [this] {
+        regions_ = std::make_unique<OpenRegions>(walls_, extent_, radius_ - acceptance_);
+    });
+    return regions_->regionOf(p);
 }
 
 Polyline ClearanceField::searchWindow(Vec2 a, Vec2 b, const BoundingBox& window,

@@ -4,9 +4,11 @@
 // which part of a vertical line is clear, and a short collision-free path between two clear points.
 #pragma once
 
+#include "geometry/OpenRegions.h"
 #include "geometry/SegmentIndex.h"
 
 #include <cmath>
+#include <memory>
 #include <mutex>
 #include <utility>
 #include <vector>
@@ -47,6 +49,10 @@ public:
     Polyline findPath(Vec2 a, Vec2 b, const std::vector<Vec2>& hints = {},
                       double maxMargin = INFINITY) const;
 
+    // The open region (see OpenRegions) of p, built on first use (thread-safe); two clear
+    // points in different regions cannot be joined. -1: p is in no open cell.
+    int openRegionOf(Vec2 p) const;
+
 private:
     Polyline searchWindow(Vec2 a, Vec2 b, const BoundingBox& window,
                           const std::vector<Vec2>& hints) const;
@@ -62,6 +68,8 @@ private:
     mutable std::once_flag cornersBuilt_;
     mutable std::vector<Vec2> cornerPoints_; // clear points hugging wall corners
     BoundingBox extent_;
+    mutable std::once_flag regionsBuilt_;
+    mutable std::unique_ptr<OpenRegions> regions_;
 };
 
 } // namespace fc

@@ -9,7 +9,6 @@ namespace {
 // Node pairs tried per component (nearest first), and the work bound on the pair search.
 constexpr size_t kPairsTried = 6;
 constexpr size_t kMaxPairScan = 4'000'000;
-
 } // namespace
 
 std::vector<int> graphComponents(const CornerGraph& g, int& count) {
@@ -56,15 +55,37 @@ int bridgeComponents(CornerGraph& graph, const ClearanceField& field) {
     std::stable_sort(order.begin(), order.end(),
                      [&](int a, int b) { return members[a].size() > members[b].size(); });
     std::vector<int> trunk = members[order.front()];
+    std::vector<char> trunkRegion;
+    auto addToTrunkRegions = [&](const std::vector<int>& nodes) {
+        for (int v : nodes) {
+            const int region = field.openRegionOf(graph.nodes[v].position);
+            if (region < 0)
+                continue;
+            if (static_cast<size_t>(region) >= trunkRegion.size())
+                trunkRegion.resize(region + 1, 0);
+            trunkRegion[region] = 1;
+        }
+    };
+    auto inTrunkRegion = [&](int v) {
+        const int region = field.openRegionOf(graph.nodes[v].position);
+        return region < 0 ||
+               (static_cast<size_t>(region) < trunkRegion.size() && trunkRegion[region]);
+    };
+    addToTrunkRegions(trunk);
     int added = 0;
     for (size_t k = 1; k < order.size(); ++k) {
         const std::vector<int>& part = members[order[k]];
+        if (std::none_of(part.begin(), part.end(), inTrunkRegion))
+            continue; // no clear path can reach it
         const size_t stride = std::max<size_t>(1, part.size() * trunk.size() / kMaxPairScan + 1);
         std::vector<std::pair<double, std::pair<int, int>>> pairs;
         for (size_t i = 0; i < part.size(); i += stride)
             for (int t : trunk)
-                pairs.push_back({distance(graph.nodes[part[i]].position, graph.nodes[t].position),
-                                 {t, part[i]}});
+                if (field.openRegionOf(graph.nodes[part[i]].position) ==
+                    field.openRegionOf(graph.nodes[t].position))
+                    pairs.push_back(
+                        {distance(graph.nodes[part[i]].position, graph.nodes[t].position),
+                         {t, part[i]}});
         const size_t keep = std::min(pairs.size(), kPairsTried);
         std::partial_sort(pairs.begin(), pairs.begin() + keep, pairs.end());
         for (size_t i = 0; i < keep; ++i) {
@@ -81,6 +102,7 @@ int bridgeComponents(CornerGraph& graph, const ClearanceField& field) {
             graph.addEdge(std::move(edge));
             ++added;
             trunk.insert(trunk.end(), part.begin(), part.end());
+            addToTrunkRegions(part);
             break;
         }
     }

@@ -22,6 +22,48 @@ struct LayerMapping {
     std::vector<std::string> ignored;
 };
 
+// Occupancy maps (issue 15): how the SLAM map is cleaned before it is traced. Defaults suit
+// 2-10 cm cells; every step can be switched off (a radius or area of 0).
+struct MapCleaningOptions {
+    bool enabled = true;        // false: every free cell is traced as it is
+    bool unknownIsFree = false; // unknown cells (between the thresholds) as floor, not wall
+    double speckleArea = 0.1;   // m^2: obstacle specks smaller than this become floor
+    bool smoothEdges = true;    // a 3 x 3 majority vote on ragged wall edges (on maps with
+                                // cells of at most a sixth of the robot's diameter)
+    double fragmentArea = 0.5;  // m^2: free islands smaller than this are dropped
+    double openingRadius = -1;  // m: free slivers and wall notches narrower than twice this
+                                // are filled; negative: the robot's radius (what its body
+                                // cannot enter; its swath still reaches W/2 from its centre)
+    double closingRadius = 0;   // m: obstacles thinner than twice this vanish (0: off, as
+                                // interior walls in laser maps are often a cell or two thick)
+    double simplifyCells = 0.45; // Douglas-Peucker tolerance in cells (below half a cell, so
+                                 // that a wall keeps both ends of its traced corners)
+};
+
+// Occupancy maps: splitting the free space into rooms at doorways.
+enum class RoomSegmentationMethod { None, Distance, Morphological };
+struct RoomSegmentationOptions {
+    RoomSegmentationMethod method = RoomSegmentationMethod::Distance;
+    double minRoomArea = 1.0; // m^2: smaller room cores (alcoves, door recesses) join a room
+};
+
+// What cleaning removed, for the import report.
+struct MapCleaningReport {
+    int width = 0, height = 0;
+    double resolution = 0;
+    long long unknownCells = 0;
+    int specksRemoved = 0;
+    double speckArea = 0; // m^2
+    int fragmentsDropped = 0;
+    double fragmentArea = 0; // m^2
+    double openedArea = 0;   // m^2 of free space filled by the opening
+    double closedArea = 0;   // m^2 of obstacle turned into floor by the closing
+    double smoothedArea = 0; // m^2 of floor gained (negative: lost) by smoothing the edges
+    double freeAreaBefore = 0, freeAreaAfter = 0;
+    int verticesTraced = 0, verticesKept = 0;
+    int rooms = 0;
+};
+
 struct ImportOptions {
     LayerMapping layers;
     std::optional<double> metresPerUnit; // overrides the file's own unit ($INSUNITS, ...)
@@ -32,7 +74,10 @@ struct ImportOptions {
     double sliceHeight = 0.3;     // m above the storey's floor
     bool ignoreDoorLeaves = true; // door panels do not block the section
     // Occupancy maps
-    double simplifyTolerance = 0.05; // m, Douglas-Peucker on the traced free-space outline
+    double simplifyTolerance = -1; // m, Douglas-Peucker; negative: MapCleaningOptions' cells
+    MapCleaningOptions cleaning;
+    RoomSegmentationOptions roomSegmentation;
+    double robotDiameter = 0.6; // m: ties the cleaning radii to the robot
 };
 
 // What the source held, for an import dialog to offer before the final import.
@@ -45,8 +90,9 @@ struct ImportPreview {
 
 struct ImportResult {
     Project project;
-    std::vector<std::string> warnings;  // stray segments, dropped entities, unit guesses...
-    std::optional<Vec2> robotStartPose; // occupancy maps: the robot's recorded pose, if any
+    std::vector<std::string> warnings;         // stray segments, dropped entities, unit guesses...
+    std::optional<Vec2> robotStartPose;        // occupancy maps: the robot's recorded pose, if any
+    std::optional<MapCleaningReport> cleaning; // occupancy maps: what cleaning did
 };
 
 // Reads FILE, choosing the importer from its extension (or its content for .yaml/.json).

@@ -81,8 +81,11 @@ struct GreyImage {
     std::vector<unsigned char> grey;
     std::vector<unsigned char> alpha; // empty: opaque
 };
-GreyImage readPgm(const std::string& bytes);          // P2 / P5
-GreyImage readImageWithGdal(const std::string& path); // PNG, BMP, ...: averaged channels
+// 1- to 16-bit images scaled to 0..255 (white = the largest value of the bit depth).
+GreyImage readPgm(const std::string& bytes);          // PGM P2 / P5, PBM P1 / P4
+GreyImage readImageWithGdal(const std::string& path); // PNG, BMP, TIFF: palettes expanded,
+                                                      // colour channels averaged
+GreyImage readMapImage(const std::string& path);      // by extension: .pgm/.pbm or GDAL
 
 // GDAL's drivers registered once; its error handler silenced (messages are read back).
 void ensureGdal();

@@ -124,8 +124,16 @@ RosMapInfo parseRosMapYaml(const std::string& text) {
         throw InputError("no \"image:\" key: not a ROS map_server map");
     if (!hasResolution || !(info.resolution > 0 && info.resolution < 1e4))
         throw InputError("resolution: missing or not a positive size in metres");
+    if (info.resolution < 0.001 || info.resolution > 1.0)
+        throw InputError("resolution: " + std::to_string(info.resolution) +
+                         " m per cell is not an occupancy map's (1 mm to 1 m)");
     if (!hasOrigin)
         throw InputError("origin: missing (expected [x, y, yaw])");
+    // Beyond any map frame, UTM included (northings stay below 10,000 km).
+    if (std::abs(info.origin.x) > 2e7 || std::abs(info.origin.y) > 2e7 || std::abs(info.yaw) > 100)
+        throw InputError("origin: [" + std::to_string(info.origin.x) + ", " +
+                         std::to_string(info.origin.y) + ", " + std::to_string(info.yaw) +
+                         "] is far outside any map frame");
     if (!(info.freeThresh >= 0 && info.freeThresh < info.occupiedThresh &&
           info.occupiedThresh <= 1))
         throw InputError("thresholds: need 0 <= free_thresh < occupied_thresh <= 1");
@@ -162,10 +170,12 @@ GreyImage readPgm(const std::string& bytes) {
         return std::stol(t);
     };
     const std::string magic = token();
-    if (magic != "P2" && magic != "P5")
-        throw InputError("not a PGM image (expected P2 or P5)");
+    if (magic != "P2" && magic != "P5" && magic != "P1" && magic != "P4")
+        throw InputError("not a PGM or PBM image (expected P1, P2, P4 or P5)");
+    const bool bitmap = magic == "P1" || magic == "P4"; // PBM: 1 is black
     GreyImage image;
-    const long width = integer("width"), height = integer("height"), maxval = integer("maxval");
+    const long width = integer("width"), height = integer("height");
+    const long maxval = bitmap ? 1 : integer("maxval");
     if (width < 1 || height < 1 || maxval < 1 || maxval > 65535)
         throw InputError("PGM header: bad size or maxval");
     if (static_cast<long long>(width) * height > kMaxMapPixels)
@@ -176,7 +186,33 @@ GreyImage readPgm(const std::string& bytes) {
     auto scaled = [&](long v) {
         return static_cast<unsigned char>(std::lround(255.0 * std::min(v, maxval) / maxval));
     };
-    if (magic == "P5") {
+    if (magic == "P4") { // rows of packed bits, each row padded to a whole byte
+        ++at;
+        const size_t rowBytes = (static_cast<size_t>(width) + 7) / 8;
+        if (bytes.size() < at + rowBytes * static_cast<size_t>(height))
+            throw InputError("PBM data truncated");
+        image.grey.resize(pixels);
+        for (long y = 0; y < height; ++y)
+            for (long x = 0; x < width; ++x) {
+                const auto byte = static_cast<unsigned char>(bytes[at + y * rowBytes + x / 8]);
+                image.grey[y * width + x] = (byte >> (7 - x % 8)) & 1 ? 0 : 255;
+            }
+    } else if (magic == "P1") { // one digit per pixel, whitespace optional
+        image.grey.resize(pixels);
+        for (size_t i = 0; i < pixels; ++i) {
+            while (at < bytes.size() &&
+                   (std::isspace(static_cast<unsigned char>(bytes[at])) || bytes[at] == '#')) {
+                if (bytes[at] == '#')
+                    while (at < bytes.size() && bytes[at] != '\n')
+                        ++at;
+                else
+                    ++at;
+            }
+            if (at >= bytes.size() || (bytes[at] != '0' && bytes[at] != '1'))
+                throw InputError("PBM data truncated or not 0/1");
+            image.grey[i] = bytes[at++] == '1' ? 0 : 255;
+        }
+    } else if (magic == "P5") {
         ++at; // the single whitespace after maxval
         const size_t size = maxval > 255 ? 2 : 1;
         if (bytes.size() < at + pixels * size)

@@ -1,5 +1,6 @@
 #include "pipeline/PerRoomSweep.h"
 
+#include "graph/ComponentBridges.h"
 #include "pipeline/PathChoice.h"
 
 #include <algorithm>
@@ -8,6 +9,7 @@
 #include <exception>
 #include <future>
 #include <limits>
+#include <sstream>
 
 namespace fc {
 namespace {
@@ -81,6 +83,22 @@ struct Group {
 };
 
 // Position of a node in the world frame.
+// Whether any cell of `rooms` lies in the part of the graph holding the point `at`.
+bool reachesAny(const PreparedPlan& prepared, const std::vector<std::string>& rooms, Vec2 at) {
+    const CornerGraph& g = prepared.graph;
+    const Decomposition& dec = prepared.decomposition;
+    int count = 0;
+    const std::vector<int> comp = graphComponents(g, count);
+    const int main = comp[nearestNode(g, dec.frame.toLocal(at))];
+    for (const GraphCell& c : g.cells) {
+        const std::string& room = dec.roomNames[c.room];
+        if (c.reachable && !c.nodes.empty() && comp[c.nodes.front()] == main &&
+            std::find(rooms.begin(), rooms.end(), room) != rooms.end())
+            return true;
+    }
+    return false;
+}
+
 Vec2 worldOf(const PreparedPlan& prepared, int node) {
     return prepared.decomposition.frame.toWorld(prepared.graph.nodes[node].position);
 }
@@ -237,6 +255,19 @@ PlanResult planWithRoomAngles(const PlanRequest& request,
     double lowerBound = 0.0;
     std::optional<Vec2> start = request.start, home = request.end;
     std::vector<std::string> required;
+    // The floor's main part (where the robot reaches the most of the selected rooms): the
+    // parts hand over inside it, so a room's pocket behind a gap narrower than the robot
+    // does not strand the rooms after it.
+    std::optional<Vec2> mainRegionAt = request.start;
+    if (!mainRegionAt) {
+        std::vector<std::string> allRooms, ignored;
+        for (const Group& group : groups)
+            allRooms.insert(allRooms.end(), group.rooms.begin(), group.rooms.end());
+        const PreparedPlan& any = groups[order.front()].prepared;
+        mainRegionAt = worldOf(
+            any,
+            makeQuery(any, allRooms, std::nullopt, std::nullopt, request.seed, ignored).startNode);
+    }
     for (size_t k = 0; k < order.size(); ++k) {
         Group& group = groups[order[k]];
         PlanPart part;
@@ -246,26 +277,67 @@ PlanResult planWithRoomAngles(const PlanRequest& request,
         // Each part ends at the next group's nearest corner; the last one at the end point,
         // or back where the first part started.
         Vec2 from;
+        // A room wholly in a pocket the robot cannot get into is left out, loudly.
+        if (!reachesAny(part.prepared, part.rooms, *mainRegionAt)) {
+            std::ostringstream msg;
+            msg << "room";
+            for (const std::string& room : part.rooms)
+                msg << (&room == &part.rooms.front() ? " " : ", ") << room;
+            msg << " cannot be reached from the start and is left out";
+            result.warnings.push_back(msg.str());
+            continue;
+        }
         if (start) {
             from = *start;
         } else { // the default start corner, found before the end is known
             std::vector<std::string> ignored;
             from = worldOf(part.prepared, makeQuery(part.prepared, part.rooms, start, std::nullopt,
-                                                    request.seed, ignored)
+                                                    request.seed, ignored, mainRegionAt)
                                               .startNode);
         }
         const std::optional<Vec2> end =
             k + 1 < order.size()
                 ? std::optional<Vec2>(entryPoint(groups[order[k + 1]], group.centre, from))
                 : home;
-        part.query =
-            makeQuery(part.prepared, part.rooms, start, end, request.seed, result.warnings);
-        if (k == 0 && !home)
+        // Hand-over points are the planner's own: they may move to where the robot gets.
+        part.query = makeQuery(part.prepared, part.rooms, start, end, request.seed, result.warnings,
+                               mainRegionAt, k + 1 < order.size() || !request.end);
+        if (!home)
             home = worldOf(part.prepared, part.query.startNode);
+        // A hand-over point the query moved (it lay in a pocket of this part's graph): the
+        // path joins the moved corner, and reaches it from the previous part by a transit.
+        const CornerGraph& graph = part.prepared.graph;
+        const Decomposition& dec = part.prepared.decomposition;
+        std::optional<Vec2> pathStart = start, pathEnd = end;
+        Polyline handOver;
+        if (k > 0 && start &&
+            part.query.startNode != nearestNode(graph, dec.frame.toLocal(*start))) {
+            pathStart = worldOf(part.prepared, part.query.startNode);
+            handOver =
+                dec.clearance().findPath(dec.frame.toLocal(*start), dec.frame.toLocal(*pathStart));
+            if (handOver.empty())
+                throw SolverError("the rooms cannot be joined: no collision-free way from " +
+                                  group.rooms.front() + "'s neighbour into it");
+        }
+        if (end && part.query.endNode != nearestNode(graph, dec.frame.toLocal(*end)))
+            pathEnd = worldOf(part.prepared, part.query.endNode);
         ChosenPath chosen = choosePathByTime(
             part.prepared, part.query,
-            runSolver(request.solver, part.prepared, part.query, request.modelPath, control), start,
-            end, part.rooms);
+            runSolver(request.solver, part.prepared, part.query, request.modelPath, control),
+            pathStart, pathEnd, part.rooms);
+        if (handOver.size() > 1) {
+            CoveragePath joined;
+            for (const Vec2& p : handOver) {
+                if (!joined.points.empty())
+                    joined.kinds.push_back(SegmentKind::Transit);
+                joined.points.push_back(dec.frame.toWorld(p));
+            }
+            for (size_t i = 1; i < chosen.path.points.size(); ++i) {
+                joined.kinds.push_back(chosen.path.kinds[i - 1]);
+                joined.points.push_back(chosen.path.points[i]);
+            }
+            chosen.path = std::move(joined);
+        }
         part.solution = std::move(chosen.solution);
         part.path = std::move(chosen.path);
         // The next part starts where this one ended.
@@ -291,6 +363,8 @@ PlanResult planWithRoomAngles(const PlanRequest& request,
     }
 
     throwIfCancelled(control); // before measuring the path
+    if (result.parts.empty())
+        throw InputError("no selected room can be reached from the start point");
     const PlanPart& first = result.parts.front();
     (void)t0;
     result.prepared = first.prepared;

@@ -49,12 +49,30 @@ bool solverNeedsClassicStages(const std::string& name) {
     return solver && solver->classicStages;
 }
 
-int defaultStartNode(const PreparedPlan& prepared, const std::vector<char>& required) {
-    // The corner of a required cell farthest from the centre of the required area: a corner
-    // of the floor, as a person would start, and the same corner whatever the plan's
-    // rotation or sweep frame (equally far corners are mirror images, which plan alike).
+int defaultStartNode(const PreparedPlan& prepared, const std::vector<char>& allRequired,
+                     int inPart) {
+    // Where the robot reaches the most floor: the part of the corner graph holding the most
+    // required area (a SLAM map's pockets behind gaps narrower than the robot are parts of
+    // their own). In it, the corner of a required cell farthest from the centre of the
+    // required area: a corner of the floor, as a person would start, and the same corner
+    // whatever the plan's rotation or sweep frame (equally far corners are mirror images,
+    // which plan alike).
     const Decomposition& dec = prepared.decomposition;
     const CornerGraph& g = prepared.graph;
+    int componentCount = 0;
+    const std::vector<int> comp = graphComponents(g, componentCount);
+    std::vector<double> componentArea(componentCount, 0.0);
+    for (const GraphCell& c : g.cells)
+        if (allRequired[c.id] && !c.nodes.empty())
+            componentArea[comp[c.nodes.front()]] += dec.cells[c.id].area();
+    const int largest =
+        inPart >= 0
+            ? inPart
+            : static_cast<int>(std::max_element(componentArea.begin(), componentArea.end()) -
+                               componentArea.begin());
+    std::vector<char> required(allRequired.size(), 0);
+    for (const GraphCell& c : g.cells)
+        required[c.id] = allRequired[c.id] && !c.nodes.empty() && comp[c.nodes.front()] == largest;
     double area = 0.0;
     Vec2 centre;
     for (const GraphCell& c : g.cells) {
@@ -87,7 +105,8 @@ int defaultStartNode(const PreparedPlan& prepared, const std::vector<char>& requ
 
 Query makeQuery(const PreparedPlan& prepared, const std::vector<std::string>& rooms,
                 std::optional<Vec2> start, std::optional<Vec2> end, std::uint64_t seed,
-                std::vector<std::string>& warnings) {
+                std::vector<std::string>& warnings, std::optional<Vec2> mainRegionAt,
+                bool endMayMove) {
     const Decomposition& dec = prepared.decomposition;
     const CornerGraph& g = prepared.graph;
     std::vector<char> roomSelected(dec.roomNames.size(), rooms.empty() ? 1 : 0);
@@ -111,15 +130,29 @@ Query makeQuery(const PreparedPlan& prepared, const std::vector<std::string>& ro
     if (std::none_of(q.required.begin(), q.required.end(), [](char r) { return r != 0; }))
         throw InputError("the selected rooms contain no area the robot can sweep");
 
-    if (start) {
-        q.startNode = nearestNode(g, dec.frame.toLocal(*start));
-    } else {
-        q.startNode = defaultStartNode(prepared, q.required);
-    }
-    q.endNode = end ? nearestNode(g, dec.frame.toLocal(*end)) : q.startNode;
-
     int componentCount = 0;
     const std::vector<int> comp = graphComponents(g, componentCount);
+    // The corner nearest p among those of component `only` (-1: any).
+    auto nearestIn = [&](Vec2 p, int only) {
+        int best = -1;
+        double bestDistance = INFINITY;
+        for (const GraphNode& node : g.nodes)
+            if ((only < 0 || comp[node.id] == only) && distance(node.position, p) < bestDistance)
+                bestDistance = distance(node.position, p), best = node.id;
+        return best;
+    };
+    const int mainPart = mainRegionAt ? comp[nearestNode(g, dec.frame.toLocal(*mainRegionAt))] : -1;
+    if (start && mainPart >= 0)
+        q.startNode = nearestIn(dec.frame.toLocal(*start), mainPart);
+    else if (start)
+        q.startNode = nearestNode(g, dec.frame.toLocal(*start));
+    else
+        q.startNode = defaultStartNode(prepared, q.required, mainPart);
+    if (q.startNode < 0)
+        throw InputError("no selected area can be reached from the start point");
+    q.endNode =
+        end ? nearestIn(dec.frame.toLocal(*end), endMayMove ? comp[q.startNode] : -1) : q.startNode;
+
     if (comp[q.endNode] != comp[q.startNode])
         throw InputError("the end point cannot be reached from the start point");
     int dropped = 0;

@@ -64,16 +64,23 @@ PreparedPlan preparePlan(const Plan& plan, const RobotProfile& robot, double str
 // Whether the named solver plans on PreparedPlan::classic (false for unknown names).
 bool solverNeedsClassicStages(const std::string& name);
 
-// The start corner when none is given: the corner of a required cell farthest from the
-// centre of the required area (the same corner at any rotation of the plan).
-int defaultStartNode(const PreparedPlan& prepared, const std::vector<char>& required);
+// The start corner when none is given: in the part of the graph with the most required
+// floor, the corner of a required cell farthest from the centre of the required area (the
+// same corner at any rotation of the plan).
+// inPart >= 0: only corners of that part of the graph (graphComponents' numbering).
+int defaultStartNode(const PreparedPlan& prepared, const std::vector<char>& required,
+                     int inPart = -1);
 
 // Required cells from room names, start/end snapped to the nearest corners. Cells that
 // cannot be reached from the start are left out with a warning. Throws InputError for
-// unknown rooms or an end that cannot be reached.
+// unknown rooms or an end that cannot be reached. For points the planner chose itself (where
+// one room's part hands over to the next), mainRegionAt names a point of the floor's main
+// part: the start snaps to the nearest corner of the graph's part holding it, and the end
+// (endMayMove) to the nearest corner the start reaches.
 Query makeQuery(const PreparedPlan& prepared, const std::vector<std::string>& rooms,
                 std::optional<Vec2> start, std::optional<Vec2> end, std::uint64_t seed,
-                std::vector<std::string>& warnings);
+                std::vector<std::string>& warnings, std::optional<Vec2> mainRegionAt = {},
+                bool endMayMove = false);
 
 // Solver names accepted by runSolver, in the order the CLI lists them (the registry's:
 // solvers/SolverRegistry.h).

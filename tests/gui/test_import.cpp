@@ -40,6 +40,7 @@ private slots:
     void unreadableFileDisablesOk();
     void importReplacesThePlanAsOneUndoStep();
     void importOpensAsNewDocument();
+    void occupancyMapCleaningIsLive();
 };
 
 void ImportTest::initTestCase() {
@@ -116,6 +117,31 @@ void ImportTest::importOpensAsNewDocument() {
     QVERIFY(window->document()->fileName().isEmpty());
     QVERIFY(window->document()->isModified());
     QCOMPARE(window->document()->undoStack()->count(), 0);
+}
+
+// A real laser map (tests/data/real-maps): the cleaning steps are offered, change the
+// preview live, and their report is shown.
+void ImportTest::occupancyMapCleaningIsLive() {
+    ImportDialog dialog(QStringLiteral(FC_REAL_MAPS_DIR "/uwb-localization-demo.yaml"));
+    QVERIFY(dialog.mapOptionsShown());
+    QVERIFY2(dialog.result(), qPrintable(dialog.error()));
+    const size_t cleanedObstacles = dialog.result()->project.plan.obstacles.size();
+    QVERIFY(dialog.result()->cleaning);
+    QVERIFY(dialog.result()->cleaning->specksRemoved > 50);
+    QVERIFY(dialog.result()->project.plan.rooms.size() >= 2);
+    fc::MapCleaningOptions off;
+    off.enabled = false;
+    dialog.setMapCleaning(off);
+    QVERIFY2(dialog.result(), qPrintable(dialog.error()));
+    QVERIFY(dialog.result()->project.plan.obstacles.size() > 5 * cleanedObstacles);
+    dialog.setMapCleaning(fc::MapCleaningOptions{});
+    dialog.setRoomSegmentation(fc::RoomSegmentationMethod::None);
+    QVERIFY2(dialog.result(), qPrintable(dialog.error()));
+    QCOMPARE(dialog.result()->project.plan.obstacles.size(), cleanedObstacles);
+    QVERIFY(dialog.result()->project.plan.rooms.empty());
+    // A DXF drawing offers no map cleaning.
+    ImportDialog drawing(kOffice);
+    QVERIFY(!drawing.mapOptionsShown());
 }
 
 QTEST_MAIN(ImportTest)

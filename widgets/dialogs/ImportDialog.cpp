@@ -11,6 +11,7 @@
 #include <QGraphicsPolygonItem>
 #include <QGraphicsScene>
 #include <QGraphicsView>
+#include <QGroupBox>
 #include <QHBoxLayout>
 #include <QHeaderView>
 #include <QLabel>
@@ -72,6 +73,7 @@ ImportDialog::ImportDialog(const QString& path, QWidget* parent)
     auto* left = new QVBoxLayout;
     left->addWidget(layerTable_);
     left->addLayout(form);
+    left->addWidget(buildMapGroup());
     auto* right = new QVBoxLayout;
     right->addWidget(view_, 1);
     right->addWidget(summary_);
@@ -93,6 +95,7 @@ ImportDialog::ImportDialog(const QString& path, QWidget* parent)
         const bool cad = preview.format == "dxf" || preview.format == "wkt";
         units_->setEnabled(cad);
         gap_->setEnabled(preview.format == "dxf");
+        mapGroup_->setVisible(preview.format == "ros-map");
         buildLayerTable(preview);
     } catch (const InputError& e) {
         error_ = fromStd(e.what());
@@ -101,6 +104,77 @@ ImportDialog::ImportDialog(const QString& path, QWidget* parent)
     connect(units_, &QDoubleSpinBox::editingFinished, this, &ImportDialog::refresh);
     connect(gap_, &QDoubleSpinBox::editingFinished, this, &ImportDialog::refresh);
     refresh();
+}
+
+QGroupBox* ImportDialog::buildMapGroup() {
+    const ImportOptions defaults;
+    mapGroup_ = new QGroupBox(tr("Clean the map"), this);
+    mapGroup_->setCheckable(true);
+    mapGroup_->setChecked(defaults.cleaning.enabled);
+    mapGroup_->setVisible(false);
+    unknown_ = new QComboBox(mapGroup_);
+    unknown_->addItem(tr("Walls"), false);
+    unknown_->addItem(tr("Floor"), true);
+    auto spin = [this](double value, double max, const QString& suffix, const QString& tip) {
+        auto* box = new QDoubleSpinBox(mapGroup_);
+        box->setDecimals(3);
+        box->setRange(0.0, max);
+        box->setSingleStep(0.01);
+        box->setSuffix(suffix);
+        box->setValue(value);
+        box->setToolTip(tip);
+        connect(box, &QDoubleSpinBox::editingFinished, this, &ImportDialog::refresh);
+        return box;
+    };
+    speckle_ = spin(defaults.cleaning.speckleArea, 100, tr(" m²"),
+                    tr("Obstacle specks smaller than this become floor (sensor noise)"));
+    fragment_ = spin(defaults.cleaning.fragmentArea, 1000, tr(" m²"),
+                     tr("Free islands smaller than this are dropped"));
+    opening_ = spin(defaults.robotDiameter / 2, 5, tr(" m"),
+                    tr("Notches and slivers narrower than twice this are filled (the robot's "
+                       "radius: what its body cannot enter)"));
+    closing_ = spin(defaults.cleaning.closingRadius, 5, tr(" m"),
+                    tr("Obstacles thinner than twice this vanish (0: off; thin walls too)"));
+    rooms_ = new QComboBox(this);
+    rooms_->addItem(tr("At doorways (distance)"),
+                    static_cast<int>(RoomSegmentationMethod::Distance));
+    rooms_->addItem(tr("At doorways (morphological)"),
+                    static_cast<int>(RoomSegmentationMethod::Morphological));
+    rooms_->addItem(tr("One room"), static_cast<int>(RoomSegmentationMethod::None));
+    minRoom_ = spin(defaults.roomSegmentation.minRoomArea, 1000, tr(" m²"),
+                    tr("Smaller rooms (alcoves, door recesses) join a neighbour"));
+    auto* form = new QFormLayout(mapGroup_);
+    form->addRow(tr("Unknown cells are:"), unknown_);
+    form->addRow(tr("Remove specks below:"), speckle_);
+    form->addRow(tr("Drop islands below:"), fragment_);
+    form->addRow(tr("Fill notches up to:"), opening_);
+    form->addRow(tr("Remove obstacles up to:"), closing_);
+    form->addRow(tr("Split into rooms:"), rooms_);
+    form->addRow(tr("Smallest room:"), minRoom_);
+    connect(mapGroup_, &QGroupBox::toggled, this, &ImportDialog::refresh);
+    connect(unknown_, &QComboBox::currentIndexChanged, this, &ImportDialog::refresh);
+    connect(rooms_, &QComboBox::currentIndexChanged, this, &ImportDialog::refresh);
+    return mapGroup_;
+}
+
+bool ImportDialog::mapOptionsShown() const {
+    return mapGroup_ && !mapGroup_->isHidden();
+}
+
+void ImportDialog::setMapCleaning(const MapCleaningOptions& cleaning) {
+    const QSignalBlocker blockGroup(mapGroup_), blockUnknown(unknown_);
+    mapGroup_->setChecked(cleaning.enabled);
+    unknown_->setCurrentIndex(cleaning.unknownIsFree ? 1 : 0);
+    speckle_->setValue(cleaning.speckleArea);
+    fragment_->setValue(cleaning.fragmentArea);
+    if (cleaning.openingRadius >= 0)
+        opening_->setValue(cleaning.openingRadius);
+    closing_->setValue(cleaning.closingRadius);
+    refresh();
+}
+
+void ImportDialog::setRoomSegmentation(RoomSegmentationMethod method) {
+    rooms_->setCurrentIndex(rooms_->findData(static_cast<int>(method))); // refreshes
 }
 
 void ImportDialog::buildLayerTable(const ImportPreview& preview) {
@@ -169,6 +243,15 @@ ImportOptions ImportDialog::options() const {
     if (units_->isEnabled())
         options.metresPerUnit = units_->value();
     options.gapTolerance = gap_->value();
+    options.cleaning.enabled = mapGroup_->isChecked();
+    options.cleaning.unknownIsFree = unknown_->currentData().toBool();
+    options.cleaning.speckleArea = speckle_->value();
+    options.cleaning.fragmentArea = fragment_->value();
+    options.cleaning.openingRadius = opening_->value();
+    options.cleaning.closingRadius = closing_->value();
+    options.roomSegmentation.method =
+        static_cast<RoomSegmentationMethod>(rooms_->currentData().toInt());
+    options.roomSegmentation.minRoomArea = minRoom_->value();
     if (!mappingEdited_) // the layer-name guesses, as the combos show them
         return options;
     const QStringList names = layers();
@@ -213,6 +296,17 @@ void ImportDialog::refresh() {
                               .arg(freeAreaOf(plan), 0, 'f', 2)
                               .arg(plan.obstacles.size())
                               .arg(plan.rooms.size()));
+        if (const auto& c = result_->cleaning)
+            summary_->setText(
+                summary_->text() + QLatin1Char('\n') +
+                tr("Cleaning removed %1 specks (%2 m²) and %3 free islands (%4 m²); filling "
+                   "notches took %5 m², removing thin obstacles gave %6 m².")
+                    .arg(c->specksRemoved)
+                    .arg(c->speckArea, 0, 'f', 2)
+                    .arg(c->fragmentsDropped)
+                    .arg(c->fragmentArea, 0, 'f', 2)
+                    .arg(c->openedArea, 0, 'f', 2)
+                    .arg(c->closedArea, 0, 'f', 2));
     } else {
         summary_->setText(error_);
     }
@@ -232,8 +326,9 @@ void ImportDialog::drawPreview() {
         scene_->addPolygon(toPolygon(obstacle), pen, QColor(150, 150, 150));
     QPen roomPen(QColor(40, 120, 200), 0, Qt::DashLine);
     roomPen.setCosmetic(true);
-    for (const Room& room : plan.rooms)
-        scene_->addPolygon(toPolygon(room.outline), roomPen);
+    for (size_t i = 0; i < plan.rooms.size(); ++i) // tinted, so neighbours stand apart
+        scene_->addPolygon(toPolygon(plan.rooms[i].outline), roomPen,
+                           QColor::fromHsv(static_cast<int>(i * 137) % 360, 60, 255, 110));
     view_->fitInView(scene_->itemsBoundingRect(), Qt::KeepAspectRatio);
 }
 

@@ -1,6 +1,7 @@
 // File > Import: previews a DXF drawing, ROS occupancy map, WKT or GeoJSON file as a plan.
 // The user maps DXF layers to roles, sets the unit and the gap tolerance, sees the result
-// and its warnings, and chooses whether it replaces the current plan or opens as a new
+// and its warnings (for occupancy maps: the cleaning steps, what they removed and the rooms
+// found, live), and chooses whether it replaces the current plan or opens as a new
 // document. The setters are the dialog's API for tests and scripts; each re-imports.
 #pragma once
 
@@ -10,6 +11,8 @@
 #include <optional>
 
 class QCheckBox;
+class QComboBox;
+class QGroupBox;
 class QDialogButtonBox;
 class QDoubleSpinBox;
 class QGraphicsScene;
@@ -35,6 +38,10 @@ public:
     void setMetresPerUnit(double metres);
     void setGapTolerance(double metres);
     void setOpenAsNewDocument(bool newDocument);
+    // Occupancy maps: the cleaning steps and the room segmentation, each re-imports.
+    void setMapCleaning(const MapCleaningOptions& cleaning);
+    void setRoomSegmentation(RoomSegmentationMethod method);
+    bool mapOptionsShown() const;
     bool openAsNewDocument() const;
 
     ImportOptions options() const;
@@ -48,6 +55,7 @@ public slots:
 
 private:
     void buildLayerTable(const ImportPreview& preview);
+    QGroupBox* buildMapGroup();
     void drawPreview();
 
     QString path_;
@@ -63,6 +71,14 @@ private:
     QListWidget* warnings_;
     QLabel* summary_;
     QCheckBox* newDocument_;
+    QGroupBox* mapGroup_ = nullptr; // occupancy maps only
+    QComboBox* unknown_ = nullptr;
+    QDoubleSpinBox* speckle_ = nullptr;
+    QDoubleSpinBox* fragment_ = nullptr;
+    QDoubleSpinBox* opening_ = nullptr;
+    QDoubleSpinBox* closing_ = nullptr;
+    QComboBox* rooms_ = nullptr;
+    QDoubleSpinBox* minRoom_ = nullptr;
     QDialogButtonBox* buttons_;
 };
 

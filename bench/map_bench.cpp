@@ -1,0 +1,122 @@
+// Occupancy maps (issue 15): noisy maps rendered from the sample plans (seeded, ground truth
+// known) and real laser maps (tests/data/real-maps, from Debian's mrpt-common), imported
+// with the default cleaning and room segmentation, then planned with the default request.
+// Prints a Markdown table per kind (docs/formats.md holds a copy).
+//   floorcover-map-bench [--seeds N] [--real-only] [--noisy-only]
+#include "NoisyMap.h"
+#include "formats/FileIO.h"
+#include "formats/PlanIO.h"
+#include "importers/Import.h"
+#include "pipeline/Planner.h"
+
+#include <chrono>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <numeric>
+#include <string>
+
+using namespace fc;
+
+namespace {
+
+double seconds(std::chrono::steady_clock::time_point since) {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - since).count();
+}
+
+PlanResult planDefault(const Plan& plan) {
+    PlanRequest request;
+    request.plan = plan;
+    return planCoverage(request);
+}
+
+void noisyRows(int seeds) {
+    std::printf("| plan | seed | free area vs plan | obstacles | rooms found / true | room IoU "
+                "(mean, min) | extra m (map / plan) | extra vs plan | coverage | import s | "
+                "plan s |\n|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n");
+    const auto dir = std::filesystem::temp_directory_path() / "fc-map-bench";
+    std::filesystem::create_directories(dir);
+    for (const char* name : {"office", "ward", "simple", "room-obstacle", "room-notches"}) {
+        const Plan plan = loadProjectFile(std::string(FC_PLANS_DIR) + "/" + name + ".geojson").plan;
+        const PlanResult truth = planDefault(plan);
+        for (int seed = 1; seed <= seeds; ++seed) {
+            test::NoisyMapOptions options;
+            options.seed = static_cast<std::uint64_t>(seed);
+            const std::string yaml = test::renderNoisyMap(plan, options)
+                                         .write(dir.string(), name + std::to_string(seed));
+            auto t0 = std::chrono::steady_clock::now();
+            const ImportResult imported = importPlanFile(yaml);
+            const double importSeconds = seconds(t0);
+            const Plan& cleaned = imported.project.plan;
+            std::vector<double> ious = test::roomIoUs(plan, cleaned.rooms);
+            t0 = std::chrono::steady_clock::now();
+            const PlanResult result = planDefault(cleaned);
+            const double planSeconds = seconds(t0);
+            char iou[64] = "–";
+            if (!ious.empty())
+                std::snprintf(iou, sizeof iou, "%.3f, %.3f",
+                              std::accumulate(ious.begin(), ious.end(), 0.0) / ious.size(),
+                              *std::min_element(ious.begin(), ious.end()));
+            const double extra = result.metrics.length - result.metrics.ideal;
+            const double truthExtra = truth.metrics.length - truth.metrics.ideal;
+            std::printf("| %s | %d | %+.2f%% | %zu | %zu / %zu | %s | %.1f / %.1f | %+.0f%% | "
+                        "%.2f%% | %.2f | %.2f |\n",
+                        name, seed, 100.0 * (freeAreaOf(cleaned) / freeAreaOf(plan) - 1),
+                        cleaned.obstacles.size(), cleaned.rooms.size(), plan.rooms.size(), iou,
+                        extra, truthExtra, 100.0 * (extra / truthExtra - 1),
+                        100.0 * result.metrics.coverage, importSeconds, planSeconds);
+            std::fflush(stdout);
+        }
+    }
+}
+
+void realRows() {
+    std::printf("| map | cells | free m² | specks removed | obstacles | rooms | length m | ideal "
+                "m | extra / ideal | coverage | unreachable m² | import s | plan s |\n"
+                "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n");
+    for (const char* name : {"uwb-localization-demo", "localization-demo", "telecom-faculty"}) {
+        const std::string yaml = std::string(FC_REAL_MAPS_DIR) + "/" + name + ".yaml";
+        auto t0 = std::chrono::steady_clock::now();
+        const ImportResult imported = importPlanFile(yaml);
+        const double importSeconds = seconds(t0);
+        const MapCleaningReport& c = *imported.cleaning;
+        t0 = std::chrono::steady_clock::now();
+        const PlanResult result = planDefault(imported.project.plan);
+        const double planSeconds = seconds(t0);
+        const Metrics& m = result.metrics;
+        std::printf("| %s | %d×%d | %.0f | %d | %zu | %zu | %.0f | %.0f | %.0f%% | %.2f%% | %.1f "
+                    "| %.2f | %.2f |\n",
+                    name, c.width, c.height, c.freeAreaAfter, c.specksRemoved,
+                    imported.project.plan.obstacles.size(), imported.project.plan.rooms.size(),
+                    m.length, m.ideal, 100.0 * (m.length - m.ideal) / m.ideal, 100.0 * m.coverage,
+                    m.unreachableArea, importSeconds, planSeconds);
+        std::fflush(stdout);
+    }
+}
+
+} // namespace
+
+int main(int argc, char** argv) {
+    int seeds = 2;
+    bool real = true, noisy = true;
+    for (int i = 1; i < argc; ++i) {
+        if (!std::strcmp(argv[i], "--seeds") && i + 1 < argc)
+            seeds = std::atoi(argv[++i]);
+        else if (!std::strcmp(argv[i], "--real-only"))
+            noisy = false;
+        else if (!std::strcmp(argv[i], "--noisy-only"))
+            real = false;
+    }
+    try {
+        if (noisy)
+            noisyRows(seeds);
+        if (real) {
+            std::printf("\n");
+            realRows();
+        }
+    } catch (const std::exception& e) {
+        std::fprintf(stderr, "floorcover-map-bench: %s\n", e.what());
+        return 1;
+    }
+    return 0;
+}

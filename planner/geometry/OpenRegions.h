@@ -1,0 +1,33 @@
+// A coarse, conservative map of where a disc's centre can travel among walls: a grid cell is
+// open when its centre is within half a cell diagonal of being clear (distance to walls >=
+// r - h*sqrt(2)/2). Any clear point lies in an open cell (distance is 1-Lipschitz) and a
+// clear path passes through 8-adjacent open cells, so two clear points in different open
+// regions cannot be joined and the expensive visibility search can be skipped (on a SLAM
+// map with many pockets it would otherwise explore every corner of the floor for each
+// pocket). Points in one region may still be apart: the grid only proves separation.
+#pragma once
+
+#include "geometry/SegmentIndex.h"
+
+#include <vector>
+
+namespace fc {
+
+class OpenRegions {
+public:
+    // The grid over `extent` grown by r, cells of r/6 (coarser on very large floors).
+    OpenRegions(const SegmentIndex& walls, BoundingBox extent, double r);
+
+    // The open region holding p; -1 outside the grid or in a closed cell (never for a
+    // clear point inside the extent).
+    int regionOf(Vec2 p) const;
+
+private:
+    size_t index(int i, int j) const { return static_cast<size_t>(j) * nx_ + i; }
+    BoundingBox box_;
+    double h_ = 1;
+    int nx_ = 1, ny_ = 1;
+    std::vector<int> label_;
+};
+
+} // namespace fc

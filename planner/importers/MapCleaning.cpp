@@ -1,0 +1,133 @@
+// Cleaning a SLAM occupancy grid before it is traced (issue 15), with OpenCV's connected
+// components and morphology: sensor speckle, stray pixels and ragged wall edges would
+// otherwise each become an obstacle the coverage path has to zigzag around.
+#include "importers/OccupancyGrid.h"
+
+#include <algorithm>
+#include <cmath>
+#include <opencv2/imgproc.hpp>
+
+namespace fc::importing {
+
+namespace {
+
+double cellArea(const OccupancyGrid& grid) {
+    return grid.resolution * grid.resolution;
+}
+
+// Components of `mask` (255) smaller than `minCells` are set to `fill`; components touching
+// the image border are kept when `keepBorder` (the world outside the map). Returns the
+// count and the number of cells changed.
+std::pair<int, long long> removeSmallComponents(cv::Mat& mask, int minCells, bool keepBorder,
+                                                unsigned char fill, int connectivity) {
+    if (minCells <= 1)
+        return {0, 0};
+    cv::Mat labels, stats, centroids;
+    const int n =
+        cv::connectedComponentsWithStats(mask, labels, stats, centroids, connectivity, CV_32S);
+    std::vector<char> drop(n, 0);
+    int count = 0;
+    long long cells = 0;
+    for (int i = 1; i < n; ++i) {
+        const int x = stats.at<int>(i, cv::CC_STAT_LEFT), y = stats.at<int>(i, cv::CC_STAT_TOP);
+        const int w = stats.at<int>(i, cv::CC_STAT_WIDTH), h = stats.at<int>(i, cv::CC_STAT_HEIGHT);
+        const bool border = x == 0 || y == 0 || x + w == mask.cols || y + h == mask.rows;
+        const int area = stats.at<int>(i, cv::CC_STAT_AREA);
+        if (area < minCells && !(keepBorder && border)) {
+            drop[i] = 1;
+            ++count;
+            cells += area;
+        }
+    }
+    if (count > 0)
+        for (int r = 0; r < mask.rows; ++r) {
+            const int* label = labels.ptr<int>(r);
+            unsigned char* m = mask.ptr<unsigned char>(r);
+            for (int c = 0; c < mask.cols; ++c)
+                if (drop[label[c]])
+                    m[c] = fill;
+        }
+    return {count, cells};
+}
+
+// A disc of at most `radiusCells` (whole cells), so that no step reaches further than asked.
+cv::Mat disc(double radiusCells) {
+    const int r = static_cast<int>(std::floor(radiusCells + 1e-9));
+    return cv::getStructuringElement(cv::MORPH_ELLIPSE, cv::Size(2 * r + 1, 2 * r + 1));
+}
+
+int cellsOf(double area, const OccupancyGrid& grid) {
+    return static_cast<int>(std::ceil(std::max(area, 0.0) / cellArea(grid) - 1e-9));
+}
+
+} // namespace
+
+std::vector<unsigned char> cleanOccupancyGrid(const OccupancyGrid& grid,
+                                              const MapCleaningOptions& options,
+                                              double robotDiameter, MapCleaningReport& report) {
+    report.width = grid.width;
+    report.height = grid.height;
+    report.resolution = grid.resolution;
+    cv::Mat free(grid.height, grid.width, CV_8U);
+    long long freeCells = 0;
+    for (int r = 0; r < grid.height; ++r) {
+        unsigned char* row = free.ptr<unsigned char>(r);
+        for (int c = 0; c < grid.width; ++c) {
+            const unsigned char cell = grid.cells[static_cast<size_t>(r) * grid.width + c];
+            report.unknownCells += cell == kUnknown;
+            const bool isFree = cell == kFree || (cell == kUnknown && options.unknownIsFree);
+            row[c] = isFree ? 255 : 0;
+            freeCells += isFree;
+        }
+    }
+    report.freeAreaBefore = freeCells * cellArea(grid);
+    if (options.enabled) {
+        // Obstacle specks (8-connected, as a speck touching at a corner is one speck).
+        cv::Mat blocked = 255 - free;
+        const auto specks =
+            removeSmallComponents(blocked, cellsOf(options.speckleArea, grid), true, 0, 8);
+        report.specksRemoved = specks.first;
+        report.speckArea = specks.second * cellArea(grid);
+        free = 255 - blocked;
+        // Ragged wall edges: a 3 x 3 majority (median) vote flips lone cells both ways, so
+        // the notches and the bumps of a wall cancel out instead of biasing the area; a wall
+        // two cells thick survives it. Only on fine maps, where one cell is sensor noise and
+        // not a feature the robot has to respect.
+        if (options.smoothEdges && grid.resolution <= robotDiameter / 6.0) {
+            const int before = cv::countNonZero(free);
+            cv::medianBlur(free, free, 3);
+            report.smoothedArea = (cv::countNonZero(free) - before) * cellArea(grid);
+        }
+        if (options.closingRadius / grid.resolution >= 1.0) {
+            const int before = cv::countNonZero(free);
+            cv::morphologyEx(free, free, cv::MORPH_CLOSE,
+                             disc(options.closingRadius / grid.resolution));
+            report.closedArea = (cv::countNonZero(free) - before) * cellArea(grid);
+        }
+        const double opening =
+            options.openingRadius >= 0 ? options.openingRadius : robotDiameter / 2.0;
+        // Opening by at most the robot's radius removes only what its body cannot enter (its
+        // footprint is the opening by its radius); the swath, W/2 from its centre, could
+        // reach a little into what is filled, which the report counts.
+        if (opening / grid.resolution >= 1.0) {
+            const int before = cv::countNonZero(free);
+            cv::morphologyEx(free, free, cv::MORPH_OPEN, disc(opening / grid.resolution));
+            report.openedArea = (before - cv::countNonZero(free)) * cellArea(grid);
+        }
+        // Free islands (4-connected, as the tracer joins cells through edges only).
+        const auto fragments =
+            removeSmallComponents(free, cellsOf(options.fragmentArea, grid), false, 0, 4);
+        report.fragmentsDropped = fragments.first;
+        report.fragmentArea = fragments.second * cellArea(grid);
+    }
+    report.freeAreaAfter = cv::countNonZero(free) * cellArea(grid);
+    std::vector<unsigned char> out(static_cast<size_t>(grid.width) * grid.height);
+    for (int r = 0; r < grid.height; ++r) {
+        const unsigned char* row = free.ptr<unsigned char>(r);
+        for (int c = 0; c < grid.width; ++c)
+            out[static_cast<size_t>(r) * grid.width + c] = row[c] ? 1 : 0;
+    }
+    return out;
+}
+
+} // namespace fc::importing

@@ -1,0 +1,142 @@
+// The rooms of an occupancy map's segmentation as plan rooms: simple, disjoint outlines
+// (GEOS through OGR), since a plan's room is one ring and rooms may not overlap.
+#include "importers/MapTracing.h"
+
+#include <algorithm>
+#include <ogr_api.h>
+#include <ogr_geometry.h>
+
+namespace fc::importing {
+
+namespace {
+
+constexpr double kMinCells = 4.0; // pieces of rooms smaller than this are slivers
+
+double areaOf(const OGRGeometry* g) {
+    return OGR_G_Area(OGRGeometry::ToHandle(const_cast<OGRGeometry*>(g)));
+}
+
+std::unique_ptr<OGRPolygon> polygonOfRing(const OGRLinearRing& ring) {
+    auto polygon = std::make_unique<OGRPolygon>();
+    polygon->addRingDirectly(ring.clone());
+    return polygon;
+}
+
+const OGRPolygon* largestPolygon(const OGRGeometry* g) {
+    const OGRPolygon* best = nullptr;
+    auto consider = [&](const OGRGeometry* part) {
+        if (wkbFlatten(part->getGeometryType()) != wkbPolygon)
+            return;
+        auto* p = static_cast<const OGRPolygon*>(part);
+        if (!best || p->get_Area() > best->get_Area())
+            best = p;
+    };
+    if (auto* collection = dynamic_cast<const OGRGeometryCollection*>(g)) {
+        for (int i = 0; i < collection->getNumGeometries(); ++i)
+            consider(collection->getGeometryRef(i));
+    } else {
+        consider(g);
+    }
+    return best;
+}
+
+// Cuts `polygon` along vertical lines through its holes until no piece has a hole.
+void cutHoles(const OGRGeometry& g, double minArea, std::vector<GeometryPtr>& pieces) {
+    std::vector<const OGRPolygon*> parts;
+    if (auto* collection = dynamic_cast<const OGRGeometryCollection*>(&g)) {
+        for (int i = 0; i < collection->getNumGeometries(); ++i)
+            if (wkbFlatten(collection->getGeometryRef(i)->getGeometryType()) == wkbPolygon)
+                parts.push_back(static_cast<const OGRPolygon*>(collection->getGeometryRef(i)));
+    } else if (wkbFlatten(g.getGeometryType()) == wkbPolygon) {
+        parts.push_back(static_cast<const OGRPolygon*>(&g));
+    }
+    for (const OGRPolygon* part : parts) {
+        if (part->get_Area() < minArea)
+            continue;
+        if (part->getNumInteriorRings() == 0) {
+            pieces.emplace_back(part->clone());
+            continue;
+        }
+        OGREnvelope box, hole;
+        part->getEnvelope(&box);
+        part->getInteriorRing(0)->getEnvelope(&hole);
+        const double cut = (hole.MinX + hole.MaxX) / 2;
+        for (const auto& [x0, x1] : {std::pair{box.MinX - 1, cut}, std::pair{cut, box.MaxX + 1}}) {
+            OGRLinearRing ring;
+            ring.addPoint(x0, box.MinY - 1);
+            ring.addPoint(x1, box.MinY - 1);
+            ring.addPoint(x1, box.MaxY + 1);
+            ring.addPoint(x0, box.MaxY + 1);
+            ring.closeRings();
+            GeometryPtr half(part->Intersection(polygonOfRing(ring).get()));
+            if (half)
+                cutHoles(*half, minArea, pieces);
+        }
+    }
+}
+
+} // namespace
+
+std::vector<Room> roomsFromLabels(const std::vector<std::int32_t>& labels,
+                                  const std::vector<unsigned char>& free, int width, int height,
+                                  const OGRGeometry& kept, double tolerance,
+                                  const RosMapInfo& info) {
+    std::vector<GeometryPtr> regions; // each room's largest simplified part, with its holes
+    for (auto& [label, traced] : traceCells(labels, free, width, height)) {
+        if (label <= 0)
+            continue;
+        GeometryPtr g = simplifiedCells(*traced, tolerance);
+        if (const OGRPolygon* largest = largestPolygon(g.get()))
+            if (largest->Intersects(&kept))
+                regions.emplace_back(largest->clone());
+    }
+    // A hole of a room that holds no other room is an obstacle: the outline covers it.
+    std::vector<GeometryPtr> filled;
+    for (size_t i = 0; i < regions.size(); ++i) {
+        auto* polygon = static_cast<OGRPolygon*>(regions[i].get());
+        auto outline = polygonOfRing(*polygon->getExteriorRing());
+        for (int h = 0; h < polygon->getNumInteriorRings(); ++h) {
+            auto hole = polygonOfRing(*polygon->getInteriorRing(h));
+            const bool holdsRoom = std::any_of(regions.begin(), regions.end(), [&](auto& other) {
+                if (other.get() == regions[i].get() || !hole->Intersects(other.get()))
+                    return false;
+                GeometryPtr common(hole->Intersection(other.get()));
+                return common && areaOf(common.get()) >= kMinCells;
+            });
+            if (holdsRoom)
+                outline->addRingDirectly(polygon->getInteriorRing(h)->clone());
+        }
+        filled.push_back(std::move(outline));
+    }
+    // Disjoint (the staircases were simplified one room at a time), then without holes.
+    GeometryPtr taken = std::make_unique<OGRMultiPolygon>();
+    std::vector<std::pair<Vec2, Ring>> outlines;
+    for (GeometryPtr& region : filled) {
+        GeometryPtr own(region->Difference(taken.get()));
+        taken.reset(taken->Union(region.get()));
+        if (!own || !taken)
+            throw InputError("separating the rooms failed");
+        std::vector<GeometryPtr> pieces;
+        cutHoles(*own, kMinCells, pieces);
+        for (GeometryPtr& piece : pieces) {
+            std::vector<Polygon2> room;
+            collectPolygons(piece.get(), room);
+            if (room.empty() || room[0].shell.size() < 3)
+                continue;
+            toMapFrame(room, height, info);
+            Vec2 centre;
+            for (const Vec2& p : room[0].shell)
+                centre = centre + p * (1.0 / room[0].shell.size());
+            outlines.emplace_back(centre, std::move(room[0].shell));
+        }
+    }
+    std::sort(outlines.begin(), outlines.end(), [](const auto& a, const auto& b) {
+        return std::make_pair(-a.first.y, a.first.x) < std::make_pair(-b.first.y, b.first.x);
+    });
+    std::vector<Room> rooms;
+    for (auto& [centre, outline] : outlines)
+        rooms.push_back({"Room " + std::to_string(rooms.size() + 1), std::move(outline)});
+    return rooms;
+}
+
+} // namespace fc::importing

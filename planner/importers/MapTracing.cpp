@@ -1,0 +1,157 @@
+// Tracing occupancy grids with GDAL's polygonizer (cell edges, 4-connected) and smoothing
+// the traced staircase with GEOS (through OGR).
+#include "importers/MapTracing.h"
+
+#include <algorithm>
+#include <cmath>
+#include <gdal_alg.h>
+#include <gdal_priv.h>
+#include <memory>
+#include <ogrsf_frmts.h>
+
+namespace fc::importing {
+
+namespace {
+
+constexpr long long kMaxTracedPolygons = 200000;
+constexpr double kOpening = 0.05; // pixels
+
+int cancelWhenHuge(double, const char*, void* layer) {
+    return static_cast<OGRLayer*>(layer)->GetFeatureCount(FALSE) < kMaxTracedPolygons;
+}
+
+} // namespace
+
+// The cells of each value of `values` where `mask` is set, traced by GDAL's polygonizer along
+// the cell edges (4-connected), in pixel units (x right, y down): one geometry per value.
+std::map<std::int32_t, GeometryPtr> traceCells(const std::vector<std::int32_t>& values,
+                                               const std::vector<unsigned char>& mask, int width,
+                                               int height) {
+    GDALDriver* mem = GetGDALDriverManager()->GetDriverByName("MEM");
+    GDALDriver* memory = GetGDALDriverManager()->GetDriverByName("Memory");
+    if (!mem || !memory)
+        throw InputError("GDAL lacks its in-memory drivers");
+    DatasetPtr raster(mem->Create("", width, height, 2, GDT_Int32, nullptr));
+    GDALRasterBand* band = raster->GetRasterBand(1);
+    GDALRasterBand* maskBand = raster->GetRasterBand(2);
+    std::vector<std::int32_t> mask32(mask.begin(), mask.end());
+    if (band->RasterIO(GF_Write, 0, 0, width, height, const_cast<std::int32_t*>(values.data()),
+                       width, height, GDT_Int32, 0, 0, nullptr) != CE_None ||
+        maskBand->RasterIO(GF_Write, 0, 0, width, height, mask32.data(), width, height, GDT_Int32,
+                           0, 0, nullptr) != CE_None)
+        throw InputError("cannot hold the map image in memory");
+    DatasetPtr vector(memory->Create("", 0, 0, 0, GDT_Unknown, nullptr));
+    OGRLayer* layer = vector->CreateLayer("cells", nullptr, wkbPolygon, nullptr);
+    OGRFieldDefn field("value", OFTInteger);
+    layer->CreateField(&field);
+    if (GDALPolygonize(band, maskBand, layer, 0, nullptr, cancelWhenHuge, layer) != CE_None)
+        throw InputError(layer->GetFeatureCount(FALSE) >= kMaxTracedPolygons
+                             ? "the free space is split into more than 200000 pieces"
+                             : std::string("tracing the free space failed: ") +
+                                   CPLGetLastErrorMsg());
+    std::map<std::int32_t, GeometryPtr> traced;
+    layer->ResetReading();
+    while (std::unique_ptr<OGRFeature> feature{layer->GetNextFeature()}) {
+        GeometryPtr& all = traced[feature->GetFieldAsInteger(0)];
+        if (!all)
+            all = std::make_unique<OGRMultiPolygon>();
+        if (OGRGeometry* g = feature->StealGeometry())
+            static_cast<OGRMultiPolygon*>(all.get())->addGeometryDirectly(g);
+    }
+    return traced;
+}
+
+void toMapFrame(std::vector<Polygon2>& polygons, int imageHeight, const RosMapInfo& info) {
+    const double c = std::cos(info.yaw), s = std::sin(info.yaw);
+    auto place = [&](Vec2& p) {
+        const double x = p.x * info.resolution, y = (imageHeight - p.y) * info.resolution;
+        p = {info.origin.x + c * x - s * y, info.origin.y + s * x + c * y};
+    };
+    for (Polygon2& polygon : polygons) {
+        for (Vec2& p : polygon.shell)
+            place(p);
+        for (Ring& hole : polygon.holes)
+            for (Vec2& p : hole)
+                place(p);
+    }
+}
+
+int vertexCount(const OGRGeometry* g) {
+    std::vector<Polygon2> polygons;
+    collectPolygons(g, polygons);
+    size_t n = 0;
+    for (const Polygon2& p : polygons) {
+        n += p.shell.size();
+        for (const Ring& h : p.holes)
+            n += h.size();
+    }
+    return static_cast<int>(n);
+}
+
+namespace {
+
+// The staircase through the midpoints of its unit cell edges (sub-cell tracing): a wall
+// along the grid stays straight where it is, a slanted one lies within half a cell of its
+// true line, and Douglas-Peucker then keeps no staircase corner for a wall; a corner between
+// two longer runs (a room's corner) stays exact.
+OGRLinearRing* throughMidpoints(const OGRLinearRing& ring) {
+    auto* out = new OGRLinearRing;
+    const int n = ring.getNumPoints(); // closed: the last point repeats the first
+    auto edgeLength = [&](int i) {     // of the edge from point i
+        return std::hypot(ring.getX(i + 1) - ring.getX(i), ring.getY(i + 1) - ring.getY(i));
+    };
+    for (int i = 0; i + 1 < n; ++i) {
+        const double ax = ring.getX(i), ay = ring.getY(i);
+        const double dx = ring.getX(i + 1) - ax, dy = ring.getY(i + 1) - ay;
+        // A corner between two runs longer than a step is the shape's own corner: kept.
+        if (edgeLength(i) > 1.5 && edgeLength(i > 0 ? i - 1 : n - 2) > 1.5)
+            out->addPoint(ax, ay);
+        const int steps = std::max(1, static_cast<int>(std::lround(std::hypot(dx, dy))));
+        for (int k = 0; k < steps; ++k) {
+            const double t = (k + 0.5) / steps;
+            out->addPoint(ax + t * dx, ay + t * dy);
+        }
+    }
+    out->closeRings();
+    return out;
+}
+
+GeometryPtr midpointTrace(const OGRGeometry& traced) {
+    auto out = std::make_unique<OGRMultiPolygon>();
+    auto add = [&](const OGRPolygon& polygon) {
+        auto* p = new OGRPolygon;
+        p->addRingDirectly(throughMidpoints(*polygon.getExteriorRing()));
+        for (int h = 0; h < polygon.getNumInteriorRings(); ++h)
+            p->addRingDirectly(throughMidpoints(*polygon.getInteriorRing(h)));
+        out->addGeometryDirectly(p);
+    };
+    if (auto* collection = dynamic_cast<const OGRGeometryCollection*>(&traced)) {
+        for (int i = 0; i < collection->getNumGeometries(); ++i)
+            if (auto* polygon = dynamic_cast<const OGRPolygon*>(collection->getGeometryRef(i)))
+                add(*polygon);
+    } else if (auto* polygon = dynamic_cast<const OGRPolygon*>(&traced)) {
+        add(*polygon);
+    }
+    return out;
+}
+
+} // namespace
+
+// Douglas-Peucker on the traced outline through the cell edges' midpoints, keeping the
+// topology, then opened by a twentieth of a pixel: a hole touching the outline joins it
+// (the plan validation refuses rings that touch); convex corners are cut by 0.05 pixel.
+GeometryPtr simplifiedCells(const OGRGeometry& staircase, double tolerance) {
+    const GeometryPtr traced = midpointTrace(staircase);
+    // A tolerance of 0 still drops the collinear midpoints along each wall.
+    GeometryPtr g(traced->SimplifyPreserveTopology(std::max(tolerance, 1e-6)));
+    if (!g)
+        throw InputError("simplifying the free space failed");
+    GeometryPtr opened(g->Buffer(-kOpening, 1));
+    if (opened)
+        opened.reset(opened->Buffer(kOpening, 1));
+    if (!opened)
+        throw InputError("smoothing the free space failed");
+    return opened;
+}
+
+} // namespace fc::importing

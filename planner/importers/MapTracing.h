@@ -1,0 +1,38 @@
+// Internal to the occupancy-map importer: grids of cells traced into OGR polygons (GDAL's
+// polygonizer), simplified, placed in the map frame, and the rooms of a segmentation.
+// Include only from the importers' .cpp files.
+#pragma once
+
+#include "importers/OccupancyGrid.h"
+#include "importers/OgrSupport.h"
+
+#include <cstdint>
+#include <map>
+
+namespace fc::importing {
+
+// The cells of each value of `values` where `mask` is set, traced along the cell edges
+// (4-connected), in pixel units (x right, y down): one multipolygon per value.
+std::map<std::int32_t, GeometryPtr> traceCells(const std::vector<std::int32_t>& values,
+                                               const std::vector<unsigned char>& mask, int width,
+                                               int height);
+
+// Douglas-Peucker within `tolerance` pixels (topology kept), then opened by a twentieth of a
+// pixel so that a hole touching the outline at a pixel corner joins it.
+GeometryPtr simplifiedCells(const OGRGeometry& traced, double tolerance);
+
+int vertexCount(const OGRGeometry* g);
+
+// Pixel units to the map frame: origin + resolution, y up, rotated by the origin's yaw.
+void toMapFrame(std::vector<Polygon2>& polygons, int imageHeight, const RosMapInfo& info);
+
+// Rooms "Room 1".."Room n" from a segmentation's labels, numbered top to bottom, left to
+// right, as disjoint simple outlines inside `kept` (pixel units): obstacles inside a room are
+// part of its outline, a room that encloses another is cut in two, a room outside `kept` (a
+// dropped separate part) is left out.
+std::vector<Room> roomsFromLabels(const std::vector<std::int32_t>& labels,
+                                  const std::vector<unsigned char>& free, int width, int height,
+                                  const OGRGeometry& kept, double tolerance,
+                                  const RosMapInfo& info);
+
+} // namespace fc::importing
