@@ -56,10 +56,11 @@ commands:
                 [--simplify M] [--epsg N] [--storey S] [--height H]; warnings on stderr,
                 one JSON line (areas, obstacles, rooms, warnings, start) on stdout;
                 occupancy maps are cleaned (what was removed under "cleaning"):
-                [--unknown wall|free] [--speckle M2 (0.1)] [--smooth on|off] [--fragment M2 (0.5)]
+                [--unknown wall|free] [--speckle M2 (0.15)] [--smooth on|off] [--fragment M2 (0.5)]
                 [--opening M (robot diameter / 2)] [--closing M (0)] [--robot-diameter L]
                 [--no-cleaning] and split into rooms at doorways:
                 [--segment-rooms distance|morphological|none] [--min-room M2 (1)]
+                [--max-door M (1.6): rooms meeting along more are merged]
   export PLAN   write the path, the plan or its zones for robots and GIS: --out FILE
                 [--format geojson|wgs84-geojson|csv|json|ros-path|nav2|fields2cover|
                 vda5050|zones|svg|pdf|wkt] (default from the extension: .geojson .csv
@@ -297,9 +298,9 @@ int run(int argc, char** argv) {
     }
     const std::string command = argv[1];
     try {
-        const Arguments args(argc, argv, 2,
-                             {"--json", "--no-transition-cells", "--help", "--resume", "--strict",
-                              "--no-cleaning"});
+        const Arguments args(
+            argc, argv, 2,
+            {"--json", "--no-transition-cells", "--help", "--resume", "--strict", "--no-cleaning"});
         if (args.has("--help")) {
             std::cout << kUsage;
             return 0;

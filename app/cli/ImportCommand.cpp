@@ -91,6 +91,8 @@ void mapOptionsFrom(const Arguments& args, ImportOptions& options) {
     }
     options.roomSegmentation.minRoomArea =
         nonNegative(args, "--min-room", options.roomSegmentation.minRoomArea);
+    options.roomSegmentation.maxDoorWidth =
+        nonNegative(args, "--max-door", options.roomSegmentation.maxDoorWidth);
 }
 
 ImportOptions optionsFrom(const Arguments& args) {
@@ -129,7 +131,7 @@ int commandImport(const Arguments& args) {
                     "--storey",        "--height",          "--no-cleaning",
                     "--unknown",       "--speckle",         "--fragment",
                     "--opening",       "--closing",         "--robot-diameter",
-                    "--segment-rooms", "--min-room"});
+                    "--segment-rooms", "--min-room",        "--max-door"});
     if (args.positional().size() != 1)
         throw InputError("import needs exactly one FILE (see floorcover-cli --help)");
     const std::string& path = args.positional()[0];

@@ -87,8 +87,11 @@ std::vector<Room> roomsFromLabels(const std::vector<std::int32_t>& labels,
             continue;
         GeometryPtr g = simplifiedCells(*traced, tolerance);
         if (const OGRPolygon* largest = largestPolygon(g.get()))
-            if (largest->Intersects(&kept))
-                regions.emplace_back(largest->clone());
+            if (largest->Intersects(&kept)) {
+                GeometryPtr common(largest->Intersection(&kept));
+                if (common && areaOf(common.get()) >= kMinCells)
+                    regions.emplace_back(largest->clone());
+            }
     }
     // A hole of a room that holds no other room is an obstacle: the outline covers it.
     std::vector<GeometryPtr> filled;

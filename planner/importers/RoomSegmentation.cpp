@@ -6,6 +6,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
+#include <numeric>
 #include <opencv2/imgproc.hpp>
 
 namespace fc::importing {
@@ -76,6 +78,45 @@ int morphologicalCores(const cv::Mat& free, int minCells, int maxCells, cv::Mat&
         }
     }
     return rooms;
+}
+
+// Rooms that meet along more than a doorway's width are one room cut at a wide place (a
+// hall around a pillar, a corridor's bend): merged, and the labels renumbered 1..n.
+int mergeAcrossWideBorders(std::vector<std::int32_t>& labels, int width, int height, int rooms,
+                           double maxDoorCells) {
+    std::map<std::pair<int, int>, int> border; // cell edges between two rooms
+    for (int r = 0; r < height; ++r)
+        for (int c = 0; c < width; ++c) {
+            const int a = labels[static_cast<size_t>(r) * width + c];
+            if (a <= 0)
+                continue;
+            for (const auto& [dr, dc] : {std::pair{0, 1}, std::pair{1, 0}}) {
+                if (r + dr >= height || c + dc >= width)
+                    continue;
+                const int b = labels[static_cast<size_t>(r + dr) * width + c + dc];
+                if (b > 0 && b != a)
+                    ++border[{std::min(a, b), std::max(a, b)}];
+            }
+        }
+    std::vector<int> parent(rooms + 1);
+    std::iota(parent.begin(), parent.end(), 0);
+    auto find = [&](int x) {
+        while (parent[x] != x)
+            x = parent[x] = parent[parent[x]];
+        return x;
+    };
+    for (const auto& [pair, cells] : border)
+        if (cells > maxDoorCells)
+            parent[find(pair.first)] = find(pair.second);
+    std::vector<int> renumber(rooms + 1, 0);
+    int merged = 0;
+    for (int room = 1; room <= rooms; ++room)
+        if (find(room) == room)
+            renumber[room] = ++merged;
+    for (std::int32_t& label : labels)
+        if (label > 0)
+            label = renumber[find(label)];
+    return merged;
 }
 
 } // namespace
@@ -156,6 +197,9 @@ std::vector<std::int32_t> segmentRooms(const std::vector<unsigned char>& freeCel
             const int label = markers.at<int>(r, c);
             out[i] = label > 0 ? label : labelOfIndex[indices.at<int>(r, c)];
         }
+    if (options.maxDoorWidth > 0)
+        rooms =
+            mergeAcrossWideBorders(out, width, height, rooms, options.maxDoorWidth / resolution);
     return out;
 }
 

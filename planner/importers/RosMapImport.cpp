@@ -72,7 +72,11 @@ ImportResult importRosMap(const std::string& yamlPath, const ImportOptions& opti
     const double tolerance =
         options.simplifyTolerance >= 0
             ? options.simplifyTolerance / info.resolution
-            : (options.cleaning.enabled ? std::max(options.cleaning.simplifyCells, 0.0) : 0.0);
+            : (options.cleaning.enabled ? std::max({options.cleaning.simplifyCells,
+                                                    options.cleaning.simplifyRobotShare *
+                                                        options.robotDiameter / info.resolution,
+                                                    0.0})
+                                        : 0.0);
     report.verticesTraced = vertexCount(traced[1].get());
     GeometryPtr simple = simplifiedCells(*traced[1], tolerance);
     if (simple->IsEmpty())
@@ -84,12 +88,18 @@ ImportResult importRosMap(const std::string& yamlPath, const ImportOptions& opti
     const auto largest = std::max_element(polygons.begin(), polygons.end(), [](auto& a, auto& b) {
         return std::abs(ringArea(a.shell)) < std::abs(ringArea(b.shell));
     });
+    // With its holes: a free island inside an obstacle is not part of the kept floor.
     OGRPolygon kept;
-    auto* keptRing = new OGRLinearRing;
-    for (const Vec2& p : largest->shell)
-        keptRing->addPoint(p.x, p.y);
-    keptRing->closeRings();
-    kept.addRingDirectly(keptRing);
+    auto ringOf = [](const Ring& ring) {
+        auto* out = new OGRLinearRing;
+        for (const Vec2& p : ring)
+            out->addPoint(p.x, p.y);
+        out->closeRings();
+        return out;
+    };
+    kept.addRingDirectly(ringOf(largest->shell));
+    for (const Ring& hole : largest->holes)
+        kept.addRingDirectly(ringOf(hole));
     toMapFrame(polygons, image.height, info);
     ImportResult result;
     result.project.plan = planFromPolygons(std::move(polygons), "free space", result.warnings);
