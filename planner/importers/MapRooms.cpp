@@ -10,7 +10,8 @@ namespace fc::importing {
 
 namespace {
 
-constexpr double kMinCells = 4.0; // pieces of rooms smaller than this are slivers
+constexpr double kMinCells = 4.0;      // overlaps smaller than this are tracing noise
+constexpr double kMinPieceArea = 0.25; // m^2: a room piece smaller than this is a sliver
 
 double areaOf(const OGRGeometry* g) {
     return OGR_G_Area(OGRGeometry::ToHandle(const_cast<OGRGeometry*>(g)));
@@ -120,7 +121,10 @@ std::vector<Room> roomsFromLabels(const std::vector<std::int32_t>& labels,
         if (!own || !taken)
             throw InputError("separating the rooms failed");
         std::vector<GeometryPtr> pieces;
-        cutHoles(*own, kMinCells, pieces);
+        // Slivers left between rooms (below a quarter square metre) join a neighbour as free
+        // space outside every room does.
+        cutHoles(*own, std::max(kMinCells, kMinPieceArea / (info.resolution * info.resolution)),
+                 pieces);
         for (GeometryPtr& piece : pieces) {
             std::vector<Polygon2> room;
             collectPolygons(piece.get(), room);
