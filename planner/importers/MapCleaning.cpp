@@ -121,13 +121,8 @@ std::vector<unsigned char> cleanOccupancyGrid(const OccupancyGrid& grid,
         report.fragmentArea = fragments.second * cellArea(grid);
     }
     report.freeAreaAfter = cv::countNonZero(free) * cellArea(grid);
-    std::vector<unsigned char> out(static_cast<size_t>(grid.width) * grid.height);
-    for (int r = 0; r < grid.height; ++r) {
-        const unsigned char* row = free.ptr<unsigned char>(r);
-        for (int c = 0; c < grid.width; ++c)
-            out[static_cast<size_t>(r) * grid.width + c] = row[c] ? 1 : 0;
-    }
-    return out;
+    const cv::Mat ones = free / 255; // continuous: a new matrix
+    return std::vector<unsigned char>(ones.datastart, ones.dataend);
 }
 
 } // namespace fc::importing

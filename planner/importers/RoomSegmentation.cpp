@@ -128,10 +128,8 @@ std::vector<std::int32_t> segmentRooms(const std::vector<unsigned char>& freeCel
     std::vector<std::int32_t> out(freeCells.size(), 0);
     if (options.method == RoomSegmentationMethod::None)
         return out;
-    cv::Mat free(height, width, CV_8U);
-    for (int r = 0; r < height; ++r)
-        for (int c = 0; c < width; ++c)
-            free.at<unsigned char>(r, c) = freeCells[static_cast<size_t>(r) * width + c] ? 255 : 0;
+    const cv::Mat free =
+        cv::Mat(height, width, CV_8U, const_cast<unsigned char*>(freeCells.data())) != 0;
     const double cellArea = resolution * resolution;
     const int minCells = std::max(1, static_cast<int>(options.minRoomArea / cellArea));
     cv::Mat dist;
