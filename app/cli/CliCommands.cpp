@@ -56,8 +56,12 @@ commands:
                 [--simplify M] [--epsg N] [--storey S] [--height H]; warnings on stderr,
                 one JSON line (areas, obstacles, rooms, warnings, start) on stdout;
                 occupancy maps are cleaned (what was removed under "cleaning"):
-                [--unknown wall|free] [--speckle M2 (0.15)] [--smooth on|off] [--fragment M2 (0.5)]
+                [--unknown wall|free] [--unknown-gap M2 (0.15): smaller unknown patches inside
+                the map are floor] [--speckle M2 (0.15)] [--smooth on|off] [--fragment M2 (0.5)]
                 [--opening M (robot diameter / 2)] [--closing M (0)] [--robot-diameter L]
+                [--straighten on|off: walls fitted as lines along the map's two dominant
+                directions] [--wall-band CELLS (1): how far a wall may move] [--notch M (0.1):
+                shallower notches in a straightened wall are filled]
                 [--no-cleaning] and split into rooms at doorways:
                 [--segment-rooms distance|morphological|none] [--min-room M2 (1)]
                 [--max-door M (1.6): rooms meeting along more are merged]

@@ -28,18 +28,26 @@ std::string summaryLine(const std::string& format, const ImportResult& r) {
         line << "null";
     if (r.cleaning) {
         const MapCleaningReport& c = *r.cleaning;
-        char cleaning[512];
+        char walls[160] = "";
+        if (c.wallAngle)
+            std::snprintf(walls, sizeof walls,
+                          ",\"wall_angle\":%.3f,\"walls_straightened\":%d,\"notches_filled\":%d,"
+                          "\"straightened_added\":%.3f,\"straightened_removed\":%.3f",
+                          *c.wallAngle, c.wallsStraightened, c.notchesFilled, c.straightenedAdded,
+                          c.straightenedRemoved);
+        char cleaning[768];
         std::snprintf(cleaning, sizeof cleaning,
                       ",\"cleaning\":{\"cells\":[%d,%d],\"resolution\":%g,\"unknown_cells\":%lld,"
-                      "\"specks_removed\":%d,\"speck_area\":%.3f,\"fragments_dropped\":%d,"
+                      "\"gaps_filled\":%d,\"gap_area\":%.3f,\"specks_removed\":%d,\"speck_area\":%."
+                      "3f,\"fragments_dropped\":%d,"
                       "\"fragment_area\":%.3f,\"smoothed_area\":%.3f,\"opened_area\":%.3f,\"closed_"
                       "area\":%.3f,"
                       "\"free_area_before\":%.3f,\"free_area_after\":%.3f,"
-                      "\"vertices_traced\":%d,\"vertices_kept\":%d}",
-                      c.width, c.height, c.resolution, c.unknownCells, c.specksRemoved, c.speckArea,
-                      c.fragmentsDropped, c.fragmentArea, c.smoothedArea, c.openedArea,
-                      c.closedArea, c.freeAreaBefore, c.freeAreaAfter, c.verticesTraced,
-                      c.verticesKept);
+                      "\"vertices_traced\":%d,\"vertices_kept\":%d%s}",
+                      c.width, c.height, c.resolution, c.unknownCells, c.gapsFilled, c.gapArea,
+                      c.specksRemoved, c.speckArea, c.fragmentsDropped, c.fragmentArea,
+                      c.smoothedArea, c.openedArea, c.closedArea, c.freeAreaBefore, c.freeAreaAfter,
+                      c.verticesTraced, c.verticesKept, walls);
         line << cleaning;
     }
     line << "}";
@@ -69,6 +77,14 @@ void mapOptionsFrom(const Arguments& args, ImportOptions& options) {
             throw InputError("--unknown " + *unknown + ": expected wall or free");
         c.unknownIsFree = *unknown == "free";
     }
+    if (auto straighten = args.text("--straighten")) {
+        if (*straighten != "on" && *straighten != "off")
+            throw InputError("--straighten " + *straighten + ": expected on or off");
+        c.straightenWalls = *straighten == "on";
+    }
+    c.wallBand = nonNegative(args, "--wall-band", c.wallBand);
+    c.notchDepth = nonNegative(args, "--notch", c.notchDepth);
+    c.unknownGapArea = nonNegative(args, "--unknown-gap", c.unknownGapArea);
     c.speckleArea = nonNegative(args, "--speckle", c.speckleArea);
     c.fragmentArea = nonNegative(args, "--fragment", c.fragmentArea);
     c.openingRadius = nonNegative(args, "--opening", c.openingRadius);
@@ -131,7 +147,9 @@ int commandImport(const Arguments& args) {
                     "--storey",        "--height",          "--no-cleaning",
                     "--unknown",       "--speckle",         "--fragment",
                     "--opening",       "--closing",         "--robot-diameter",
-                    "--segment-rooms", "--min-room",        "--max-door"});
+                    "--segment-rooms", "--min-room",        "--max-door",
+                    "--straighten",    "--wall-band",       "--notch",
+                    "--unknown-gap"});
     if (args.positional().size() != 1)
         throw InputError("import needs exactly one FILE (see floorcover-cli --help)");
     const std::string& path = args.positional()[0];

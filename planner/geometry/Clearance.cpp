@@ -158,8 +158,9 @@ bool ClearanceField::polylineIsClear(const Polyline& line) const {
     return line.size() != 1 || isClear(line[0]);
 }
 
-Polyline ClearanceField::findPath(Vec2 a, Vec2 b, const std::vector<Vec2>& hints,
-                                  double maxMargin) const {
+Polyline ClearanceField::findPath(Vec2 a, Vec2 b, const std::vector<Vec2>& hints, double maxMargin,
+                                  std::size_t maxChecks) const {
+    std::size_t checksLeft = maxChecks > 0 ? maxChecks : std::numeric_limits<std::size_t>::max();
     if (segmentIsClear(a, b))
         return {a, b};
     double margin = std::min(std::max(4 * radius_, 0.5 * distance(a, b)), maxMargin);
@@ -169,9 +170,11 @@ Polyline ClearanceField::findPath(Vec2 a, Vec2 b, const std::vector<Vec2>& hints
         window.add(b);
         window.minX -= margin, window.minY -= margin;
         window.maxX += margin, window.maxY += margin;
-        Polyline path = searchWindow(a, b, window, hints);
+        Polyline path = searchWindow(a, b, window, hints, checksLeft);
         if (!path.empty())
             return path;
+        if (checksLeft == 0)
+            return {};
         // Before searching wider: provably apart? (cheap once the grid exists)
         if (round == 0) {
             const int ra = openRegionOf(a), rb = openRegionOf(b);
@@ -195,7 +198,8 @@ int ClearanceField::openRegionOf(Vec2 p) const {
 }
 
 Polyline ClearanceField::searchWindow(Vec2 a, Vec2 b, const BoundingBox& window,
-                                      const std::vector<Vec2>& hints) const {
+                                      const std::vector<Vec2>& hints,
+                                      std::size_t& checksLeft) const {
     std::vector<Vec2> pts{a, b};
     for (const Vec2& h : hints)
         if (isClear(h))
@@ -223,8 +227,13 @@ Polyline ClearanceField::searchWindow(Vec2 a, Vec2 b, const BoundingBox& window,
         const int u = top.v;
         if (closed[u])
             continue;
-        if (top.parent >= 0 && !segmentIsClear(pts[top.parent], pts[u]))
-            continue; // blocked: u may still arrive through another parent
+        if (top.parent >= 0) {
+            if (checksLeft == 0)
+                return {};
+            --checksLeft;
+            if (!segmentIsClear(pts[top.parent], pts[u]))
+                continue; // blocked: u may still arrive through another parent
+        }
         closed[u] = 1;
         g[u] = top.g;
         from[u] = top.parent;

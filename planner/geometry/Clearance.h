@@ -45,17 +45,19 @@ public:
     // corners, searched in a window around a and b that grows when needed. Empty when a
     // and b are not connected within the largest window.
     // hints: extra clear waypoints worth trying (e.g. points inside a tight doorway).
-    // maxMargin bounds how far beyond the box of a and b the search may look.
+    // maxMargin bounds how far beyond the box of a and b the search may look; maxChecks
+    // (0: none) bounds the segment tests of all windows together, after which the search
+    // gives up (empty): a search that fails covers the whole plan, n^2 tests on a big map.
     Polyline findPath(Vec2 a, Vec2 b, const std::vector<Vec2>& hints = {},
-                      double maxMargin = INFINITY) const;
+                      double maxMargin = INFINITY, std::size_t maxChecks = 0) const;
 
     // The open region (see OpenRegions) of p, built on first use (thread-safe); two clear
     // points in different regions cannot be joined. -1: p is in no open cell.
     int openRegionOf(Vec2 p) const;
 
 private:
-    Polyline searchWindow(Vec2 a, Vec2 b, const BoundingBox& window,
-                          const std::vector<Vec2>& hints) const;
+    Polyline searchWindow(Vec2 a, Vec2 b, const BoundingBox& window, const std::vector<Vec2>& hints,
+                          std::size_t& checksLeft) const;
 
     SegmentIndex walls_;
     double radius_;

@@ -8,6 +8,7 @@ namespace {
 
 // Node pairs tried per component (nearest first), and the work bound on the pair search.
 constexpr size_t kPairsTried = 6;
+constexpr size_t kMaxBridgeChecks = 200'000; // segment tests per bridge search
 constexpr size_t kMaxPairScan = 4'000'000;
 } // namespace
 
@@ -90,7 +91,11 @@ int bridgeComponents(CornerGraph& graph, const ClearanceField& field) {
         std::partial_sort(pairs.begin(), pairs.begin() + keep, pairs.end());
         for (size_t i = 0; i < keep; ++i) {
             const auto [u, v] = pairs[i].second;
-            Polyline line = field.findPath(graph.nodes[u].position, graph.nodes[v].position);
+            // Both ends lie in one open region, and a search that fails there covers the
+            // whole plan (seconds on a large map, for each pair): bounded, as a part whose
+            // bridge is not found is left out and reported.
+            Polyline line = field.findPath(graph.nodes[u].position, graph.nodes[v].position, {},
+                                           INFINITY, kMaxBridgeChecks);
             if (line.empty())
                 continue;
             GraphEdge edge;

@@ -12,6 +12,8 @@
 namespace fc {
 namespace {
 
+constexpr std::size_t kMaxInterChecks = 50000; // segment tests per inter-cell search
+
 using detail::traceBorder;
 
 struct StripeRun {
@@ -241,8 +243,10 @@ private:
                     return route;
         }
         // An inter-cell connection that needs a long detour is not one: the graph reaches
-        // those corners through other cells.
-        return field_.findPath(p, q, hints, 8 * dec_.coverageWidth() + distance(p, q));
+        // those corners through other cells. The search is bounded as well: one that fails
+        // tests every pair of wall corners in its window (hundreds on a traced map).
+        return field_.findPath(p, q, hints, 8 * dec_.coverageWidth() + distance(p, q),
+                               kMaxInterChecks);
     }
 
     void addAdjacency(const Adjacency& a) {

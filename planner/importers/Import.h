@@ -25,21 +25,29 @@ struct LayerMapping {
 // Occupancy maps (issue 15): how the SLAM map is cleaned before it is traced. Defaults suit
 // 2-10 cm cells; every step can be switched off (a radius or area of 0).
 struct MapCleaningOptions {
-    bool enabled = true;         // false: every free cell is traced as it is
-    bool unknownIsFree = false;  // unknown cells (between the thresholds) as floor, not wall
-    double speckleArea = 0.15;   // m^2: obstacle specks smaller than this become floor
-    bool smoothEdges = true;     // a 3 x 3 majority vote on ragged wall edges (on maps with
-                                 // cells of at most a sixth of the robot's diameter)
-    double fragmentArea = 0.5;   // m^2: free islands smaller than this are dropped
-    double openingRadius = -1;   // m: free slivers and wall notches narrower than twice this
-                                 // are filled; negative: the robot's radius (what its body
-                                 // cannot enter; its swath still reaches W/2 from its centre)
-    double closingRadius = 0;    // m: obstacles thinner than twice this vanish (0: off, as
-                                 // interior walls in laser maps are often a cell or two thick)
-    double simplifyCells = 0.45; // Douglas-Peucker tolerance in cells (below half a cell, so
-                                 // that a wall keeps both ends of its traced corners), and
+    bool enabled = true;           // false: every free cell is traced as it is
+    bool unknownIsFree = false;    // unknown cells (between the thresholds) as floor, not wall
+    double unknownGapArea = 0.15;  // m^2: unknown patches inside the map smaller than this
+                                   // become floor (with unknown as wall)
+    double speckleArea = 0.15;     // m^2: obstacle specks smaller than this become floor
+    bool smoothEdges = true;       // a 3 x 3 majority vote on ragged wall edges (on maps with
+                                   // cells of at most a sixth of the robot's diameter)
+    double fragmentArea = 0.5;     // m^2: free islands smaller than this are dropped
+    double openingRadius = -1;     // m: free slivers and wall notches narrower than twice this
+                                   // are filled; negative: the robot's radius (what its body
+                                   // cannot enter; its swath still reaches W/2 from its centre)
+    double closingRadius = 0;      // m: obstacles thinner than twice this vanish (0: off, as
+                                   // interior walls in laser maps are often a cell or two thick)
+    double simplifyCells = 0.45;   // Douglas-Peucker tolerance in cells (below half a cell, so
+                                   // that a wall keeps both ends of its traced corners), and
     double simplifyRobotShare = 0; // at least this share of the robot's diameter (0: off;
                                    // coarser outlines plan faster but tilt short walls)
+    bool straightenWalls = true;   // walls fitted as lines along the map's two dominant wall
+                                   // directions (when it has them), each within `wallBand`
+    double wallBand = 1.0;         // cells: how far a straightened wall may lie from a traced
+                                   // point it replaces (a tooth this thin becomes floor)
+    double notchDepth = 0.1;       // m: notches into a straightened wall up to this deep are
+                                   // filled (floor lost, reported)
 };
 
 // Occupancy maps: splitting the free space into rooms at doorways.
@@ -55,6 +63,8 @@ struct MapCleaningReport {
     int width = 0, height = 0;
     double resolution = 0;
     long long unknownCells = 0;
+    int gapsFilled = 0; // unknown patches that became floor
+    double gapArea = 0; // m^2
     int specksRemoved = 0;
     double speckArea = 0; // m^2
     int fragmentsDropped = 0;
@@ -64,6 +74,10 @@ struct MapCleaningReport {
     double smoothedArea = 0; // m^2 of floor gained (negative: lost) by smoothing the edges
     double freeAreaBefore = 0, freeAreaAfter = 0;
     int verticesTraced = 0, verticesKept = 0;
+    std::optional<double> wallAngle; // degrees in [0, 90), map frame, when walls were straightened
+    int wallsStraightened = 0;       // walls fitted as lines
+    int notchesFilled = 0;
+    double straightenedAdded = 0, straightenedRemoved = 0; // m^2 of floor
     int rooms = 0;
 };
 

@@ -81,6 +81,23 @@ std::vector<unsigned char> cleanOccupancyGrid(const OccupancyGrid& grid,
         }
     }
     report.freeAreaBefore = freeCells * cellArea(grid);
+    if (options.enabled && !options.unknownIsFree) {
+        // Unknown gaps inside the mapped floor (a blind spot behind a chair leg, a missed
+        // scan): small ones become floor, as they would otherwise stand as teeth on the
+        // walls they touch. The unknown world around the map touches the image border.
+        cv::Mat unknown(grid.height, grid.width, CV_8U);
+        for (int r = 0; r < grid.height; ++r) {
+            unsigned char* row = unknown.ptr<unsigned char>(r);
+            for (int c = 0; c < grid.width; ++c)
+                row[c] = grid.cells[static_cast<size_t>(r) * grid.width + c] == kUnknown ? 255 : 0;
+        }
+        const cv::Mat before = unknown.clone();
+        const auto gaps =
+            removeSmallComponents(unknown, cellsOf(options.unknownGapArea, grid), true, 0, 4);
+        report.gapsFilled = gaps.first;
+        report.gapArea = gaps.second * cellArea(grid);
+        free.setTo(255, before - unknown);
+    }
     if (options.enabled) {
         // Obstacle specks (8-connected, as a speck touching at a corner is one speck).
         cv::Mat blocked = 255 - free;

@@ -1,6 +1,7 @@
 // The rooms of an occupancy map's segmentation as plan rooms: simple, disjoint outlines
 // (GEOS through OGR), since a plan's room is one ring and rooms may not overlap.
 #include "importers/MapTracing.h"
+#include "importers/MapWalls.h"
 
 #include <algorithm>
 #include <ogr_api.h>
@@ -76,23 +77,72 @@ void cutHoles(const OGRGeometry& g, double minArea, std::vector<GeometryPtr>& pi
     }
 }
 
+// Opened by a twentieth of a pixel: cutting rooms against each other and the floor may
+// leave an outline pinched at a point or a spike of no width, which plans refuse.
+void openSlightly(GeometryPtr& g) {
+    if (g)
+        g.reset(g->Buffer(-0.05, 1));
+    if (g)
+        g.reset(g->Buffer(0.05, 1));
+}
+
+// Vertices where the outline turns back on itself within a degree: the thin wedges left
+// where a grown room's chamfer meets a neighbour's diagonal border (plans refuse spikes).
+void dropSpikes(Ring& ring) {
+    for (bool changed = true; changed && ring.size() >= 3;) {
+        changed = false;
+        for (size_t i = 0; i < ring.size() && ring.size() >= 3; ++i) {
+            const Vec2 p = ring[i];
+            const Vec2 a = ring[(i + ring.size() - 1) % ring.size()] - p;
+            const Vec2 b = ring[(i + 1) % ring.size()] - p;
+            const double la = norm(a), lb = norm(b);
+            if (la < 1e-9 || lb < 1e-9 ||
+                (dot(a, b) > 0 && std::abs(cross(a, b)) < 0.0175 * la * lb)) {
+                ring.erase(ring.begin() + static_cast<long>(i));
+                changed = true;
+            }
+        }
+    }
+}
+
 } // namespace
 
 std::vector<Room> roomsFromLabels(const std::vector<std::int32_t>& labels,
                                   const std::vector<unsigned char>& free, int width, int height,
-                                  const OGRGeometry& kept, double tolerance,
-                                  const RosMapInfo& info) {
+                                  const OGRGeometry& kept, double tolerance, const RosMapInfo& info,
+                                  const StraightenOptions* straighten) {
     std::vector<GeometryPtr> regions; // each room's largest simplified part, with its holes
-    for (auto& [label, traced] : traceCells(labels, free, width, height)) {
-        if (label <= 0)
-            continue;
-        GeometryPtr g = simplifiedCells(*traced, tolerance);
-        if (const OGRPolygon* largest = largestPolygon(g.get()))
-            if (largest->Intersects(&kept)) {
-                GeometryPtr common(largest->Intersection(&kept));
-                if (common && areaOf(common.get()) >= kMinCells)
-                    regions.emplace_back(largest->clone());
-            }
+    if (straighten) {
+        // The floor's walls were straightened on their own: each room is its territory (the
+        // map's cells nearest to it, walls included) cut by the floor, so it ends exactly on
+        // the floor's walls and leaves no sliver outside every room (each
+        // would be a cell border along the wall). Only doorways are the rooms' own borders.
+        const std::vector<std::int32_t> territories = labelTerritories(labels, width, height);
+        const std::vector<unsigned char> everywhere(territories.size(), 1);
+        for (auto& [label, traced] : traceCells(territories, everywhere, width, height)) {
+            if (label <= 0)
+                continue;
+            // The territory's borders meet the floor only in doorways (a wall cuts the
+            // rest away): they are not straightened, as a doorway is not a wall.
+            const GeometryPtr g = simplifiedCells(*traced, tolerance);
+            GeometryPtr common(g->Intersection(&kept));
+            openSlightly(common);
+            if (const OGRPolygon* part = largestPolygon(common.get());
+                part && areaOf(part) >= kMinCells)
+                regions.emplace_back(part->clone());
+        }
+    } else {
+        for (auto& [label, traced] : traceCells(labels, free, width, height)) {
+            if (label <= 0)
+                continue;
+            GeometryPtr g = simplifiedCells(*traced, tolerance);
+            const OGRPolygon* largest = largestPolygon(g.get());
+            if (!largest || !largest->Intersects(&kept))
+                continue;
+            GeometryPtr common(largest->Intersection(&kept));
+            if (common && areaOf(common.get()) >= kMinCells)
+                regions.emplace_back(largest->clone());
+        }
     }
     // A hole of a room that holds no other room is an obstacle: the outline covers it.
     std::vector<GeometryPtr> filled;
@@ -118,6 +168,7 @@ std::vector<Room> roomsFromLabels(const std::vector<std::int32_t>& labels,
     for (GeometryPtr& region : filled) {
         GeometryPtr own(region->Difference(taken.get()));
         taken.reset(taken->Union(region.get()));
+        openSlightly(own);
         if (!own || !taken)
             throw InputError("separating the rooms failed");
         std::vector<GeometryPtr> pieces;
@@ -131,6 +182,9 @@ std::vector<Room> roomsFromLabels(const std::vector<std::int32_t>& labels,
             if (room.empty() || room[0].shell.size() < 3)
                 continue;
             toMapFrame(room, height, info);
+            dropSpikes(room[0].shell);
+            if (room[0].shell.size() < 3)
+                continue;
             Vec2 centre;
             for (const Vec2& p : room[0].shell)
                 centre = centre + p * (1.0 / room[0].shell.size());

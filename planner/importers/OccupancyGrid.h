@@ -32,4 +32,9 @@ std::vector<std::int32_t> segmentRooms(const std::vector<unsigned char>& free, i
                                        int height, double resolution,
                                        const RoomSegmentationOptions& options, int& rooms);
 
+// Every cell labelled with the label of its nearest labelled (> 0) cell: the rooms' territories
+// tile the whole map, walls included, so that a room cut by the floor ends on its walls.
+std::vector<std::int32_t> labelTerritories(const std::vector<std::int32_t>& labels, int width,
+                                           int height);
+
 } // namespace fc::importing

@@ -201,4 +201,24 @@ std::vector<std::int32_t> segmentRooms(const std::vector<unsigned char>& freeCel
     return out;
 }
 
+std::vector<std::int32_t> labelTerritories(const std::vector<std::int32_t>& labels, int width,
+                                           int height) {
+    cv::Mat source(height, width, CV_8U), distance, indices;
+    for (int r = 0; r < height; ++r)
+        for (int c = 0; c < width; ++c)
+            source.at<unsigned char>(r, c) =
+                labels[static_cast<size_t>(r) * width + c] > 0 ? 0 : 255;
+    cv::distanceTransform(source, distance, indices, cv::DIST_L2, 5, cv::DIST_LABEL_PIXEL);
+    std::vector<std::int32_t> labelOfIndex(static_cast<size_t>(width) * height + 2, 0);
+    for (int r = 0; r < height; ++r)
+        for (int c = 0; c < width; ++c)
+            if (source.at<unsigned char>(r, c) == 0)
+                labelOfIndex[indices.at<int>(r, c)] = labels[static_cast<size_t>(r) * width + c];
+    std::vector<std::int32_t> out(labels.size());
+    for (int r = 0; r < height; ++r)
+        for (int c = 0; c < width; ++c)
+            out[static_cast<size_t>(r) * width + c] = labelOfIndex[indices.at<int>(r, c)];
+    return out;
+}
+
 } // namespace fc::importing

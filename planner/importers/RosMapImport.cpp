@@ -3,6 +3,7 @@
 // map coordinates, and split into rooms at doorways (RoomSegmentation.cpp, MapRooms.cpp).
 #include "formats/FileIO.h"
 #include "importers/MapTracing.h"
+#include "importers/MapWalls.h"
 
 #include <algorithm>
 #include <cmath>
@@ -48,6 +49,24 @@ OccupancyGrid gridOf(const GreyImage& image, const RosMapInfo& info) {
     return grid;
 }
 
+// The straightening of this map's walls (pixel units), or none when the map has no dominant
+// wall direction (a round or irregular building).
+std::optional<StraightenOptions> straightenOptions(const OGRGeometry& traced,
+                                                   const OGRGeometry& fine,
+                                                   const MapCleaningOptions& cleaning,
+                                                   double resolution) {
+    const std::optional<double> angle = dominantWallDirection(traced, &fine);
+    if (!angle)
+        return std::nullopt;
+    StraightenOptions o;
+    o.angleDeg = *angle;
+    o.band = std::max(cleaning.wallBand, 0.0);
+    o.notchDepth = std::max(cleaning.notchDepth / resolution, o.band);
+    o.minRun = std::max(4.0, 2.0 * o.band + 2.0);
+    o.cornerShift = 3.0 * std::max(o.band, 0.5);
+    return o;
+}
+
 } // namespace
 
 ImportResult importRosMap(const std::string& yamlPath, const ImportOptions& options) {
@@ -81,6 +100,22 @@ ImportResult importRosMap(const std::string& yamlPath, const ImportOptions& opti
     GeometryPtr simple = simplifiedCells(*traced[1], tolerance);
     if (simple->IsEmpty())
         throw InputError("the free space is thinner than a pixel everywhere");
+    std::optional<StraightenOptions> straighten =
+        options.cleaning.enabled && options.cleaning.straightenWalls
+            ? straightenOptions(*traced[1], *simple, options.cleaning, info.resolution)
+            : std::nullopt;
+    if (straighten) {
+        StraightenResult straight = straightenOutlines(*simple, *straighten);
+        simple = std::move(straight.geometry);
+        const double cellArea = info.resolution * info.resolution;
+        // Pixel rows run down the map: a direction in pixels is mirrored in the map frame.
+        report.wallAngle = std::fmod(
+            std::fmod(info.yaw * 180.0 / M_PI - straighten->angleDeg, 90.0) + 180.0, 90.0);
+        report.wallsStraightened = straight.stats.walls;
+        report.notchesFilled = straight.stats.notchesFilled;
+        report.straightenedAdded = straight.floorAdded * cellArea;
+        report.straightenedRemoved = straight.floorRemoved * cellArea;
+    }
     report.verticesKept = vertexCount(simple.get());
     std::vector<Polygon2> polygons;
     collectPolygons(simple.get(), polygons);
@@ -108,7 +143,8 @@ ImportResult importRosMap(const std::string& yamlPath, const ImportOptions& opti
         free, image.width, image.height, info.resolution, options.roomSegmentation, labelCount);
     if (labelCount > 1)
         result.project.plan.rooms =
-            roomsFromLabels(labels, free, image.width, image.height, kept, tolerance, info);
+            roomsFromLabels(labels, free, image.width, image.height, kept, tolerance, info,
+                            straighten ? &*straighten : nullptr);
     report.rooms = static_cast<int>(result.project.plan.rooms.size());
     result.robotStartPose = info.start;
     result.cleaning = report;

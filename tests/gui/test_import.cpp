@@ -127,7 +127,7 @@ void ImportTest::occupancyMapCleaningIsLive() {
     QVERIFY2(dialog.result(), qPrintable(dialog.error()));
     const size_t cleanedObstacles = dialog.result()->project.plan.obstacles.size();
     QVERIFY(dialog.result()->cleaning);
-    QVERIFY(dialog.result()->cleaning->specksRemoved > 50);
+    QVERIFY(dialog.result()->cleaning->specksRemoved + dialog.result()->cleaning->gapsFilled > 50);
     QVERIFY(dialog.result()->project.plan.rooms.size() >= 2);
     fc::MapCleaningOptions off;
     off.enabled = false;
@@ -139,6 +139,15 @@ void ImportTest::occupancyMapCleaningIsLive() {
     QVERIFY2(dialog.result(), qPrintable(dialog.error()));
     QCOMPARE(dialog.result()->project.plan.obstacles.size(), cleanedObstacles);
     QVERIFY(dialog.result()->project.plan.rooms.empty());
+    // Straightening the walls is a switch too: off, the ragged outline keeps more corners.
+    QVERIFY(dialog.result()->cleaning->wallAngle);
+    const size_t straightCorners = dialog.result()->project.plan.boundary.size();
+    fc::MapCleaningOptions ragged;
+    ragged.straightenWalls = false;
+    dialog.setMapCleaning(ragged);
+    QVERIFY2(dialog.result(), qPrintable(dialog.error()));
+    QVERIFY(!dialog.result()->cleaning->wallAngle);
+    QVERIFY(dialog.result()->project.plan.boundary.size() > straightCorners);
     // A DXF drawing offers no map cleaning.
     ImportDialog drawing(kOffice);
     QVERIFY(!drawing.mapOptionsShown());

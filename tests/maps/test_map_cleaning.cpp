@@ -96,7 +96,9 @@ TEST(RealMaps, LaserMapsCleanIntoFewObstaclesAndRooms) {
         ASSERT_TRUE(r.cleaning) << name;
         EXPECT_LT(r.project.plan.obstacles.size(), 200u) << name;
         EXPECT_GE(r.project.plan.rooms.size(), 2u) << name;
-        EXPECT_GT(r.cleaning->specksRemoved, 50) << name;
+        // Sensor artefacts: obstacle specks, and unknown gaps inside the floor (filled
+        // first, so some specks inside them never count).
+        EXPECT_GT(r.cleaning->specksRemoved + r.cleaning->gapsFilled, 50) << name;
         EXPECT_NEAR(r.cleaning->freeAreaAfter, r.cleaning->freeAreaBefore,
                     0.1 * r.cleaning->freeAreaBefore)
             << name;

@@ -135,6 +135,12 @@ QGroupBox* ImportDialog::buildMapGroup() {
                        "radius: what its body cannot enter)"));
     closing_ = spin(defaults.cleaning.closingRadius, 5, tr(" m"),
                     tr("Obstacles thinner than twice this vanish (0: off; thin walls too)"));
+    straighten_ = new QCheckBox(tr("Along the map's two main directions"), mapGroup_);
+    straighten_->setChecked(defaults.cleaning.straightenWalls);
+    straighten_->setToolTip(tr("Each ragged wall becomes one line within a cell of its scan, "
+                               "so the path runs along it instead of zigzagging"));
+    notch_ = spin(defaults.cleaning.notchDepth, 1, tr(" m"),
+                  tr("Notches in a straightened wall up to this deep are filled"));
     rooms_ = new QComboBox(this);
     rooms_->addItem(tr("At doorways (distance)"),
                     static_cast<int>(RoomSegmentationMethod::Distance));
@@ -149,10 +155,13 @@ QGroupBox* ImportDialog::buildMapGroup() {
     form->addRow(tr("Drop islands below:"), fragment_);
     form->addRow(tr("Fill notches up to:"), opening_);
     form->addRow(tr("Remove obstacles up to:"), closing_);
+    form->addRow(tr("Straighten walls:"), straighten_);
+    form->addRow(tr("Fill wall notches up to:"), notch_);
     form->addRow(tr("Split into rooms:"), rooms_);
     form->addRow(tr("Smallest room:"), minRoom_);
     connect(mapGroup_, &QGroupBox::toggled, this, &ImportDialog::refresh);
     connect(unknown_, &QComboBox::currentIndexChanged, this, &ImportDialog::refresh);
+    connect(straighten_, &QCheckBox::toggled, this, &ImportDialog::refresh);
     connect(rooms_, &QComboBox::currentIndexChanged, this, &ImportDialog::refresh);
     return mapGroup_;
 }
@@ -162,7 +171,10 @@ bool ImportDialog::mapOptionsShown() const {
 }
 
 void ImportDialog::setMapCleaning(const MapCleaningOptions& cleaning) {
-    const QSignalBlocker blockGroup(mapGroup_), blockUnknown(unknown_);
+    const QSignalBlocker blockGroup(mapGroup_), blockUnknown(unknown_),
+        blockStraighten(straighten_);
+    straighten_->setChecked(cleaning.straightenWalls);
+    notch_->setValue(cleaning.notchDepth);
     mapGroup_->setChecked(cleaning.enabled);
     unknown_->setCurrentIndex(cleaning.unknownIsFree ? 1 : 0);
     speckle_->setValue(cleaning.speckleArea);
@@ -249,6 +261,8 @@ ImportOptions ImportDialog::options() const {
     options.cleaning.fragmentArea = fragment_->value();
     options.cleaning.openingRadius = opening_->value();
     options.cleaning.closingRadius = closing_->value();
+    options.cleaning.straightenWalls = straighten_->isChecked();
+    options.cleaning.notchDepth = notch_->value();
     options.roomSegmentation.method =
         static_cast<RoomSegmentationMethod>(rooms_->currentData().toInt());
     options.roomSegmentation.minRoomArea = minRoom_->value();
@@ -307,6 +321,16 @@ void ImportDialog::refresh() {
                     .arg(c->fragmentArea, 0, 'f', 2)
                     .arg(c->openedArea, 0, 'f', 2)
                     .arg(c->closedArea, 0, 'f', 2));
+        if (const auto& c = result_->cleaning; c && c->wallAngle)
+            summary_->setText(summary_->text() + QLatin1Char('\n') +
+                              tr("%1 walls straightened at %2°: %3 m² of floor gained, %4 m² "
+                                 "lost (%5 notches filled); %6 unknown gaps became floor.")
+                                  .arg(c->wallsStraightened)
+                                  .arg(c->wallAngle.value(), 0, 'f', 1)
+                                  .arg(c->straightenedAdded, 0, 'f', 2)
+                                  .arg(c->straightenedRemoved, 0, 'f', 2)
+                                  .arg(c->notchesFilled)
+                                  .arg(c->gapsFilled));
     } else {
         summary_->setText(error_);
     }

@@ -77,6 +77,8 @@ private:
     QDoubleSpinBox* fragment_ = nullptr;
     QDoubleSpinBox* opening_ = nullptr;
     QDoubleSpinBox* closing_ = nullptr;
+    QCheckBox* straighten_ = nullptr;
+    QDoubleSpinBox* notch_ = nullptr;
     QComboBox* rooms_ = nullptr;
     QDoubleSpinBox* minRoom_ = nullptr;
     QDialogButtonBox* buttons_;

@@ -1,0 +1,441 @@
+// Straightening traced map outlines: the traced points are covered by runs that fit between two
+// lines along a wall direction, each run becomes one line, collinear runs separated by a
+// shallow notch or a tooth within the band become one, and neighbouring lines meet at their
+// intersection. Points no run covers (round walls, rounded corners) are kept as traced.
+#include "importers/MapWalls.h"
+
+#include <algorithm>
+#include <cmath>
+#include <deque>
+#include <vector>
+
+namespace fc::importing {
+
+namespace {
+
+constexpr double kMinShare = 1.0 / 3.0;
+constexpr int kMaxExcursion = 16; // elements between two runs joined as one wall
+
+double signedAreaOf(const Ring& r) {
+    double a = 0.0;
+    for (size_t i = 0; i < r.size(); ++i)
+        a += cross(r[i], r[(i + 1) % r.size()]);
+    return 0.5 * a;
+}
+
+// A run of points fitted as one wall, or a point kept as traced.
+struct Element {
+    bool line = false;
+    int family = 0;          // 0: a line v = c (along u); 1: a line u = c (along v)
+    int first = 0, last = 0; // offsets from the ring's start point, first <= last
+    double c = 0.0;
+    int dir = 1; // +1 when the run heads towards larger along-coordinates
+};
+
+class Straightener {
+public:
+    Straightener(const Ring& ring, bool freeInside, const StraightenOptions& o,
+                 StraightenStats& stats)
+        : options_(o), stats_(stats) {
+        const double a = options_.angleDeg * M_PI / 180.0;
+        cos_ = std::cos(a), sin_ = std::sin(a);
+        for (const Vec2& p : ring)
+            local_.push_back({p.x * cos_ + p.y * sin_, -p.x * sin_ + p.y * cos_});
+        interiorLeft_ = signedAreaOf(local_) > 0;
+        freeInside_ = freeInside;
+    }
+
+    Ring run() {
+        const int n = static_cast<int>(local_.size());
+        if (n < 4)
+            return toWorld(local_);
+        const std::vector<int> ext[2] = {extents(0), extents(1)};
+        // Start at the longest run, so that the seam never cuts a wall in two.
+        int start = 0;
+        double longest = -1;
+        for (int i = 0; i < n; ++i)
+            for (int f : {0, 1})
+                if (double len = spanLength(i, ext[f][i], f); len > longest)
+                    longest = len, start = i;
+        rotateStart(start);
+        std::vector<Element> elements;
+        for (int k = 0; k < n;) {
+            const int i = (start + k) % n;
+            int bestFamily = 0, bestEnd = k;
+            double bestLength = -1;
+            for (int f : {0, 1}) {
+                const int end = std::min(k + (ext[f][i] - i), n - 1);
+                if (double len = spanLength(k, end, f); len > bestLength)
+                    bestLength = len, bestFamily = f, bestEnd = end;
+            }
+            if (bestLength >= options_.minRun && bestEnd > k) {
+                elements.push_back(fitted(bestFamily, k, bestEnd));
+                k = bestEnd + 1;
+            } else {
+                elements.push_back({false, 0, k, k, 0.0, 1});
+                ++k;
+            }
+        }
+        reseamAtCorner(elements, n);
+        mergeAcrossExcursions(elements);
+        stats_.walls += static_cast<int>(
+            std::count_if(elements.begin(), elements.end(), [](auto& e) { return e.line; }));
+        return toWorld(rebuild(elements));
+    }
+
+private:
+    double perp(const Vec2& p, int f) const { return f == 0 ? p.y : p.x; }
+    double along(const Vec2& p, int f) const { return f == 0 ? p.x : p.y; }
+    const Vec2& at(int k) const { return local_[k % local_.size()]; }
+    double spanLength(int a, int b, int f) const {
+        return std::abs(along(at(b), f) - along(at(a), f));
+    }
+
+    void rotateStart(int start) {
+        std::rotate(local_.begin(), local_.begin() + start, local_.end());
+    }
+
+    // For each point i, the last point j (i <= j < i + n, cyclically) such that points i..j
+    // lie within 2 * band across family f.
+    std::vector<int> extents(int f) const {
+        const int n = static_cast<int>(local_.size());
+        std::vector<int> ext(n);
+        std::deque<int> hi, lo; // indices of decreasing maxima / increasing minima
+        int j = -1;
+        for (int i = 0; i < n; ++i) {
+            while (j + 1 < i + n) {
+                const double v = perp(at(j + 1), f);
+                const double top = hi.empty() ? v : std::max(v, perp(at(hi.front()), f));
+                const double bottom = lo.empty() ? v : std::min(v, perp(at(lo.front()), f));
+                if (top - bottom > 2.0 * options_.band && j >= i)
+                    break;
+                ++j;
+                while (!hi.empty() && perp(at(hi.back()), f) <= v)
+                    hi.pop_back();
+                hi.push_back(j);
+                while (!lo.empty() && perp(at(lo.back()), f) >= v)
+                    lo.pop_back();
+                lo.push_back(j);
+            }
+            ext[i] = j;
+            if (!hi.empty() && hi.front() == i)
+                hi.pop_front();
+            if (!lo.empty() && lo.front() == i)
+                lo.pop_front();
+        }
+        return ext;
+    }
+
+    // The line through points first..last: the length-weighted median of their segments
+    // across the run (a clean wall keeps its exact line; the start of a chamfered corner or
+    // a lone bump does not pull it), so within two bands of every point of the run.
+    Element fitted(int f, int first, int last) const {
+        Element e{true, f, first, last, 0.0, along(at(last), f) >= along(at(first), f) ? 1 : -1};
+        std::vector<std::pair<double, double>> pieces; // across, length
+        double weight = 0, top = -INFINITY, bottom = INFINITY;
+        for (int k = first; k <= last; ++k) {
+            top = std::max(top, perp(at(k), f)), bottom = std::min(bottom, perp(at(k), f));
+            if (k < last) {
+                const double len = distance(at(k), at(k + 1));
+                pieces.push_back({0.5 * (perp(at(k), f) + perp(at(k + 1), f)), len});
+                weight += len;
+            }
+        }
+        std::sort(pieces.begin(), pieces.end());
+        double median = 0.5 * (top + bottom), below = 0;
+        for (const auto& [across, len] : pieces) {
+            below += len;
+            if (below >= 0.5 * weight) {
+                median = across;
+                break;
+            }
+        }
+        e.c = std::clamp(median, bottom, top);
+        return e;
+    }
+
+    // Which side of a wall of family f heading dir is floor, as a sign across the wall.
+    double freeSign(int f, int dir) const {
+        const double left = f == 0 ? dir : -dir; // the left normal, across the wall
+        const double interior = interiorLeft_ ? left : -left;
+        return freeInside_ ? interior : -interior;
+    }
+
+    // Joins line a with a later line b of the same wall when every point between them
+    // stays within the band on the floor side (a tooth) and within notchDepth on the wall
+    // side (a notch, then filled).
+    bool tryJoin(std::vector<Element>& el, size_t a, size_t b) {
+        const Element& A = el[a];
+        const Element& B = el[b];
+        const double la = spanLength(A.first, A.last, A.family);
+        const double lb = spanLength(B.first, B.last, B.family);
+        const double c = (A.c * la + B.c * lb) / std::max(la + lb, 1e-12);
+        const int f = A.family;
+        const double sign = freeSign(f, A.dir);
+        bool notch = false;
+        for (int k = A.first; k <= B.last; ++k) {
+            const double d = (perp(at(k), f) - c) * sign; // > 0: towards the floor
+            // Two pieces of one wall fitted apart may differ by up to the band; joined, the
+            // wall runs between them (within two bands of their points).
+            const bool inRun = k <= A.last || k >= B.first;
+            const double limit = (inRun ? 2.0 : 1.0) * options_.band + 1e-9;
+            if (d > limit || (inRun && d < -limit))
+                return false;
+            if (!inRun && d < -options_.band - 1e-9) {
+                if (d < -options_.notchDepth - 1e-9)
+                    return false;
+                notch = true;
+            }
+        }
+        stats_.notchesFilled += notch;
+        el[a].last = B.last;
+        el[a].c = c;
+        el.erase(el.begin() + a + 1, el.begin() + b + 1);
+        return true;
+    }
+
+    // The longest run may begin partway along a wall: start the list at a corner instead,
+    // so that no wall is cut at the seam (offsets past the seam grow beyond n).
+    static void reseamAtCorner(std::vector<Element>& el, int n) {
+        for (size_t r = 1; r < el.size(); ++r) {
+            if (el[r].line && el[r - 1].line && el[r].family != el[r - 1].family) {
+                for (size_t k = 0; k < r; ++k)
+                    el[k].first += n, el[k].last += n;
+                std::rotate(el.begin(), el.begin() + r, el.end());
+                return;
+            }
+        }
+    }
+
+    void mergeAcrossExcursions(std::vector<Element>& el) {
+        for (bool changed = true; changed;) {
+            changed = false;
+            for (size_t a = 0; a < el.size() && !changed; ++a) {
+                if (!el[a].line)
+                    continue;
+                for (size_t b = a + 1; b < el.size() && b <= a + kMaxExcursion; ++b) {
+                    const Element& B = el[b];
+                    if (!B.line || B.family != el[a].family || B.dir != el[a].dir ||
+                        std::abs(B.c - el[a].c) > options_.band)
+                        continue;
+                    changed = tryJoin(el, a, b);
+                    break;
+                }
+            }
+        }
+    }
+
+    Vec2 onLine(const Element& l, double a) const {
+        return l.family == 0 ? Vec2{a, l.c} : Vec2{l.c, a};
+    }
+
+    // Where line l begins after element p (or ends before element p, with `atEnd`).
+    Vec2 joint(const Element& l, const Element& p, bool atEnd) const {
+        const Vec2& own = at(atEnd ? l.last : l.first);
+        const Vec2& other = at(atEnd ? p.first : p.last);
+        if (p.line && p.family != l.family) {
+            const Vec2 x = l.family == 0 ? Vec2{p.c, l.c} : Vec2{l.c, p.c};
+            if (distance(x, own) <= options_.cornerShift &&
+                distance(x, other) <= options_.cornerShift)
+                return x;
+        } else if (p.line) { // a step between two parallel walls, halfway between their ends
+            return onLine(l, 0.5 * (along(own, l.family) + along(other, l.family)));
+        }
+        return onLine(l, along(own, l.family));
+    }
+
+    Ring rebuild(const std::vector<Element>& el) const {
+        Ring out;
+        auto emit = [&](Vec2 p) {
+            if (out.empty() || distance(out.back(), p) > 1e-9)
+                out.push_back(p);
+        };
+        const size_t m = el.size();
+        for (size_t i = 0; i < m; ++i) {
+            const Element& e = el[i];
+            if (!e.line) {
+                emit(at(e.first));
+                continue;
+            }
+            emit(joint(e, el[(i + m - 1) % m], false));
+            emit(joint(e, el[(i + 1) % m], true));
+        }
+        if (out.size() > 1 && distance(out.front(), out.back()) <= 1e-9)
+            out.pop_back();
+        return out;
+    }
+
+    Ring toWorld(const Ring& local) const {
+        Ring out;
+        for (const Vec2& p : local)
+            out.push_back({p.x * cos_ - p.y * sin_, p.x * sin_ + p.y * cos_});
+        return out;
+    }
+
+    StraightenOptions options_;
+    StraightenStats& stats_;
+    double cos_ = 1, sin_ = 0;
+    Ring local_;
+    bool interiorLeft_ = true, freeInside_ = true;
+};
+
+OGRLinearRing* ogrRing(const Ring& ring) {
+    auto* out = new OGRLinearRing;
+    for (const Vec2& p : ring)
+        out->addPoint(p.x, p.y);
+    out->closeRings();
+    return out;
+}
+
+OGRPolygon* ogrPolygon(const Ring& shell, const std::vector<Ring>& holes) {
+    auto* p = new OGRPolygon;
+    p->addRingDirectly(ogrRing(shell));
+    for (const Ring& h : holes)
+        p->addRingDirectly(ogrRing(h));
+    return p;
+}
+
+double areaOf(const OGRGeometry* g) {
+    if (!g)
+        return 0.0;
+    if (auto* s = dynamic_cast<const OGRSurface*>(g))
+        return s->get_Area();
+    if (auto* c = dynamic_cast<const OGRGeometryCollection*>(g))
+        return c->get_Area();
+    return 0.0;
+}
+
+} // namespace
+
+std::optional<double> dominantWallDirection(const OGRGeometry& traced, const OGRGeometry* fine) {
+    // Directions of a coarse simplification: a slanted wall's staircase becomes one segment,
+    // whose direction is the more exact the longer it is (weights: length squared).
+    const GeometryPtr coarse(traced.Simplify(2.0));
+    if (!coarse)
+        return std::nullopt;
+    std::vector<Polygon2> polygons;
+    collectPolygons(coarse.get(), polygons);
+    constexpr int kBins = 180; // half a degree each, over [0, 90)
+    std::vector<double> bins(kBins, 0.0);
+    std::vector<std::pair<double, double>> walls; // degrees mod 90, length
+    double total = 0.0;
+    auto vote = [&](const Ring& r) {
+        for (size_t i = 0; i < r.size(); ++i) {
+            const Vec2 d = r[(i + 1) % r.size()] - r[i];
+            const double len = norm(d);
+            total += len * len;
+            if (len < 8.0)
+                continue;
+            const double deg = std::fmod(std::atan2(d.y, d.x) * 180.0 / M_PI + 360.0, 90.0);
+            bins[static_cast<int>(deg * 2.0) % kBins] += len * len;
+            walls.push_back({deg, len * len});
+        }
+    };
+    for (const Polygon2& p : polygons) {
+        vote(p.shell);
+        for (const Ring& h : p.holes)
+            vote(h);
+    }
+    int best = 0;
+    double bestScore = -1;
+    for (int b = 0; b < kBins; ++b) {
+        double score = 0;
+        for (int k = -2; k <= 2; ++k)
+            score += bins[(b + k + kBins) % kBins];
+        if (score > bestScore)
+            bestScore = score, best = b;
+    }
+    const double centre = (best + 0.5) / 2.0;
+    double sum = 0, weight = 0;
+    for (const auto& [deg, len] : walls) {
+        double delta = std::fmod(deg - centre + 135.0, 90.0) - 45.0;
+        if (delta < -45.0)
+            delta += 90.0;
+        if (std::abs(delta) <= 1.0)
+            sum += delta * len, weight += len;
+    }
+    if (total <= 0.0 || weight < kMinShare * total)
+        return std::nullopt;
+    const double coarseAngle = centre + sum / weight;
+    // A coarse segment may end a pixel or two into a rounded corner, which tilts a long wall
+    // by a degree: refined on the fine outline, whose straight walls are exact.
+    if (fine) {
+        std::vector<Polygon2> finePolygons;
+        collectPolygons(fine, finePolygons);
+        double fineSum = 0, fineWeight = 0;
+        auto refine = [&](const Ring& r) {
+            for (size_t i = 0; i < r.size(); ++i) {
+                const Vec2 d = r[(i + 1) % r.size()] - r[i];
+                const double len = norm(d);
+                if (len < 3.0)
+                    continue;
+                const double deg = std::fmod(std::atan2(d.y, d.x) * 180.0 / M_PI + 360.0, 90.0);
+                double delta = std::fmod(deg - coarseAngle + 135.0, 90.0) - 45.0;
+                if (delta < -45.0)
+                    delta += 90.0;
+                if (std::abs(delta) <= 1.5)
+                    fineSum += delta * len, fineWeight += len;
+            }
+        };
+        for (const Polygon2& p : finePolygons) {
+            refine(p.shell);
+            for (const Ring& h : p.holes)
+                refine(h);
+        }
+        if (fineWeight > 0)
+            return std::fmod(coarseAngle + fineSum / fineWeight + 180.0, 90.0);
+    }
+    return std::fmod(coarseAngle + 90.0, 90.0);
+}
+
+Ring straightenRing(const Ring& ring, bool freeInside, const StraightenOptions& options,
+                    StraightenStats& stats) {
+    return Straightener(ring, freeInside, options, stats).run();
+}
+
+StraightenResult straightenOutlines(const OGRGeometry& outlines, const StraightenOptions& options,
+                                    bool freeInside) {
+    std::vector<Polygon2> polygons;
+    collectPolygons(&outlines, polygons);
+    StraightenResult result;
+    auto all = std::make_unique<OGRMultiPolygon>();
+    for (const Polygon2& p : polygons) {
+        StraightenStats stats;
+        // A ring whose straightened form crosses itself (two walls a band apart on either
+        // side of a thin spot) stays as traced; the others are still straightened.
+        auto straightened = [&](const Ring& ring, bool inside) {
+            StraightenStats own;
+            Ring out = straightenRing(ring, inside, options, own);
+            const std::unique_ptr<OGRPolygon> alone(out.size() >= 3 ? ogrPolygon(out, {})
+                                                                    : nullptr);
+            if (!alone || !alone->IsValid())
+                return ring;
+            stats.walls += own.walls;
+            stats.notchesFilled += own.notchesFilled;
+            return out;
+        };
+        Ring shell = straightened(p.shell, freeInside);
+        std::vector<Ring> holes;
+        for (const Ring& h : p.holes)
+            holes.push_back(straightened(h, !freeInside));
+        const bool degenerate =
+            shell.size() < 3 ||
+            std::any_of(holes.begin(), holes.end(), [](const Ring& h) { return h.size() < 3; });
+        std::unique_ptr<OGRPolygon> straight(degenerate ? nullptr : ogrPolygon(shell, holes));
+        if (straight && straight->IsValid()) {
+            all->addGeometryDirectly(straight.release());
+            result.stats.walls += stats.walls;
+            result.stats.notchesFilled += stats.notchesFilled;
+        } else {
+            all->addGeometryDirectly(ogrPolygon(p.shell, p.holes));
+        }
+    }
+    const GeometryPtr added(all->Difference(&outlines));
+    const GeometryPtr removed(outlines.Difference(all.get()));
+    result.floorAdded = areaOf(added.get());
+    result.floorRemoved = areaOf(removed.get());
+    result.geometry = std::move(all);
+    return result;
+}
+
+} // namespace fc::importing

@@ -1,0 +1,161 @@
+// Straightening traced map walls (importers/MapWalls): ragged walls become lines within the
+// band, shallow notches are filled, teeth deeper than the band and round walls are kept.
+#include "NoisyMap.h"
+#include "formats/PlanIO.h"
+#include "importers/Import.h"
+#include "importers/MapWalls.h"
+
+#include <cmath>
+#include <filesystem>
+#include <gtest/gtest.h>
+#include <random>
+
+namespace fc {
+namespace {
+
+using importing::StraightenOptions;
+using importing::StraightenStats;
+
+// A w x h rectangle (counter-clockwise) traced every pixel with up to `jitter` of noise
+// across each wall, a notch (depth `notch`, 12 px wide) into the bottom wall and a tooth
+// (depth `tooth`, 6 px wide) into the room from the top wall, turned by `deg`.
+Ring raggedRoom(double w, double h, double jitter, double notch, double tooth, double deg,
+                unsigned seed) {
+    std::mt19937 rng(seed);
+    std::uniform_real_distribution<double> noise(-jitter, jitter);
+    Ring r;
+    for (double x = 0; x < w; x += 1) {
+        const bool inNotch = x >= 40 && x < 52;
+        r.push_back({x, (inNotch ? -notch : 0.0) + noise(rng)});
+    }
+    for (double y = 0; y < h; y += 1)
+        r.push_back({w + noise(rng), y});
+    for (double x = w; x > 0; x -= 1) {
+        const bool inTooth = x > 100 && x <= 106;
+        r.push_back({x, h - (inTooth ? tooth : 0.0) + noise(rng)});
+    }
+    for (double y = h; y > 0; y -= 1)
+        r.push_back({noise(rng), y});
+    const double a = deg * M_PI / 180.0;
+    for (Vec2& p : r)
+        p = {p.x * std::cos(a) - p.y * std::sin(a), p.x * std::sin(a) + p.y * std::cos(a)};
+    return r;
+}
+
+double areaOf(const Ring& r) {
+    return std::abs(ringArea(r));
+}
+
+StraightenOptions optionsAt(double deg) {
+    StraightenOptions o;
+    o.angleDeg = deg;
+    o.band = 1.0;
+    o.notchDepth = 2.5;
+    o.minRun = 4.0;
+    return o;
+}
+
+TEST(WallStraightening, ARaggedRoomAtAnyAngleBecomesItsFourWalls) {
+    for (double deg : {0.0, 17.0, 45.0, 73.5}) {
+        StraightenStats stats;
+        const Ring room = raggedRoom(200, 100, 0.5, 2.0, 0.0, deg, 3);
+        const Ring straight = importing::straightenRing(room, true, optionsAt(deg), stats);
+        // The notch (2 px, under the 2.5 px limit) is filled: four corners remain.
+        EXPECT_EQ(straight.size(), 4u) << deg;
+        EXPECT_NEAR(areaOf(straight), 200.0 * 100.0, 0.01 * 200 * 100) << deg;
+        EXPECT_EQ(stats.notchesFilled, 1) << deg;
+        const double a = deg * M_PI / 180.0;
+        for (Vec2 corner : {Vec2{0, 0}, Vec2{200, 0}, Vec2{200, 100}, Vec2{0, 100}}) {
+            const Vec2 c{corner.x * std::cos(a) - corner.y * std::sin(a),
+                         corner.x * std::sin(a) + corner.y * std::cos(a)};
+            double nearest = INFINITY;
+            for (const Vec2& p : straight)
+                nearest = std::min(nearest, distance(p, c));
+            EXPECT_LT(nearest, 2.0) << deg;
+        }
+    }
+}
+
+TEST(WallStraighteningSafety, DeepNotchesAndTeethStay) {
+    StraightenStats stats;
+    // A notch deeper than the limit is floor the robot can use: it stays. A tooth deeper
+    // than the band is a wall the robot must avoid: it stays too.
+    const Ring room = raggedRoom(200, 100, 0.5, 6.0, 4.0, 0.0, 5);
+    const Ring straight = importing::straightenRing(room, true, optionsAt(0), stats);
+    EXPECT_EQ(straight.size(), 12u);
+    EXPECT_EQ(stats.notchesFilled, 0);
+    EXPECT_NEAR(areaOf(straight), 200.0 * 100 + 12 * 6 - 6 * 4, 0.01 * 200 * 100);
+}
+
+TEST(WallStraighteningSafety, AnObstacleIsStraightenedFromTheFloorSide) {
+    // The same outline as an obstacle: its notch (towards the obstacle's inside) is floor
+    // beside it, but now the bottom "notch" points away from the obstacle, into the floor:
+    // it is a tooth of the obstacle and must stay.
+    StraightenStats stats;
+    const Ring pillar = raggedRoom(200, 100, 0.5, 2.0, 0.0, 0.0, 9);
+    const Ring straight = importing::straightenRing(pillar, false, optionsAt(0), stats);
+    EXPECT_EQ(stats.notchesFilled, 0);
+    EXPECT_EQ(straight.size(), 8u);
+}
+
+TEST(WallStraightening, ARoundWallKeepsItsPoints) {
+    Ring circle;
+    for (int i = 0; i < 360; i += 3)
+        circle.push_back({100 * std::cos(i * M_PI / 180), 100 * std::sin(i * M_PI / 180)});
+    StraightenStats stats;
+    const Ring straight = importing::straightenRing(circle, true, optionsAt(0), stats);
+    EXPECT_GT(straight.size(), 80u);
+    EXPECT_NEAR(areaOf(straight), areaOf(circle), 0.005 * areaOf(circle));
+}
+
+Plan samplePlan(const std::string& name) {
+    return loadProjectFile(std::string(FC_PLANS_DIR) + "/" + name + ".geojson").plan;
+}
+
+std::string noisyMapOf(const std::string& name, std::uint64_t seed) {
+    const auto dir = std::filesystem::temp_directory_path() / ("fc-walls-" + name);
+    std::filesystem::create_directories(dir);
+    test::NoisyMapOptions options;
+    options.seed = seed;
+    return test::renderNoisyMap(samplePlan(name), options).write(dir.string(), name);
+}
+
+TEST(WallStraightening, ANoisyMapTracesIntoTheDrawingsFewWalls) {
+    const std::string yaml = noisyMapOf("simple", 4);
+    ImportOptions options;
+    options.roomSegmentation.method = RoomSegmentationMethod::None;
+    const ImportResult straight = importPlanFile(yaml, options);
+    options.cleaning.straightenWalls = false;
+    const ImportResult ragged = importPlanFile(yaml, options);
+    ASSERT_TRUE(straight.cleaning && straight.cleaning->wallAngle);
+    const double angle = *straight.cleaning->wallAngle;
+    EXPECT_LT(std::min(angle, 90.0 - angle), 0.5);
+    EXPECT_GT(straight.cleaning->wallsStraightened, 8);
+    // The drawing: a 4-corner room and a 4-corner pillar; the ragged trace has hundreds.
+    EXPECT_LT(straight.project.plan.boundary.size(), 40u);
+    EXPECT_GT(ragged.project.plan.boundary.size(), 2 * straight.project.plan.boundary.size());
+    // What straightening moved is reported and stays small.
+    const double free = freeAreaOf(straight.project.plan);
+    EXPECT_LT(straight.cleaning->straightenedAdded, 0.01 * free);
+    EXPECT_LT(straight.cleaning->straightenedRemoved, 0.01 * free);
+    EXPECT_NEAR(free, freeAreaOf(samplePlan("simple")), 0.02 * free);
+}
+
+TEST(WallStraightening, RoomsEndOnTheFloorsWalls) {
+    const ImportResult imported = importPlanFile(noisyMapOf("office", 4));
+    const Plan& plan = imported.project.plan;
+    ASSERT_GT(plan.rooms.size(), 5u);
+    // The rooms tile the floor: what lies outside every room is not a sliver along each
+    // wall (before, a quarter of a square metre per room).
+    double rooms = 0;
+    for (const Room& r : plan.rooms)
+        rooms += areaOf(r.outline);
+    double obstaclesInRooms = 0;
+    for (const Ring& o : plan.obstacles)
+        obstaclesInRooms += areaOf(o);
+    EXPECT_GT(rooms - obstaclesInRooms, 0.985 * freeAreaOf(plan));
+}
+
+} // namespace
+} // namespace fc
+
