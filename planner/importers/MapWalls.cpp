@@ -358,8 +358,12 @@ std::optional<double> dominantWallDirection(const OGRGeometry& traced, const OGR
         return std::nullopt;
     const double coarseAngle = centre + sum / weight;
     // A coarse segment may end a pixel or two into a rounded corner, which tilts a long wall
-    // by a degree: refined on the fine outline, whose straight walls are exact.
-    if (fine) {
+    // by a degree. A map whose walls run along its pixel rows and columns (within 1.5
+    // degrees) is refined on the fine outline, whose straight walls are then exact; a slanted
+    // wall's fine outline is a staircase of short pieces, which would bias it.
+    const double offAxis =
+        std::min(std::fmod(coarseAngle + 90.0, 90.0), 90.0 - std::fmod(coarseAngle + 90.0, 90.0));
+    if (fine && offAxis <= 1.5) {
         std::vector<Polygon2> finePolygons;
         collectPolygons(fine, finePolygons);
         double fineSum = 0, fineWeight = 0;

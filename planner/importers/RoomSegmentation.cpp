@@ -5,10 +5,12 @@
 #include "importers/OccupancyGrid.h"
 
 #include <algorithm>
+#include <climits>
 #include <cmath>
 #include <map>
 #include <numeric>
 #include <opencv2/imgproc.hpp>
+#include <queue>
 
 namespace fc::importing {
 
@@ -80,11 +82,56 @@ int morphologicalCores(const cv::Mat& free, int minCells, int maxCells, cv::Mat&
     return rooms;
 }
 
+// Grows the cores over the free cells (4-connected) by the cheapest route, where a step costs
+// the inverse of the clearance there: narrow places are dear, so two rooms meet in the
+// doorway between them, and a cell next to a wall joins the room it stands in (a watershed
+// on the distance relief floods at equal levels: a corridor's basin crept through each door
+// along the band next to every wall of the office behind it, and rooms touched everywhere).
+void growCores(cv::Mat& markers, const cv::Mat& free, const cv::Mat& dist) {
+    cv::Mat cost(markers.size(), CV_32F, cv::Scalar(INFINITY));
+    using Entry = std::pair<float, std::pair<int, int>>;
+    std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> open;
+    for (int r = 0; r < markers.rows; ++r)
+        for (int c = 0; c < markers.cols; ++c)
+            if (markers.at<int>(r, c) > 0) {
+                cost.at<float>(r, c) = 0;
+                open.push({0.0f, {r, c}});
+            }
+    while (!open.empty()) {
+        const auto [g, cell] = open.top();
+        open.pop();
+        const auto [r, c] = cell;
+        if (g > cost.at<float>(r, c))
+            continue;
+        const int label = markers.at<int>(r, c);
+        for (const auto& [dr, dc] :
+             {std::pair{0, 1}, std::pair{1, 0}, std::pair{0, -1}, std::pair{-1, 0}}) {
+            const int rr = r + dr, cc = c + dc;
+            if (rr < 0 || cc < 0 || rr >= markers.rows || cc >= markers.cols ||
+                !free.at<unsigned char>(rr, cc))
+                continue;
+            const float next = g + 1.0f / std::max(dist.at<float>(rr, cc), 0.5f);
+            if (next < cost.at<float>(rr, cc)) {
+                cost.at<float>(rr, cc) = next;
+                markers.at<int>(rr, cc) = label;
+                open.push({next, {rr, cc}});
+            }
+        }
+    }
+}
+
 // Rooms that meet along more than a doorway's width are one room cut at a wide place (a
 // hall around a pillar, a corridor's bend): merged, and the labels renumbered 1..n.
 int mergeAcrossWideBorders(std::vector<std::int32_t>& labels, int width, int height, int rooms,
                            double maxDoorCells) {
-    std::map<std::pair<int, int>, int> border; // cell edges between two rooms
+    // Where two rooms touch, as the span of those cells: a door's border spans the door, a
+    // room cut at a wide place spans that place (a jagged border counts as its span, not as
+    // its staircase's length).
+    struct Extent {
+        int r0 = INT_MAX, r1 = INT_MIN, c0 = INT_MAX, c1 = INT_MIN;
+        int span() const { return std::max(r1 - r0, c1 - c0) + 1; }
+    };
+    std::map<std::pair<int, int>, Extent> border;
     for (int r = 0; r < height; ++r)
         for (int c = 0; c < width; ++c) {
             const int a = labels[static_cast<size_t>(r) * width + c];
@@ -94,8 +141,11 @@ int mergeAcrossWideBorders(std::vector<std::int32_t>& labels, int width, int hei
                 if (r + dr >= height || c + dc >= width)
                     continue;
                 const int b = labels[static_cast<size_t>(r + dr) * width + c + dc];
-                if (b > 0 && b != a)
-                    ++border[{std::min(a, b), std::max(a, b)}];
+                if (b > 0 && b != a) {
+                    Extent& e = border[{std::min(a, b), std::max(a, b)}];
+                    e.r0 = std::min(e.r0, r), e.r1 = std::max(e.r1, r + dr);
+                    e.c0 = std::min(e.c0, c), e.c1 = std::max(e.c1, c + dc);
+                }
             }
         }
     std::vector<int> parent(rooms + 1);
@@ -105,8 +155,8 @@ int mergeAcrossWideBorders(std::vector<std::int32_t>& labels, int width, int hei
             x = parent[x] = parent[parent[x]];
         return x;
     };
-    for (const auto& [pair, cells] : border)
-        if (cells > maxDoorCells)
+    for (const auto& [pair, extent] : border)
+        if (extent.span() > maxDoorCells)
             parent[find(pair.first)] = find(pair.second);
     std::vector<int> renumber(rooms + 1, 0);
     int merged = 0;
@@ -150,22 +200,8 @@ std::vector<std::int32_t> segmentRooms(const std::vector<unsigned char>& freeCel
             out[i] = freeCells[i] ? 1 : 0;
         return out;
     }
-    // Flood from the cores: watershed floods the darkest pixels first, so the free space is
-    // drawn darker the farther it is from a wall and the walls white (flooded last).
-    double maxDistance = 1;
-    cv::minMaxLoc(dist, nullptr, &maxDistance);
-    cv::Mat relief(height, width, CV_8U);
-    for (int r = 0; r < height; ++r)
-        for (int c = 0; c < width; ++c) {
-            const float d = dist.at<float>(r, c);
-            relief.at<unsigned char>(r, c) =
-                d <= 0 ? 255
-                       : static_cast<unsigned char>(254 - std::lround(253.0 * d / maxDistance));
-        }
-    cv::Mat relief3;
-    cv::cvtColor(relief, relief3, cv::COLOR_GRAY2BGR);
-    cv::watershed(relief3, markers);
-    // Watershed lines (-1) and any free cell left unlabelled take the nearest labelled cell's
+    growCores(markers, free, dist);
+    // A free cell no core reached (a part without a core) takes the nearest labelled cell's
     // room.
     cv::Mat unlabelled(height, width, CV_8U), nearest, indices;
     for (int r = 0; r < height; ++r)
@@ -175,11 +211,12 @@ std::vector<std::int32_t> segmentRooms(const std::vector<unsigned char>& freeCel
     const bool anyUnlabelled = cv::countNonZero(unlabelled) > 0;
     std::vector<int> labelOfIndex;
     if (anyUnlabelled) {
-        cv::Mat source = ~unlabelled; // zero where labelled or wall: restrict to labelled free
+        // Zero on the labelled free cells: each cell finds the nearest of those.
+        cv::Mat source(height, width, CV_8U, cv::Scalar(255));
         for (int r = 0; r < height; ++r)
             for (int c = 0; c < width; ++c)
-                if (!free.at<unsigned char>(r, c))
-                    source.at<unsigned char>(r, c) = 255;
+                if (free.at<unsigned char>(r, c) && markers.at<int>(r, c) > 0)
+                    source.at<unsigned char>(r, c) = 0;
         cv::distanceTransform(source, nearest, indices, cv::DIST_L2, 5, cv::DIST_LABEL_PIXEL);
         labelOfIndex.assign(static_cast<size_t>(width) * height + 2, 0);
         for (int r = 0; r < height; ++r)
