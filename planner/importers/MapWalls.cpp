@@ -49,6 +49,30 @@ public:
         const int n = static_cast<int>(local_.size());
         if (n < 4)
             return toWorld(local_);
+        std::vector<Element> elements = runs();
+        reseamAtCorner(elements, n);
+        mergeAcrossExcursions(elements);
+        stats_.walls += static_cast<int>(
+            std::count_if(elements.begin(), elements.end(), [](auto& e) { return e.line; }));
+        return toWorld(rebuild(elements));
+    }
+
+    // How well the two directions fit: the sum of the squared lengths of the runs along
+    // them (a long wall that fits counts more than many short pieces that happen to).
+    double lengthAlongWalls() {
+        if (local_.size() < 4)
+            return 0.0;
+        double sum = 0.0;
+        for (const Element& e : runs())
+            if (e.line)
+                sum += std::pow(spanLength(e.first, e.last, e.family), 2);
+        return sum;
+    }
+
+private:
+    // The outline covered greedily by runs (from the longest) and single points.
+    std::vector<Element> runs() {
+        const int n = static_cast<int>(local_.size());
         const std::vector<int> ext[2] = {extents(0), extents(1)};
         // Start at the longest run, so that the seam never cuts a wall in two.
         int start = 0;
@@ -76,14 +100,9 @@ public:
                 ++k;
             }
         }
-        reseamAtCorner(elements, n);
-        mergeAcrossExcursions(elements);
-        stats_.walls += static_cast<int>(
-            std::count_if(elements.begin(), elements.end(), [](auto& e) { return e.line; }));
-        return toWorld(rebuild(elements));
+        return elements;
     }
 
-private:
     double perp(const Vec2& p, int f) const { return f == 0 ? p.y : p.x; }
     double along(const Vec2& p, int f) const { return f == 0 ? p.x : p.y; }
     const Vec2& at(int k) const { return local_[k % local_.size()]; }
@@ -307,7 +326,8 @@ double areaOf(const OGRGeometry* g) {
 
 } // namespace
 
-std::optional<double> dominantWallDirection(const OGRGeometry& traced, const OGRGeometry* fine) {
+std::optional<double> dominantWallDirection(const OGRGeometry& traced, const OGRGeometry* fine,
+                                            double band) {
     // Directions of a coarse simplification: a slanted wall's staircase becomes one segment,
     // whose direction is the more exact the longer it is (weights: length squared).
     const GeometryPtr coarse(traced.Simplify(2.0));
@@ -340,7 +360,7 @@ std::optional<double> dominantWallDirection(const OGRGeometry& traced, const OGR
     double bestScore = -1;
     for (int b = 0; b < kBins; ++b) {
         double score = 0;
-        for (int k = -2; k <= 2; ++k)
+        for (int k = -4; k <= 4; ++k)
             score += bins[(b + k + kBins) % kBins];
         if (score > bestScore)
             bestScore = score, best = b;
@@ -351,45 +371,42 @@ std::optional<double> dominantWallDirection(const OGRGeometry& traced, const OGR
         double delta = std::fmod(deg - centre + 135.0, 90.0) - 45.0;
         if (delta < -45.0)
             delta += 90.0;
-        if (std::abs(delta) <= 1.0)
+        if (std::abs(delta) <= 2.0)
             sum += delta * len, weight += len;
     }
     if (total <= 0.0 || weight < kMinShare * total)
         return std::nullopt;
     const double coarseAngle = centre + sum / weight;
+    if (!fine)
+        return std::fmod(coarseAngle + 90.0, 90.0);
     // A coarse segment may end a pixel or two into a rounded corner, which tilts a long wall
-    // by a degree. A map whose walls run along its pixel rows and columns (within 1.5
-    // degrees) is refined on the fine outline, whose straight walls are then exact; a slanted
-    // wall's fine outline is a staircase of short pieces, which would bias it.
-    const double offAxis =
-        std::min(std::fmod(coarseAngle + 90.0, 90.0), 90.0 - std::fmod(coarseAngle + 90.0, 90.0));
-    if (fine && offAxis <= 1.5) {
-        std::vector<Polygon2> finePolygons;
-        collectPolygons(fine, finePolygons);
-        double fineSum = 0, fineWeight = 0;
-        auto refine = [&](const Ring& r) {
-            for (size_t i = 0; i < r.size(); ++i) {
-                const Vec2 d = r[(i + 1) % r.size()] - r[i];
-                const double len = norm(d);
-                if (len < 3.0)
-                    continue;
-                const double deg = std::fmod(std::atan2(d.y, d.x) * 180.0 / M_PI + 360.0, 90.0);
-                double delta = std::fmod(deg - coarseAngle + 135.0, 90.0) - 45.0;
-                if (delta < -45.0)
-                    delta += 90.0;
-                if (std::abs(delta) <= 1.5)
-                    fineSum += delta * len, fineWeight += len;
-            }
-        };
+    // by a degree, and a wall that misses its direction by a third of a degree over 20 m
+    // leaves the band. So the direction is the one, on a 0.05 degree grid within 2 degrees,
+    // along which the fine outline runs in the longest walls (ties: the nearer).
+    std::vector<Polygon2> finePolygons;
+    collectPolygons(fine, finePolygons);
+    StraightenOptions probe;
+    probe.band = band;
+    probe.minRun = std::max(4.0, 2.0 * band + 2.0);
+    double chosen = coarseAngle, bestLength = -1;
+    const double first = std::round((coarseAngle - 2.0) / 0.05) * 0.05;
+    for (int k = 0; k <= 80; ++k) {
+        probe.angleDeg = first + 0.05 * k;
+        double length = 0;
+        StraightenStats unused;
         for (const Polygon2& p : finePolygons) {
-            refine(p.shell);
+            length += Straightener(p.shell, true, probe, unused).lengthAlongWalls();
             for (const Ring& h : p.holes)
-                refine(h);
+                length += Straightener(h, false, probe, unused).lengthAlongWalls();
         }
-        if (fineWeight > 0)
-            return std::fmod(coarseAngle + fineSum / fineWeight + 180.0, 90.0);
+        if (length > bestLength + 1e-9 ||
+            (length > bestLength - 1e-9 &&
+             std::abs(probe.angleDeg - coarseAngle) < std::abs(chosen - coarseAngle))) {
+            bestLength = length;
+            chosen = probe.angleDeg;
+        }
     }
-    return std::fmod(coarseAngle + 90.0, 90.0);
+    return std::fmod(std::fmod(chosen, 90.0) + 90.0, 90.0);
 }
 
 Ring straightenRing(const Ring& ring, bool freeInside, const StraightenOptions& options,

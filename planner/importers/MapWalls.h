@@ -12,10 +12,10 @@ namespace fc::importing {
 
 // The dominant wall direction of the traced outlines in degrees in [0, 90) (the other family
 // is at +90), when walls along it hold at least a third of the outline's length (a round or
-// irregular building has none). `fine`: the same outlines simplified within half a cell,
-// on which the direction is refined.
+// irregular building has none). `fine`: the same outlines simplified within half a cell; the
+// direction is refined to the one along which most of it runs as walls within `band`.
 std::optional<double> dominantWallDirection(const OGRGeometry& traced,
-                                            const OGRGeometry* fine = nullptr);
+                                            const OGRGeometry* fine = nullptr, double band = 1.0);
 
 struct StraightenOptions {
     double angleDeg = 0;    // wall direction (see dominantWallDirection)

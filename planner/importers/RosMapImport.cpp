@@ -55,7 +55,8 @@ std::optional<StraightenOptions> straightenOptions(const OGRGeometry& traced,
                                                    const OGRGeometry& fine,
                                                    const MapCleaningOptions& cleaning,
                                                    double resolution) {
-    const std::optional<double> angle = dominantWallDirection(traced, &fine);
+    const std::optional<double> angle =
+        dominantWallDirection(traced, &fine, std::max(cleaning.wallBand, 0.0));
     if (!angle)
         return std::nullopt;
     StraightenOptions o;
