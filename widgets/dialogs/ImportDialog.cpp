@@ -156,7 +156,7 @@ QGroupBox* ImportDialog::buildMapGroup() {
     form->addRow(tr("Fill notches up to:"), opening_);
     form->addRow(tr("Remove obstacles up to:"), closing_);
     form->addRow(tr("Straighten walls:"), straighten_);
-    form->addRow(tr("Fill wall notches up to:"), notch_);
+    form->addRow(tr("Fill notches in straight walls up to:"), notch_);
     form->addRow(tr("Split into rooms:"), rooms_);
     form->addRow(tr("Smallest room:"), minRoom_);
     connect(mapGroup_, &QGroupBox::toggled, this, &ImportDialog::refresh);
@@ -353,7 +353,22 @@ void ImportDialog::drawPreview() {
     for (size_t i = 0; i < plan.rooms.size(); ++i) // tinted, so neighbours stand apart
         scene_->addPolygon(toPolygon(plan.rooms[i].outline), roomPen,
                            QColor::fromHsv(static_cast<int>(i * 137) % 360, 60, 255, 110));
-    view_->fitInView(scene_->itemsBoundingRect(), Qt::KeepAspectRatio);
+    fitPreview();
+}
+
+void ImportDialog::fitPreview() {
+    if (!scene_->items().isEmpty())
+        view_->fitInView(scene_->itemsBoundingRect(), Qt::KeepAspectRatio);
+}
+
+void ImportDialog::showEvent(QShowEvent* event) {
+    QDialog::showEvent(event);
+    fitPreview();
+}
+
+void ImportDialog::resizeEvent(QResizeEvent* event) {
+    QDialog::resizeEvent(event);
+    fitPreview();
 }
 
 } // namespace fc::ui

@@ -53,7 +53,13 @@ public:
 public slots:
     void refresh();
 
+protected:
+    // The preview is fitted to the view's size, known only once the dialog is laid out.
+    void showEvent(QShowEvent* event) override;
+    void resizeEvent(QResizeEvent* event) override;
+
 private:
+    void fitPreview();
     void buildLayerTable(const ImportPreview& preview);
     QGroupBox* buildMapGroup();
     void drawPreview();
