@@ -1,7 +1,6 @@
 // The rooms of an occupancy map's segmentation as plan rooms: simple, disjoint outlines
 // (GEOS through OGR), since a plan's room is one ring and rooms may not overlap.
 #include "importers/MapTracing.h"
-#include "importers/MapWalls.h"
 
 #include <algorithm>
 #include <ogr_api.h>
@@ -86,8 +85,8 @@ void openSlightly(GeometryPtr& g) {
         g.reset(g->Buffer(0.05, 1));
 }
 
-// Vertices where the outline turns back on itself within a degree: the thin wedges left
-// where a grown room's chamfer meets a neighbour's diagonal border (plans refuse spikes).
+// Vertices where the outline turns back on itself within a degree: thin wedges left where
+// rooms are cut against each other and the floor (plans refuse spikes).
 void dropSpikes(Ring& ring) {
     for (bool changed = true; changed && ring.size() >= 3;) {
         changed = false;
@@ -110,9 +109,9 @@ void dropSpikes(Ring& ring) {
 std::vector<Room> roomsFromLabels(const std::vector<std::int32_t>& labels,
                                   const std::vector<unsigned char>& free, int width, int height,
                                   const OGRGeometry& kept, double tolerance, const RosMapInfo& info,
-                                  const StraightenOptions* straighten) {
+                                  bool straightWalls) {
     std::vector<GeometryPtr> regions; // each room's largest simplified part, with its holes
-    if (straighten) {
+    if (straightWalls) {
         // The floor's walls were straightened on their own: each room is its territory (the
         // map's cells nearest to it, walls included) cut by the floor, so it ends exactly on
         // the floor's walls and leaves no sliver outside every room (each

@@ -29,12 +29,11 @@ void toMapFrame(std::vector<Polygon2>& polygons, int imageHeight, const RosMapIn
 // Rooms "Room 1".."Room n" from a segmentation's labels, numbered top to bottom, left to
 // right, as disjoint simple outlines inside `kept` (pixel units): obstacles inside a room are
 // part of its outline, a room that encloses another is cut in two, a room outside `kept` (a
-// dropped separate part) is left out. With `straighten` (the floor's walls were
+// dropped separate part) is left out. With `straightWalls` (the floor's walls were
 // straightened), each room is its territory cut by `kept`, so that it ends on those walls.
-struct StraightenOptions;
 std::vector<Room> roomsFromLabels(const std::vector<std::int32_t>& labels,
                                   const std::vector<unsigned char>& free, int width, int height,
                                   const OGRGeometry& kept, double tolerance, const RosMapInfo& info,
-                                  const StraightenOptions* straighten = nullptr);
+                                  bool straightWalls = false);
 
 } // namespace fc::importing

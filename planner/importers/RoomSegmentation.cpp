@@ -201,37 +201,21 @@ std::vector<std::int32_t> segmentRooms(const std::vector<unsigned char>& freeCel
         return out;
     }
     growCores(markers, free, dist);
-    // A free cell no core reached (a part without a core) takes the nearest labelled cell's
-    // room.
-    cv::Mat unlabelled(height, width, CV_8U), nearest, indices;
-    for (int r = 0; r < height; ++r)
-        for (int c = 0; c < width; ++c)
-            unlabelled.at<unsigned char>(r, c) =
-                free.at<unsigned char>(r, c) && markers.at<int>(r, c) <= 0 ? 255 : 0;
-    const bool anyUnlabelled = cv::countNonZero(unlabelled) > 0;
-    std::vector<int> labelOfIndex;
-    if (anyUnlabelled) {
-        // Zero on the labelled free cells: each cell finds the nearest of those.
-        cv::Mat source(height, width, CV_8U, cv::Scalar(255));
-        for (int r = 0; r < height; ++r)
-            for (int c = 0; c < width; ++c)
-                if (free.at<unsigned char>(r, c) && markers.at<int>(r, c) > 0)
-                    source.at<unsigned char>(r, c) = 0;
-        cv::distanceTransform(source, nearest, indices, cv::DIST_L2, 5, cv::DIST_LABEL_PIXEL);
-        labelOfIndex.assign(static_cast<size_t>(width) * height + 2, 0);
-        for (int r = 0; r < height; ++r)
-            for (int c = 0; c < width; ++c)
-                if (source.at<unsigned char>(r, c) == 0)
-                    labelOfIndex[indices.at<int>(r, c)] = markers.at<int>(r, c);
+    bool unreached = false;
+    for (size_t i = 0; i < out.size(); ++i) {
+        if (!freeCells[i])
+            continue;
+        out[i] =
+            std::max(markers.at<int>(static_cast<int>(i / width), static_cast<int>(i % width)), 0);
+        unreached = unreached || out[i] == 0;
     }
-    for (int r = 0; r < height; ++r)
-        for (int c = 0; c < width; ++c) {
-            const size_t i = static_cast<size_t>(r) * width + c;
-            if (!freeCells[i])
-                continue;
-            const int label = markers.at<int>(r, c);
-            out[i] = label > 0 ? label : labelOfIndex[indices.at<int>(r, c)];
-        }
+    // A free cell no core reached (a part without a core) takes the nearest room.
+    if (unreached) {
+        const std::vector<std::int32_t> nearest = labelTerritories(out, width, height);
+        for (size_t i = 0; i < out.size(); ++i)
+            if (freeCells[i] && out[i] == 0)
+                out[i] = nearest[i];
+    }
     if (options.maxDoorWidth > 0)
         rooms =
             mergeAcrossWideBorders(out, width, height, rooms, options.maxDoorWidth / resolution);
