@@ -199,7 +199,7 @@ TEST(WallStraightening, AMapOfATurnedBuildingFindsItsAngle) {
         const double drawnLength = planCoverage(drawn).metrics.length;
         const PlanResult result = planCoverage(mapped);
         EXPECT_GT(result.metrics.coverage, 0.99) << name;
-        // Measured: +25% (simple), +29% (room-obstacle) at 23 degrees, against +2% and +17%
+        // Measured: paths +25% (simple), +29% (room-obstacle) at 23 degrees, against 0-8%
         // for the same maps drawn along the pixel axes (docs/formats.md): the turned
         // outline's pixel staircase still leaves short folds.
         EXPECT_LT(result.metrics.length, 1.4 * drawnLength) << name;
