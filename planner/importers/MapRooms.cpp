@@ -104,6 +104,39 @@ void dropSpikes(Ring& ring) {
     }
 }
 
+// A ring that touches itself, as its loops: GEOS keeps a room pinched at a point (where a
+// doorway's border meets a wall's corner) as one ring, which plans refuse.
+std::vector<Ring> splitAtPinches(Ring ring, double tolerance) {
+    std::vector<Ring> loops, todo{std::move(ring)};
+    while (!todo.empty()) {
+        Ring r = std::move(todo.back());
+        todo.pop_back();
+        const size_t n = r.size();
+        bool split = false;
+        for (size_t i = 0; i < n && !split; ++i)
+            for (size_t j = 0; j < n && !split; ++j) {
+                if (j == i || (j + 1) % n == i ||
+                    pointSegmentDistance(r[i], r[j], r[(j + 1) % n]) > tolerance)
+                    continue;
+                // r[i] lies on the edge r[j] r[j+1]: one loop runs r[i] .. r[j], the other
+                // r[j+1] .. r[i].
+                Ring first, second;
+                for (size_t k = i; k != (j + 1) % n; k = (k + 1) % n)
+                    first.push_back(r[k]);
+                for (size_t k = (j + 1) % n; k != i; k = (k + 1) % n)
+                    second.push_back(r[k]);
+                second.push_back(r[i]);
+                for (Ring* loop : {&first, &second})
+                    if (loop->size() >= 3 && ringArea(*loop) > tolerance * tolerance)
+                        todo.push_back(std::move(*loop));
+                split = true;
+            }
+        if (!split)
+            loops.push_back(std::move(r));
+    }
+    return loops;
+}
+
 } // namespace
 
 std::vector<Room> roomsFromLabels(const std::vector<std::int32_t>& labels,
@@ -180,14 +213,19 @@ std::vector<Room> roomsFromLabels(const std::vector<std::int32_t>& labels,
             collectPolygons(piece.get(), room);
             if (room.empty() || room[0].shell.size() < 3)
                 continue;
-            toMapFrame(room, height, info);
             dropSpikes(room[0].shell);
-            if (room[0].shell.size() < 3)
-                continue;
-            Vec2 centre;
-            for (const Vec2& p : room[0].shell)
-                centre = centre + p * (1.0 / room[0].shell.size());
-            outlines.emplace_back(centre, std::move(room[0].shell));
+            const double minArea = kMinPieceArea / (info.resolution * info.resolution);
+            for (Ring& loop : splitAtPinches(std::move(room[0].shell), 0.01)) {
+                if (ringArea(loop) < minArea)
+                    continue; // a sliver pinched off: free space outside every room
+                std::vector<Polygon2> part{{std::move(loop), {}}};
+                toMapFrame(part, height, info);
+                Ring& shell = part[0].shell;
+                Vec2 centre;
+                for (const Vec2& p : shell)
+                    centre = centre + p * (1.0 / shell.size());
+                outlines.emplace_back(centre, std::move(shell));
+            }
         }
     }
     std::sort(outlines.begin(), outlines.end(), [](const auto& a, const auto& b) {

@@ -1,7 +1,8 @@
 // Room segmentation of a cleaned occupancy grid (issue 15), after ipa_room_segmentation's
-// distance-transform and morphological variants: room cores are found where the free space
-// is wide, then grown back over all free cells with OpenCV's watershed, whose flooding from
-// the wide middle of each room towards the walls meets other rooms in the doorways.
+// distance-transform and morphological variants. The distance variant splits the free space
+// into the basins of the distance to the walls and keeps apart the basins whose peaks stand
+// clearly above the doorway between them; the morphological variant erodes the free space
+// into room cores and grows them back over the free cells, the narrow places dearest.
 #include "importers/OccupancyGrid.h"
 
 #include <algorithm>
@@ -16,38 +17,78 @@ namespace fc::importing {
 
 namespace {
 
-// Labels (1..n) of the components of `mask` of at least `minCells` cells; the rest 0.
-int labelLargeComponents(const cv::Mat& mask, int minCells, cv::Mat& labels) {
-    cv::Mat stats, centroids;
-    const int n = cv::connectedComponentsWithStats(mask, labels, stats, centroids, 8, CV_32S);
-    std::vector<int> relabel(n, 0);
-    int kept = 0;
-    for (int i = 1; i < n; ++i)
-        if (stats.at<int>(i, cv::CC_STAT_AREA) >= minCells)
-            relabel[i] = ++kept;
-    for (int r = 0; r < labels.rows; ++r) {
-        int* row = labels.ptr<int>(r);
-        for (int c = 0; c < labels.cols; ++c)
-            row[c] = relabel[row[c]];
-    }
-    return kept;
-}
-
-// Distance variant: the threshold on the distance to the nearest wall that splits the free
-// space into the most cores of at least `minCells` (ties: the lowest threshold).
-int distanceCores(const cv::Mat& dist, int minCells, double step, cv::Mat& markers) {
-    double maxDistance = 0;
-    cv::minMaxLoc(dist, nullptr, &maxDistance);
-    int best = 0;
-    for (double t = step; t < maxDistance; t += step) {
-        cv::Mat labels;
-        const int count = labelLargeComponents(dist > t, minCells, labels);
-        if (count > best) {
-            best = count;
-            markers = labels;
+// Distance variant: the basins of the distance to the walls. Cells are taken from the widest
+// place down; each joins the basin of its neighbour that stands highest (so the band along a
+// wall joins the room it lines, never the basin next door). Where two basins meet, at a saddle
+// (a doorway), both stay rooms when each peak stands clearly above the saddle (by `minRatio`
+// times and `minRise` cells) and holds `minCells`; otherwise the lesser joins the greater (a
+// corridor's bumps, the two sides of a pillar, an alcove). Topological persistence, in short.
+int distanceBasins(const cv::Mat& free, const cv::Mat& dist, int minCells, double minRise,
+                   double minRatio, cv::Mat& markers) {
+    const int width = free.cols;
+    std::vector<int> order;
+    for (int r = 0; r < free.rows; ++r)
+        for (int c = 0; c < width; ++c)
+            if (free.at<unsigned char>(r, c))
+                order.push_back(r * width + c);
+    const auto height = [&](int cell) { return dist.at<float>(cell / width, cell % width); };
+    std::stable_sort(order.begin(), order.end(),
+                     [&](int a, int b) { return height(a) > height(b); });
+    std::vector<int> parent(free.total(), -1), size(free.total(), 0);
+    std::vector<float> peak(free.total(), 0);
+    const auto find = [&](int x) {
+        while (parent[x] != x)
+            x = parent[x] = parent[parent[x]];
+        return x;
+    };
+    const auto significant = [&](int root, float saddle) {
+        return peak[root] - saddle >= minRise && peak[root] >= minRatio * saddle &&
+               size[root] >= minCells;
+    };
+    for (const int cell : order) {
+        const int r = cell / width, c = cell % width;
+        const float level = height(cell);
+        std::vector<int> neighbours;
+        int steepest = -1;
+        for (int dr = -1; dr <= 1; ++dr)
+            for (int dc = -1; dc <= 1; ++dc) {
+                const int rr = r + dr, cc = c + dc;
+                if ((dr || dc) && rr >= 0 && cc >= 0 && rr < free.rows && cc < width &&
+                    parent[rr * width + cc] >= 0) {
+                    neighbours.push_back(rr * width + cc);
+                    if (steepest < 0 || height(rr * width + cc) > height(steepest))
+                        steepest = rr * width + cc;
+                }
+            }
+        if (steepest < 0) { // a peak: a basin of its own
+            parent[cell] = cell, size[cell] = 1, peak[cell] = level;
+            continue;
+        }
+        const int basin = find(steepest);
+        parent[cell] = basin;
+        ++size[basin];
+        for (const int neighbour : neighbours) {
+            int a = find(cell), b = find(neighbour);
+            if (a == b)
+                continue;
+            if (peak[a] < peak[b])
+                std::swap(a, b);
+            if (significant(b, level))
+                continue; // two rooms meet here
+            parent[b] = a;
+            size[a] += size[b];
         }
     }
-    return best;
+    markers = cv::Mat::zeros(free.size(), CV_32S);
+    std::vector<int> labelOfRoot(free.total(), 0);
+    int rooms = 0;
+    for (const int cell : order) {
+        const int root = find(cell);
+        if (!labelOfRoot[root])
+            labelOfRoot[root] = ++rooms;
+        markers.at<int>(cell / width, cell % width) = labelOfRoot[root];
+    }
+    return rooms;
 }
 
 // Morphological variant: the free space is eroded cell by cell; a component that has become
@@ -183,16 +224,18 @@ std::vector<std::int32_t> segmentRooms(const std::vector<unsigned char>& freeCel
     const double cellArea = resolution * resolution;
     const int minCells = std::max(1, static_cast<int>(options.minRoomArea / cellArea));
     cv::Mat dist;
-    cv::distanceTransform(free, dist, cv::DIST_L2, 5);
+    cv::distanceTransform(free, dist, cv::DIST_L2, cv::DIST_MASK_PRECISE);
     cv::Mat markers;
     if (options.method == RoomSegmentationMethod::Distance) {
-        // Cores of a quarter of the smallest room's area: a room of that size keeps that much
-        // of its middle at the threshold where its doorway has closed.
-        rooms = distanceCores(dist, std::max(1, minCells / 4), std::max(1.0, 0.1 / resolution),
-                              markers);
+        // A doorway 0.9 m wide off a corridor 1.8 m wide: the corridor's peak stands twice as
+        // high as the saddle in the door; a corridor's own bumps stand a few cells high.
+        rooms =
+            distanceBasins(free, dist, std::max(1, minCells / 4), 0.25 / resolution, 1.4, markers);
     } else {
         const int maxCells = std::max(minCells, static_cast<int>(60.0 / cellArea));
         rooms = morphologicalCores(free, std::max(1, minCells / 4), maxCells, markers);
+        if (rooms > 0)
+            growCores(markers, free, dist);
     }
     if (rooms == 0) { // too small to split: one room
         rooms = 1;
@@ -200,7 +243,6 @@ std::vector<std::int32_t> segmentRooms(const std::vector<unsigned char>& freeCel
             out[i] = freeCells[i] ? 1 : 0;
         return out;
     }
-    growCores(markers, free, dist);
     bool unreached = false;
     for (size_t i = 0; i < out.size(); ++i) {
         if (!freeCells[i])

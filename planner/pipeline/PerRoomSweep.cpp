@@ -22,6 +22,9 @@ constexpr size_t kPerRoomSearchMaxRooms = 60;
 constexpr size_t kPerRoomReplans = 2;
 // Distances closer than this (m) are ties: a rotated plan must choose as the upright one.
 constexpr double kTieTolerance = 1e-6;
+// Screened candidates that miss at most this share of the floor (before touch-ups) rank by
+// estimated time.
+constexpr double kScreenedLoss = 0.02;
 
 double normalizedAngle(double deg) {
     return std::fmod(std::fmod(deg, 180.0) + 180.0, 180.0);
@@ -470,8 +473,19 @@ PlanResult planPerRoom(const PlanRequest& request, const SolveControl& control) 
                 angle = normalizedAngle(angle + 90.0);
         screen(turned);
     }
+    // Screened without wall touch-ups (they take longer than the plan on ragged maps): what
+    // they would sweep, wedges along walls the stripes miss, is no reason to drop a
+    // candidate, so misses up to kScreenedLoss of the floor count as complete here. The
+    // finalists are compared with their touch-ups.
     std::stable_sort(screened.begin(), screened.end(), [](const Screened& a, const Screened& b) {
-        return betterPlanChoice(a.metrics, b.metrics);
+        const auto complete = [](const Metrics& m) {
+            return m.uncoveredArea <= kScreenedLoss * m.requiredArea;
+        };
+        if (complete(a.metrics) != complete(b.metrics))
+            return complete(a.metrics);
+        if (!complete(a.metrics))
+            return a.metrics.uncoveredArea < b.metrics.uncoveredArea;
+        return a.metrics.time < b.metrics.time;
     });
     // The family and the best screened candidates, planned with the requested solver side
     // by side (each plan is independent; only cancellation is shared, and it is atomic).
@@ -488,7 +502,9 @@ PlanResult planPerRoom(const PlanRequest& request, const SolveControl& control) 
     std::vector<std::future<PlanResult>> plans;
     for (const auto& finalist : finalists)
         plans.push_back(std::async(std::launch::async, [&request, finalist, quiet]() {
-            return planWithRoomAngles(request, finalist, quiet);
+            PlanResult plan = planWithRoomAngles(request, finalist, quiet);
+            applyTouchUps(request, plan);
+            return plan;
         }));
     std::optional<PlanResult> best;
     std::exception_ptr failure;

@@ -228,18 +228,30 @@ std::vector<double> dominantWallAngles(const Plan& plan, int families) {
             walls.push_back({deg, norm(d)});
         }
     };
-    // The exact direction of a family: the length-weighted mean of the walls within half a
+    // The exact direction of a family: the length-weighted median of the walls within half a
     // degree of its bin (a plan drawn at 219.6843 degrees sweeps at that angle, not 219.7).
+    // A median, not a mean: short edges a little off (a traced doorway, a chamfered corner)
+    // must not turn the sweep off the walls by a ten-thousandth of a degree, which splits
+    // every wall's cells at its ends.
     auto refined = [&](double bin) {
-        double sum = 0.0, weight = 0.0;
+        std::vector<std::pair<double, double>> near; // deviation, length
+        double weight = 0.0;
         for (const auto& [deg, length] : walls) {
             double delta = std::fmod(deg - bin + 135.0, 90.0) - 45.0; // in [-45, 45)
             if (delta < -45.0)
                 delta += 90.0;
             if (std::abs(delta) <= 0.55)
-                sum += delta * length, weight += length;
+                near.push_back({delta, length}), weight += length;
         }
-        const double a = weight > 0.0 ? bin + sum / weight : bin;
+        std::sort(near.begin(), near.end());
+        double a = bin, below = 0.0;
+        for (const auto& [delta, length] : near) {
+            below += length;
+            if (below >= weight / 2) {
+                a = bin + delta;
+                break;
+            }
+        }
         return std::fmod(a + 90.0, 90.0);
     };
     vote(plan.boundary);
@@ -426,6 +438,7 @@ PlanResult planWithoutTouchUps(const PlanRequest& request, const SolveControl& c
     for (double angle : candidateAngles(request.plan)) {
         try {
             PlanResult r = planOneAngle(request, angle, control);
+            applyTouchUps(request, r);
             if (!best || betterPlanChoice(r.metrics, best->metrics))
                 best = std::move(r);
         } catch (const InputError& e) {
@@ -444,25 +457,23 @@ PlanResult planWithoutTouchUps(const PlanRequest& request, const SolveControl& c
 
 } // namespace
 
-PlanResult planCoverage(const PlanRequest& request, const SolveControl& control) {
-    const auto t0 = std::chrono::steady_clock::now();
-    PlanResult result = planWithoutTouchUps(request, control);
-    // Wall touch-ups once, on the chosen plan (the candidates compare without them), where
-    // it misses more than kTouchUpFraction of the floor: each adds turns, so a plan that
-    // already covers 99.65% keeps its clean pattern.
+void applyTouchUps(const PlanRequest& request, PlanResult& result) {
+    // Only where the plan misses more than kTouchUpFraction of the floor: each touch-up adds
+    // turns, so a plan that already covers 99.65% keeps its clean pattern.
     const Metrics before = result.metrics;
+    if (!(before.uncoveredArea > kTouchUpFraction * before.requiredArea))
+        return;
     std::vector<std::string> required = request.rooms;
     if (required.empty())
         required = result.prepared.decomposition.roomNames;
-    if (before.uncoveredArea > kTouchUpFraction * before.requiredArea)
-        touchUpCoverage(result.prepared, required, result.path, result.metrics);
+    touchUpCoverage(result.prepared, required, result.path, result.metrics);
     if (result.metrics.coveredArea > before.coveredArea) {
         result.metrics.graphCost = before.graphCost;
         result.metrics.lowerBound = before.lowerBound;
         result.metrics.cells = before.cells;
+        const auto old = coverageLossWarnings(before);
         result.warnings.erase(std::remove_if(result.warnings.begin(), result.warnings.end(),
                                              [&](const std::string& w) {
-                                                 const auto old = coverageLossWarnings(before);
                                                  return std::find(old.begin(), old.end(), w) !=
                                                         old.end();
                                              }),
@@ -470,6 +481,15 @@ PlanResult planCoverage(const PlanRequest& request, const SolveControl& control)
         for (const std::string& loss : coverageLossWarnings(result.metrics))
             result.warnings.push_back(loss);
     }
+}
+
+PlanResult planCoverage(const PlanRequest& request, const SolveControl& control) {
+    const auto t0 = std::chrono::steady_clock::now();
+    PlanResult result = planWithoutTouchUps(request, control);
+    // The candidates of a search over angles were compared with their touch-ups (a plan
+    // that leaves wedges along slanted walls may be the best once they are swept); a plan of
+    // one angle gets them here.
+    applyTouchUps(request, result);
     result.metrics.seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     return result;

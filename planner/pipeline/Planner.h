@@ -132,6 +132,11 @@ inline constexpr double kTouchUpFraction = 0.0035;
 void touchUpCoverage(const PreparedPlan& prepared, const std::vector<std::string>& requiredRooms,
                      CoveragePath& path, Metrics& metrics);
 
+// touchUpCoverage on a plan that misses more than kTouchUpFraction of its floor; warnings
+// and metrics follow. Candidate plans are compared after it: what they leave is what it
+// cannot reach.
+void applyTouchUps(const PlanRequest& request, PlanResult& result);
+
 // Per-room (the default), auto or fixed sweep angle, as request.sweep says.
 PlanResult planCoverage(const PlanRequest& request, const SolveControl& control = {});
 

@@ -158,6 +158,19 @@ TEST(PerRoomSweep, RoomsFollowTheirOwnWallsAtAnyRotation) {
     EXPECT_NEAR(std::fmod(std::abs(upright.at("Corridor") - upright.at("N01")), 180.0), 90.0, 0.11);
 }
 
+TEST(PerRoomSweep, ShortEdgesALittleOffDoNotTurnTheSweepOffTheWalls) {
+    // A traced room: long walls exactly along the axes and short edges a hundredth of a
+    // degree off (a doorway's trace). The sweep must run exactly along the walls: the
+    // ten-thousandth of a degree a mean gives splits every wall's cells at its ends.
+    Plan plan;
+    plan.boundary = {{0, 0}, {8, 0}, {8, 4}, {0, 4}};
+    Ring room = {{0, 0}, {8, 0}, {8, 4}, {4.6, 4}, {4.0, 4.0001}, {0, 4}};
+    plan.rooms.push_back({"Traced", room});
+    const auto angles = roomSweepAngles(plan, {});
+    EXPECT_EQ(angles.at("Traced"), 0.0);
+    EXPECT_EQ(angles.at(""), 0.0);
+}
+
 TEST(PerRoomSweep, OverrideFixesOneRoomsAngle) {
     SweepOptions sweep;
     sweep.roomAngles["N01"] = 45.0;
