@@ -209,32 +209,60 @@ Polyline ClearanceField::searchWindow(Vec2 a, Vec2 b, const BoundingBox& window,
             pts.push_back(c);
     const int n = static_cast<int>(pts.size());
     // Lazy A*: an entry (v reached from u) is pushed unchecked and its segment tested
-    // only when it is popped, so most of the n^2 visibility tests never run.
-    std::vector<double> g(n, INFINITY);
-    std::vector<int> from(n, -1);
+    // only when it is popped, so most of the n^2 visibility tests never run. Only an entry
+    // that improves on v's best pushed one is pushed (the heap held n entries per closed
+    // node: most of the time went into growing it on maps with thousands of corners); when
+    // v's entry is found blocked, v is re-seated on the best closed node that sees it, which
+    // is the entry the full heap would have tried next for v.
+    std::vector<double> g(n, INFINITY), pushed(n, INFINITY);
+    std::vector<int> from(n, -1), closedNodes;
     std::vector<char> closed(n, 0);
     struct Entry {
         double f, g;
         int v, parent;
+        bool verified;
         bool operator>(const Entry& o) const { return f > o.f; }
     };
     std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> open;
     g[0] = 0;
-    open.push({distance(a, b), 0, 0, -1});
+    open.push({distance(a, b), 0, 0, -1, true});
+    std::vector<std::pair<double, int>> parents;
     while (!open.empty()) {
         const Entry top = open.top();
         open.pop();
         const int u = top.v;
-        if (closed[u])
+        if (closed[u] || (!top.verified && top.g > pushed[u]))
             continue;
-        if (top.parent >= 0) {
+        if (!top.verified) {
             if (checksLeft == 0)
                 return {};
             --checksLeft;
-            if (!segmentIsClear(pts[top.parent], pts[u]))
-                continue; // blocked: u may still arrive through another parent
+            if (!segmentIsClear(pts[top.parent], pts[u])) {
+                parents.clear();
+                for (const int c : closedNodes)
+                    if (c != top.parent)
+                        parents.push_back({g[c] + distance(pts[c], pts[u]), c});
+                // Nearest first; a heap, as the first clear one is usually among the first.
+                std::make_heap(parents.begin(), parents.end(), std::greater<>());
+                pushed[u] = INFINITY;
+                while (!parents.empty()) {
+                    std::pop_heap(parents.begin(), parents.end(), std::greater<>());
+                    const auto [nd, c] = parents.back();
+                    parents.pop_back();
+                    if (checksLeft == 0)
+                        return {};
+                    --checksLeft;
+                    if (segmentIsClear(pts[c], pts[u])) {
+                        pushed[u] = nd;
+                        open.push({nd + distance(pts[u], b), nd, u, c, true});
+                        break;
+                    }
+                }
+                continue;
+            }
         }
         closed[u] = 1;
+        closedNodes.push_back(u);
         g[u] = top.g;
         from[u] = top.parent;
         if (u == 1)
@@ -243,7 +271,10 @@ Polyline ClearanceField::searchWindow(Vec2 a, Vec2 b, const BoundingBox& window,
             if (closed[v])
                 continue;
             const double nd = g[u] + distance(pts[u], pts[v]);
-            open.push({nd + distance(pts[v], b), nd, v, u});
+            if (nd < pushed[v]) {
+                pushed[v] = nd;
+                open.push({nd + distance(pts[v], b), nd, v, u, false});
+            }
         }
     }
     if (!closed[1])

@@ -13,6 +13,9 @@ namespace {
 
 // Groups of missed points handled at most (each costs a few clearance queries).
 constexpr size_t kMaxGaps = 4000;
+// Segment tests per route to a touch-up stroke: the route is a few widths long at most, and a
+// search that fails among a ragged map's thousands of corners would otherwise test them all.
+constexpr size_t kMaxRouteChecks = 20'000;
 
 using CellKey = std::pair<long long, long long>;
 
@@ -144,7 +147,7 @@ CoverageRepairStats repairCoverage(const Decomposition& dec, CoveragePath& path,
             if (field.segmentIsClear(v, a))
                 route = {v, a};
             else
-                route = field.findPath(v, a, {}, maxDetour);
+                route = field.findPath(v, a, {}, maxDetour, kMaxRouteChecks);
             if (!route.empty() && polylineLength(route) > maxDetour)
                 route.clear();
             if (!route.empty())

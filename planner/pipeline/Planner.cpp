@@ -461,8 +461,9 @@ void applyTouchUps(const PlanRequest& request, PlanResult& result) {
     // Only where the plan misses more than kTouchUpFraction of the floor: each touch-up adds
     // turns, so a plan that already covers 99.65% keeps its clean pattern.
     const Metrics before = result.metrics;
-    if (!(before.uncoveredArea > kTouchUpFraction * before.requiredArea))
+    if (result.touchedUp || !(before.uncoveredArea > kTouchUpFraction * before.requiredArea))
         return;
+    result.touchedUp = true;
     std::vector<std::string> required = request.rooms;
     if (required.empty())
         required = result.prepared.decomposition.roomNames;

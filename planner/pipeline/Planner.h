@@ -54,6 +54,7 @@ struct PlanResult {
     double stripeAngleDeg = 90.0;
     // Set when rooms were swept at different angles (per-room); empty for one angle.
     std::vector<PlanPart> parts;
+    bool touchedUp = false; // applyTouchUps has run (it runs once per plan)
 };
 
 // Validates (throws InputError) and builds decomposition and graph for one sweep angle
