@@ -284,6 +284,26 @@
         <source>There is no such vertex.</source>
         <translation>Diesen Eckpunkt gibt es nicht.</translation>
     </message>
+    <message>
+        <source>Choose two different rooms to merge.</source>
+        <translation>Wählen Sie zwei verschiedene Räume zum Zusammenführen.</translation>
+    </message>
+    <message>
+        <source>%1 and %2 cannot be merged: %3</source>
+        <translation>%1 und %2 lassen sich nicht zusammenführen: %3</translation>
+    </message>
+    <message>
+        <source>Merge rooms %1 and %2</source>
+        <translation>Räume %1 und %2 zusammenführen</translation>
+    </message>
+    <message>
+        <source>%1 cannot be split: %2</source>
+        <translation>%1 lässt sich nicht teilen: %2</translation>
+    </message>
+    <message>
+        <source>Split room %1 (new room %2)</source>
+        <translation>Raum %1 teilen (neuer Raum %2)</translation>
+    </message>
 </context>
 <context>
     <name>fc::ui::DocumentFiles</name>
@@ -387,6 +407,110 @@
     <message>
         <source>Free area %1 m², %2 obstacles, %3 rooms</source>
         <translation>Freie Fläche %1 m², %2 Hindernisse, %3 Räume</translation>
+    </message>
+    <message>
+        <source>Clean the map</source>
+        <translation>Karte bereinigen</translation>
+    </message>
+    <message>
+        <source>Walls</source>
+        <translation>Wände</translation>
+    </message>
+    <message>
+        <source>Floor</source>
+        <translation>Boden</translation>
+    </message>
+    <message>
+        <source> m²</source>
+        <translation> m²</translation>
+    </message>
+    <message>
+        <source>Obstacle specks smaller than this become floor (sensor noise)</source>
+        <translation>Hindernisflecken unter dieser Größe werden Boden (Sensorrauschen)</translation>
+    </message>
+    <message>
+        <source>Free islands smaller than this are dropped</source>
+        <translation>Freie Inseln unter dieser Größe werden verworfen</translation>
+    </message>
+    <message>
+        <source>Notches and slivers narrower than twice this are filled (the robot&apos;s radius: what its body cannot enter)</source>
+        <translation>Nischen und Spalten schmaler als das Doppelte werden gefüllt (der Roboterradius: wohin sein Körper nicht passt)</translation>
+    </message>
+    <message>
+        <source>Obstacles thinner than twice this vanish (0: off; thin walls too)</source>
+        <translation>Hindernisse dünner als das Doppelte verschwinden (0: aus; auch dünne Wände)</translation>
+    </message>
+    <message>
+        <source>Along the map&apos;s two main directions</source>
+        <translation>Entlang der zwei Hauptrichtungen der Karte</translation>
+    </message>
+    <message>
+        <source>Each ragged wall becomes one line within a cell of its scan, so the path runs along it instead of zigzagging</source>
+        <translation>Jede ausgefranste Wand wird eine Linie innerhalb einer Zelle ihres Scans, sodass der Pfad an ihr entlang läuft statt im Zickzack</translation>
+    </message>
+    <message>
+        <source>Notches in a straightened wall up to this deep are filled</source>
+        <translation>Nischen in einer begradigten Wand bis zu dieser Tiefe werden gefüllt</translation>
+    </message>
+    <message>
+        <source>At doorways (distance)</source>
+        <translation>An Türen (Abstand)</translation>
+    </message>
+    <message>
+        <source>At doorways (morphological)</source>
+        <translation>An Türen (morphologisch)</translation>
+    </message>
+    <message>
+        <source>One room</source>
+        <translation>Ein Raum</translation>
+    </message>
+    <message>
+        <source>Smaller rooms (alcoves, door recesses) join a neighbour</source>
+        <translation>Kleinere Räume (Nischen, Türlaibungen) gehen im Nachbarraum auf</translation>
+    </message>
+    <message>
+        <source>Unknown cells are:</source>
+        <translation>Unbekannte Zellen sind:</translation>
+    </message>
+    <message>
+        <source>Remove specks below:</source>
+        <translation>Flecken entfernen unter:</translation>
+    </message>
+    <message>
+        <source>Drop islands below:</source>
+        <translation>Inseln verwerfen unter:</translation>
+    </message>
+    <message>
+        <source>Fill notches up to:</source>
+        <translation>Nischen füllen bis:</translation>
+    </message>
+    <message>
+        <source>Remove obstacles up to:</source>
+        <translation>Hindernisse entfernen bis:</translation>
+    </message>
+    <message>
+        <source>Straighten walls:</source>
+        <translation>Wände begradigen:</translation>
+    </message>
+    <message>
+        <source>Fill notches in straight walls up to:</source>
+        <translation>Nischen in geraden Wänden füllen bis:</translation>
+    </message>
+    <message>
+        <source>Split into rooms:</source>
+        <translation>In Räume teilen:</translation>
+    </message>
+    <message>
+        <source>Smallest room:</source>
+        <translation>Kleinster Raum:</translation>
+    </message>
+    <message>
+        <source>Cleaning removed %1 specks (%2 m²) and %3 free islands (%4 m²); filling notches took %5 m², removing thin obstacles gave %6 m².</source>
+        <translation>Die Bereinigung entfernte %1 Flecken (%2 m²) und %3 freie Inseln (%4 m²); das Füllen von Nischen nahm %5 m², das Entfernen dünner Hindernisse gab %6 m².</translation>
+    </message>
+    <message>
+        <source>%1 walls straightened at %2°: %3 m² of floor gained, %4 m² lost (%5 notches filled); %6 unknown gaps became floor.</source>
+        <translation>%1 Wände bei %2° begradigt: %3 m² Boden gewonnen, %4 m² verloren (%5 Nischen gefüllt); %6 unbekannte Lücken wurden Boden.</translation>
     </message>
 </context>
 <context>
@@ -968,10 +1092,6 @@ Abdeckungspfadplanung für Reinigungs- und Desinfektionsroboter.</translation>
         <translation>Zu planende Räume</translation>
     </message>
     <message>
-        <source>Check the rooms to cover; double-click a name to rename the room.</source>
-        <translation>Die abzudeckenden Räume ankreuzen; einen Namen doppelklicken, um den Raum umzubenennen.</translation>
-    </message>
-    <message>
         <source>Plan</source>
         <translation>Planen</translation>
     </message>
@@ -1139,6 +1259,18 @@ Abdeckungspfadplanung für Reinigungs- und Desinfektionsroboter.</translation>
         <source>%1 m² (%2 %)</source>
         <translation>%1 m² (%2 %)</translation>
     </message>
+    <message>
+        <source>Check the rooms to cover; double-click a name to rename the room. Select two rooms (Ctrl+click) to merge them; split a room with the Split Room tool (K).</source>
+        <translation>Kreuzen Sie die abzudeckenden Räume an; Doppelklick auf einen Namen benennt den Raum um. Zwei Räume auswählen (Strg+Klick), um sie zusammenzuführen; einen Raum mit dem Werkzeug „Raum teilen“ (K) teilen.</translation>
+    </message>
+    <message>
+        <source>Merge Selected Rooms</source>
+        <translation>Ausgewählte Räume zusammenführen</translation>
+    </message>
+    <message>
+        <source>Join the two selected rooms into one (they must share a wall or a doorway); the first keeps its name.</source>
+        <translation>Die zwei ausgewählten Räume zu einem verbinden (sie müssen eine Wand oder eine Tür teilen); der erste behält seinen Namen.</translation>
+    </message>
 </context>
 <context>
     <name>fc::ui::PpoTrainer</name>
@@ -1211,6 +1343,29 @@ Abdeckungspfadplanung für Reinigungs- und Desinfektionsroboter.</translation>
     <message>
         <source>Language</source>
         <translation>Sprache</translation>
+    </message>
+</context>
+<context>
+    <name>fc::ui::SplitRoomTool</name>
+    <message>
+        <source>Split Room</source>
+        <translation>Raum teilen</translation>
+    </message>
+    <message>
+        <source>Split Room: drag a line across a room to cut it in two (Esc cancels); the larger part keeps the name.</source>
+        <translation>Raum teilen: eine Linie quer über einen Raum ziehen, um ihn zu teilen (Esc bricht ab); der größere Teil behält den Namen.</translation>
+    </message>
+    <message>
+        <source>Split Room: drag the cut across the room.</source>
+        <translation>Raum teilen: den Schnitt quer über den Raum ziehen.</translation>
+    </message>
+    <message>
+        <source>Split Room: the cut must cross a room.</source>
+        <translation>Raum teilen: der Schnitt muss einen Raum kreuzen.</translation>
+    </message>
+    <message>
+        <source>Split %1 in two.</source>
+        <translation>%1 in zwei geteilt.</translation>
     </message>
 </context>
 <context>

@@ -284,6 +284,26 @@
         <source>There is no such vertex.</source>
         <translation>Ce sommet n’existe pas.</translation>
     </message>
+    <message>
+        <source>Choose two different rooms to merge.</source>
+        <translation>Choisissez deux pièces différentes à fusionner.</translation>
+    </message>
+    <message>
+        <source>%1 and %2 cannot be merged: %3</source>
+        <translation>%1 et %2 ne peuvent pas être fusionnées : %3</translation>
+    </message>
+    <message>
+        <source>Merge rooms %1 and %2</source>
+        <translation>Fusionner les pièces %1 et %2</translation>
+    </message>
+    <message>
+        <source>%1 cannot be split: %2</source>
+        <translation>%1 ne peut pas être divisée : %2</translation>
+    </message>
+    <message>
+        <source>Split room %1 (new room %2)</source>
+        <translation>Diviser la pièce %1 (nouvelle pièce %2)</translation>
+    </message>
 </context>
 <context>
     <name>fc::ui::DocumentFiles</name>
@@ -387,6 +407,110 @@
     <message>
         <source>Free area %1 m², %2 obstacles, %3 rooms</source>
         <translation>Surface libre %1 m², %2 obstacles, %3 pièces</translation>
+    </message>
+    <message>
+        <source>Clean the map</source>
+        <translation>Nettoyer la carte</translation>
+    </message>
+    <message>
+        <source>Walls</source>
+        <translation>Murs</translation>
+    </message>
+    <message>
+        <source>Floor</source>
+        <translation>Sol</translation>
+    </message>
+    <message>
+        <source> m²</source>
+        <translation> m²</translation>
+    </message>
+    <message>
+        <source>Obstacle specks smaller than this become floor (sensor noise)</source>
+        <translation>Les taches d&apos;obstacle plus petites deviennent du sol (bruit du capteur)</translation>
+    </message>
+    <message>
+        <source>Free islands smaller than this are dropped</source>
+        <translation>Les îlots libres plus petits sont écartés</translation>
+    </message>
+    <message>
+        <source>Notches and slivers narrower than twice this are filled (the robot&apos;s radius: what its body cannot enter)</source>
+        <translation>Les encoches et fentes plus étroites que le double sont comblées (le rayon du robot : là où son corps n&apos;entre pas)</translation>
+    </message>
+    <message>
+        <source>Obstacles thinner than twice this vanish (0: off; thin walls too)</source>
+        <translation>Les obstacles plus fins que le double disparaissent (0 : désactivé ; les murs fins aussi)</translation>
+    </message>
+    <message>
+        <source>Along the map&apos;s two main directions</source>
+        <translation>Selon les deux directions principales de la carte</translation>
+    </message>
+    <message>
+        <source>Each ragged wall becomes one line within a cell of its scan, so the path runs along it instead of zigzagging</source>
+        <translation>Chaque mur irrégulier devient une ligne à une cellule près de son relevé, pour que le trajet le longe au lieu de zigzaguer</translation>
+    </message>
+    <message>
+        <source>Notches in a straightened wall up to this deep are filled</source>
+        <translation>Les encoches d&apos;un mur redressé jusqu&apos;à cette profondeur sont comblées</translation>
+    </message>
+    <message>
+        <source>At doorways (distance)</source>
+        <translation>Aux portes (distance)</translation>
+    </message>
+    <message>
+        <source>At doorways (morphological)</source>
+        <translation>Aux portes (morphologique)</translation>
+    </message>
+    <message>
+        <source>One room</source>
+        <translation>Une seule pièce</translation>
+    </message>
+    <message>
+        <source>Smaller rooms (alcoves, door recesses) join a neighbour</source>
+        <translation>Les pièces plus petites (alcôves, embrasures) rejoignent une voisine</translation>
+    </message>
+    <message>
+        <source>Unknown cells are:</source>
+        <translation>Les cellules inconnues sont :</translation>
+    </message>
+    <message>
+        <source>Remove specks below:</source>
+        <translation>Supprimer les taches sous :</translation>
+    </message>
+    <message>
+        <source>Drop islands below:</source>
+        <translation>Écarter les îlots sous :</translation>
+    </message>
+    <message>
+        <source>Fill notches up to:</source>
+        <translation>Combler les encoches jusqu&apos;à :</translation>
+    </message>
+    <message>
+        <source>Remove obstacles up to:</source>
+        <translation>Supprimer les obstacles jusqu&apos;à :</translation>
+    </message>
+    <message>
+        <source>Straighten walls:</source>
+        <translation>Redresser les murs :</translation>
+    </message>
+    <message>
+        <source>Fill notches in straight walls up to:</source>
+        <translation>Combler les encoches des murs droits jusqu&apos;à :</translation>
+    </message>
+    <message>
+        <source>Split into rooms:</source>
+        <translation>Diviser en pièces :</translation>
+    </message>
+    <message>
+        <source>Smallest room:</source>
+        <translation>Plus petite pièce :</translation>
+    </message>
+    <message>
+        <source>Cleaning removed %1 specks (%2 m²) and %3 free islands (%4 m²); filling notches took %5 m², removing thin obstacles gave %6 m².</source>
+        <translation>Le nettoyage a supprimé %1 taches (%2 m²) et %3 îlots libres (%4 m²) ; combler les encoches a pris %5 m², supprimer les obstacles fins a rendu %6 m².</translation>
+    </message>
+    <message>
+        <source>%1 walls straightened at %2°: %3 m² of floor gained, %4 m² lost (%5 notches filled); %6 unknown gaps became floor.</source>
+        <translation>%1 murs redressés à %2° : %3 m² de sol gagnés, %4 m² perdus (%5 encoches comblées) ; %6 lacunes inconnues sont devenues du sol.</translation>
     </message>
 </context>
 <context>
@@ -968,10 +1092,6 @@ Planification de trajets de couverture pour robots de nettoyage et de désinfect
         <translation>Pièces à planifier</translation>
     </message>
     <message>
-        <source>Check the rooms to cover; double-click a name to rename the room.</source>
-        <translation>Cochez les pièces à couvrir ; double-cliquez un nom pour renommer la pièce.</translation>
-    </message>
-    <message>
         <source>Plan</source>
         <translation>Planifier</translation>
     </message>
@@ -1139,6 +1259,18 @@ Planification de trajets de couverture pour robots de nettoyage et de désinfect
         <source>%1 m² (%2 %)</source>
         <translation>%1 m² (%2 %)</translation>
     </message>
+    <message>
+        <source>Check the rooms to cover; double-click a name to rename the room. Select two rooms (Ctrl+click) to merge them; split a room with the Split Room tool (K).</source>
+        <translation>Cochez les pièces à couvrir ; double-cliquez sur un nom pour renommer la pièce. Sélectionnez deux pièces (Ctrl+clic) pour les fusionner ; divisez une pièce avec l&apos;outil Diviser la pièce (K).</translation>
+    </message>
+    <message>
+        <source>Merge Selected Rooms</source>
+        <translation>Fusionner les pièces sélectionnées</translation>
+    </message>
+    <message>
+        <source>Join the two selected rooms into one (they must share a wall or a doorway); the first keeps its name.</source>
+        <translation>Réunir les deux pièces sélectionnées en une seule (elles doivent partager un mur ou une porte) ; la première garde son nom.</translation>
+    </message>
 </context>
 <context>
     <name>fc::ui::PpoTrainer</name>
@@ -1211,6 +1343,29 @@ Planification de trajets de couverture pour robots de nettoyage et de désinfect
     <message>
         <source>Language</source>
         <translation>Langue</translation>
+    </message>
+</context>
+<context>
+    <name>fc::ui::SplitRoomTool</name>
+    <message>
+        <source>Split Room</source>
+        <translation>Diviser la pièce</translation>
+    </message>
+    <message>
+        <source>Split Room: drag a line across a room to cut it in two (Esc cancels); the larger part keeps the name.</source>
+        <translation>Diviser la pièce : tracez une ligne à travers une pièce pour la couper en deux (Échap annule) ; la plus grande partie garde le nom.</translation>
+    </message>
+    <message>
+        <source>Split Room: drag the cut across the room.</source>
+        <translation>Diviser la pièce : tracez la coupe à travers la pièce.</translation>
+    </message>
+    <message>
+        <source>Split Room: the cut must cross a room.</source>
+        <translation>Diviser la pièce : la coupe doit traverser une pièce.</translation>
+    </message>
+    <message>
+        <source>Split %1 in two.</source>
+        <translation>%1 divisée en deux.</translation>
     </message>
 </context>
 <context>

@@ -2,8 +2,8 @@
 
 #include "document/Conversions.h"
 #include "document/Document.h"
-#include "tasks/PlanningController.h"
 #include "pipeline/PerRoomSweep.h"
+#include "tasks/PlanningController.h"
 
 #include <QCheckBox>
 #include <QComboBox>
@@ -51,9 +51,20 @@ PlanningDock::PlanningDock(QWidget* parent) : QDockWidget(tr("Planning"), parent
     auto* roomsGroup = new QGroupBox(tr("Rooms to plan"));
     auto* roomsLayout = new QVBoxLayout(roomsGroup);
     rooms_ = new QListWidget;
-    rooms_->setToolTip(tr("Check the rooms to cover; double-click a name to rename the room."));
+    rooms_->setToolTip(tr("Check the rooms to cover; double-click a name to rename the room. "
+                          "Select two rooms (Ctrl+click) to merge them; split a room with "
+                          "the Split Room tool (K)."));
     rooms_->setMinimumHeight(120);
+    rooms_->setSelectionMode(QAbstractItemView::ExtendedSelection);
     roomsLayout->addWidget(rooms_);
+    mergeButton_ = new QPushButton(tr("Merge Selected Rooms"));
+    mergeButton_->setObjectName(QStringLiteral("mergeRooms"));
+    mergeButton_->setToolTip(tr("Join the two selected rooms into one (they must share a wall "
+                                "or a doorway); the first keeps its name."));
+    mergeButton_->setEnabled(false);
+    roomsLayout->addWidget(mergeButton_);
+    connect(rooms_, &QListWidget::itemSelectionChanged, this, &PlanningDock::updateMergeButton);
+    connect(mergeButton_, &QPushButton::clicked, this, &PlanningDock::mergeSelectedRooms);
     layout->addWidget(roomsGroup);
     connect(rooms_, &QListWidget::itemChanged, this, &PlanningDock::roomItemChanged);
 
@@ -303,7 +314,23 @@ void PlanningDock::refreshRooms() {
         item->setFlags(flags);
         item->setCheckState(document_->isRoomSelected(names[i]) ? Qt::Checked : Qt::Unchecked);
     }
+    updateMergeButton();
     refreshRoomAngles();
+}
+
+void PlanningDock::updateMergeButton() {
+    mergeButton_->setEnabled(document_ && document_->polygonCount(PolygonRole::Room) > 1 &&
+                             rooms_->selectedItems().size() == 2);
+}
+
+void PlanningDock::mergeSelectedRooms() {
+    const QList<QListWidgetItem*> selected = rooms_->selectedItems();
+    if (!document_ || selected.size() != 2)
+        return;
+    int first = rooms_->row(selected[0]), second = rooms_->row(selected[1]);
+    if (first > second)
+        std::swap(first, second);
+    document_->mergeRooms(first, second);
 }
 
 void PlanningDock::roomItemChanged(QListWidgetItem* item) {

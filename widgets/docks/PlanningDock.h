@@ -32,6 +32,7 @@ public:
 
     QPushButton* planButton() const { return planButton_; }
     QListWidget* roomList() const { return rooms_; }
+    QPushButton* mergeButton() const { return mergeButton_; }
     QDoubleSpinBox* widthBox() const { return width_; }
     QComboBox* solverBox() const { return solver_; }
     // Sweep mode: 0 per room (each room along its own walls), 1 auto, 2 one fixed angle.
@@ -57,6 +58,8 @@ private:
     void refreshRoomAngles();
     void roomAngleEdited(QTableWidgetItem* item);
     void roomItemChanged(QListWidgetItem* item);
+    void mergeSelectedRooms();
+    void updateMergeButton();
 
     QPointer<Document> document_;
     QPointer<PlanningController> controller_;
@@ -71,6 +74,7 @@ private:
     QComboBox* solver_;
     QListWidget* rooms_;
     QPushButton* planButton_;
+    QPushButton* mergeButton_;
     QLabel* status_;
     QVBoxLayout* layout_;
     QMap<QString, QLabel*> metrics_;

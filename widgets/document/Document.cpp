@@ -273,8 +273,9 @@ bool Document::deletePolygon(PolygonRef ref) {
         changed.plan.rooms.erase(changed.plan.rooms.begin() + ref.index);
         auto& selected = changed.selectedRooms;
         selected.erase(std::remove(selected.begin(), selected.end(), name), selected.end());
+        changed.sweep.roomAngles.erase(name);
         text = tr("Delete room %1").arg(fromStd(name));
-        changes |= RoomsChange;
+        changes |= RoomsChange | SweepChange;
         break;
     }
     }
@@ -297,7 +298,14 @@ bool Document::renameRoom(int index, const QString& name) {
     auto it = findName(changed.selectedRooms, old.toStdString());
     if (it != changed.selectedRooms.end())
         *it = trimmed.toStdString();
-    return pushChange(changed, RoomsChange, tr("Rename room %1 to %2").arg(old, trimmed));
+    // A fixed angle stays with the room under its new name.
+    auto& angles = changed.sweep.roomAngles;
+    if (auto fixed = angles.find(old.toStdString()); fixed != angles.end()) {
+        angles[trimmed.toStdString()] = fixed->second;
+        angles.erase(old.toStdString());
+    }
+    return pushChange(changed, RoomsChange | SweepChange,
+                      tr("Rename room %1 to %2").arg(old, trimmed));
 }
 
 bool Document::setRobot(const RobotProfile& robot) {

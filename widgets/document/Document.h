@@ -77,6 +77,11 @@ public:
     bool deleteVertex(PolygonRef ref, int vertex);
     bool deletePolygon(PolygonRef ref);
     bool renameRoom(int index, const QString& name);
+    // Rooms found in a map, reshaped (DocumentRooms.cpp): two rooms that share a border
+    // become one (the first keeps its name, its place and its fixed angle), and a room is
+    // cut in two along the line through `from` and `to` (the new part named "Room n").
+    bool mergeRooms(int first, int second);
+    bool splitRoom(int index, Vec2 from, Vec2 to);
     bool setRobot(const RobotProfile& robot);
     bool setSweep(const SweepOptions& sweep);
     bool setSolver(const QString& solver);

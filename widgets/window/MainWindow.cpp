@@ -20,6 +20,7 @@
 #include "tools/EditVerticesTool.h"
 #include "tools/PickRoomTool.h"
 #include "tools/PlaceEndpointTool.h"
+#include "tools/SplitRoomTool.h"
 #include "tools/ToolManager.h"
 
 #include <QAction>
@@ -81,6 +82,7 @@ void MainWindow::createTools() {
     tools_->registerTool(new DrawPolygonTool(PolygonRole::Obstacle));
     tools_->registerTool(new DrawPolygonTool(PolygonRole::Room));
     tools_->registerTool(new PickRoomTool);
+    tools_->registerTool(new SplitRoomTool);
     tools_->registerTool(new PlaceEndpointTool(Endpoint::Start));
     tools_->registerTool(new PlaceEndpointTool(Endpoint::End));
     connect(tools_, &ToolManager::activeToolChanged, view_, &CanvasView::setTool);
