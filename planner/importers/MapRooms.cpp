@@ -54,6 +54,14 @@ void cutHoles(const OGRGeometry& g, double minArea, std::vector<GeometryPtr>& pi
     for (const OGRPolygon* part : parts) {
         if (part->get_Area() < minArea)
             continue;
+        // Holes of a few cells are where two rooms' borders nearly met (GEOS leaves holes of
+        // no area there): filled, not cut around.
+        auto whole = std::make_unique<OGRPolygon>();
+        whole->addRingDirectly(part->getExteriorRing()->clone());
+        for (int h = 0; h < part->getNumInteriorRings(); ++h)
+            if (part->getInteriorRing(h)->get_Area() >= kMinCells)
+                whole->addRingDirectly(part->getInteriorRing(h)->clone());
+        part = whole.get();
         if (part->getNumInteriorRings() == 0) {
             pieces.emplace_back(part->clone());
             continue;

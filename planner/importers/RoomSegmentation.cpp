@@ -17,6 +17,30 @@ namespace fc::importing {
 
 namespace {
 
+// Islands up to this area (m^2) are furniture: beds, desks, a nurses' station, a pillar. The
+// gaps beside them are not doorways, so the rooms are found as if they were floor.
+constexpr double kFurnitureArea = 10.0;
+
+// `free` with the obstacle islands of at most `maxCells` cells (not touching the map's edge)
+// made free.
+cv::Mat withoutFurniture(const cv::Mat& free, int maxCells) {
+    cv::Mat labels, stats, centroids;
+    const int n = cv::connectedComponentsWithStats(free == 0, labels, stats, centroids, 8, CV_32S);
+    std::vector<unsigned char> furniture(n, 0);
+    for (int i = 1; i < n; ++i) {
+        const int x = stats.at<int>(i, cv::CC_STAT_LEFT), y = stats.at<int>(i, cv::CC_STAT_TOP);
+        const int w = stats.at<int>(i, cv::CC_STAT_WIDTH), h = stats.at<int>(i, cv::CC_STAT_HEIGHT);
+        furniture[i] = x > 0 && y > 0 && x + w < free.cols && y + h < free.rows &&
+                       stats.at<int>(i, cv::CC_STAT_AREA) <= maxCells;
+    }
+    cv::Mat out = free.clone();
+    for (int r = 0; r < out.rows; ++r)
+        for (int c = 0; c < out.cols; ++c)
+            if (furniture[labels.at<int>(r, c)])
+                out.at<unsigned char>(r, c) = 255;
+    return out;
+}
+
 // Distance variant: the basins of the distance to the walls. Cells are taken from the widest
 // place down; each joins the basin of its neighbour that stands highest (so the band along a
 // wall joins the room it lines, never the basin next door). Where two basins meet, at a saddle
@@ -219,9 +243,10 @@ std::vector<std::int32_t> segmentRooms(const std::vector<unsigned char>& freeCel
     std::vector<std::int32_t> out(freeCells.size(), 0);
     if (options.method == RoomSegmentationMethod::None)
         return out;
-    const cv::Mat free =
-        cv::Mat(height, width, CV_8U, const_cast<unsigned char*>(freeCells.data())) != 0;
     const double cellArea = resolution * resolution;
+    const cv::Mat free = withoutFurniture(
+        cv::Mat(height, width, CV_8U, const_cast<unsigned char*>(freeCells.data())) != 0,
+        static_cast<int>(kFurnitureArea / cellArea));
     const int minCells = std::max(1, static_cast<int>(options.minRoomArea / cellArea));
     cv::Mat dist;
     cv::distanceTransform(free, dist, cv::DIST_L2, cv::DIST_MASK_PRECISE);

@@ -10,7 +10,6 @@
 #include <fstream>
 #include <gdal_priv.h>
 #include <gtest/gtest.h>
-#include <numeric>
 
 namespace fc {
 namespace {
@@ -24,10 +23,6 @@ std::filesystem::path scratch(const std::string& name) {
 
 Plan samplePlan(const std::string& name) {
     return loadProjectFile(std::string(FC_PLANS_DIR) + "/" + name + ".geojson").plan;
-}
-
-double meanOf(const std::vector<double>& v) {
-    return std::accumulate(v.begin(), v.end(), 0.0) / std::max<size_t>(v.size(), 1);
 }
 
 TEST(NoisyMaps, CleaningKeepsTheFreeAreaAndDropsTheSpeckle) {
@@ -65,15 +60,18 @@ TEST(NoisyMaps, RoomsSplitTheFloor) {
             test::renderNoisyMap(plan, options).write(scratch(name).string(), name);
         const ImportResult r = importPlanFile(yaml);
         const std::vector<Room>& rooms = r.project.plan.rooms;
-        ASSERT_GE(rooms.size(), plan.rooms.size() / 2) << name;
+        EXPECT_EQ(rooms.size(), plan.rooms.size()) << name;
         double roomArea = 0;
         for (size_t i = 0; i < rooms.size(); ++i) {
             EXPECT_EQ(rooms[i].name, "Room " + std::to_string(i + 1));
             roomArea += std::abs(ringArea(rooms[i].outline));
         }
         EXPECT_GE(roomArea, 0.9 * freeAreaOf(r.project.plan)) << name;
-        const std::vector<double> ious = test::roomIoUs(plan, rooms);
-        EXPECT_GE(meanOf(ious), 0.5) << name; // measured 0.60-0.66; the target is 0.85
+        // Each room as drawn (measured 0.97-0.99 at seeds 1-4): the ward's corridor stays one
+        // room around its nurses' station (furniture makes no doorways), the offices keep
+        // out of the corridor.
+        for (const double iou : test::roomIoUs(plan, rooms))
+            EXPECT_GE(iou, 0.9) << name;
     }
 }
 
@@ -81,7 +79,7 @@ TEST(NoisyMaps, RoomsSplitTheFloor) {
 // measure; the extra distance against the drawing's plan is a bench figure (docs/formats.md).
 // Rooms meet in their doorways: a room with a pillar stays one room (the watershed used
 // before split it in three and never merged, as its lines kept every room apart), and the
-// office's 13 rooms are found to within a few.
+// office's 13 rooms are found.
 TEST(NoisyMaps, OneRoomStaysOneAndTheOfficesAreFound) {
     for (const char* name : {"simple", "room-obstacle", "room-notches"}) {
         test::NoisyMapOptions options;
