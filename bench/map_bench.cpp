@@ -4,6 +4,8 @@
 // Prints a Markdown table per kind (docs/formats.md holds a copy).
 //   floorcover-map-bench [--seeds N] [--real-only] [--noisy-only]
 #include "NoisyMap.h"
+#include "PathChecker.h"
+#include "PlanGenerator.h"
 #include "formats/FileIO.h"
 #include "formats/PlanIO.h"
 #include "importers/Import.h"
@@ -30,11 +32,24 @@ PlanResult planDefault(const Plan& plan) {
     return planCoverage(request);
 }
 
+// The independent checker's verdict (tests/checker, Boost.Geometry): its coverage of the
+// sweepable area and whether the path keeps L/2 from every wall.
+std::string checked(const Plan& plan, const PlanResult& result) {
+    const PlanRequest defaults;
+    const fccheck::Report r =
+        fccheck::checkPath(fcgen::freeSpaceOf(plan), {}, fcgen::polylineOf(result.path.points),
+                           defaults.robot.robotDiameter, defaults.robot.coverageWidth);
+    char text[64];
+    std::snprintf(text, sizeof text, "%.2f%%, %s", 100.0 * r.coverage,
+                  r.collisionFree ? "clear" : "**collides**");
+    return text;
+}
+
 void noisyRows(int seeds) {
     std::printf("| plan | seed | free area vs plan | obstacles | rooms found / true | room IoU "
                 "(mean, min) | extra m (map / plan) | extra vs plan | extra m, map as one room | "
-                "coverage | import s | plan s |\n"
-                "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n");
+                "coverage | checker | import s | plan s |\n"
+                "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n");
     const auto dir = std::filesystem::temp_directory_path() / "fc-map-bench";
     std::filesystem::create_directories(dir);
     for (const char* name : {"office", "ward", "simple", "room-obstacle", "room-notches"}) {
@@ -66,12 +81,12 @@ void noisyRows(int seeds) {
             const double wholeExtra = whole.metrics.length - whole.metrics.ideal;
             const double truthExtra = truth.metrics.length - truth.metrics.ideal;
             std::printf("| %s | %d | %+.2f%% | %zu | %zu / %zu | %s | %.1f / %.1f | %+.0f%% | "
-                        "%.1f (%+.0f%%) | %.2f%% | %.2f | %.2f |\n",
+                        "%.1f (%+.0f%%) | %.2f%% | %s | %.2f | %.2f |\n",
                         name, seed, 100.0 * (freeAreaOf(cleaned) / freeAreaOf(plan) - 1),
                         cleaned.obstacles.size(), cleaned.rooms.size(), plan.rooms.size(), iou,
                         extra, truthExtra, 100.0 * (extra / truthExtra - 1), wholeExtra,
                         100.0 * (wholeExtra / truthExtra - 1), 100.0 * result.metrics.coverage,
-                        importSeconds, planSeconds);
+                        checked(cleaned, result).c_str(), importSeconds, planSeconds);
             std::fflush(stdout);
         }
     }
@@ -79,8 +94,8 @@ void noisyRows(int seeds) {
 
 void realRows() {
     std::printf("| map | cells | free m² | specks removed | obstacles | rooms | length m | ideal "
-                "m | extra / ideal | coverage | unreachable m² | import s | plan s |\n"
-                "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n");
+                "m | extra / ideal | coverage | checker | unreachable m² | import s | plan s |\n"
+                "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n");
     for (const char* name : {"uwb-localization-demo", "localization-demo", "telecom-faculty"}) {
         const std::string yaml = std::string(FC_REAL_MAPS_DIR) + "/" + name + ".yaml";
         auto t0 = std::chrono::steady_clock::now();
@@ -91,12 +106,13 @@ void realRows() {
         const PlanResult result = planDefault(imported.project.plan);
         const double planSeconds = seconds(t0);
         const Metrics& m = result.metrics;
-        std::printf("| %s | %d×%d | %.0f | %d | %zu | %zu | %.0f | %.0f | %.0f%% | %.2f%% | %.1f "
-                    "| %.2f | %.2f |\n",
+        std::printf("| %s | %d×%d | %.0f | %d | %zu | %zu | %.0f | %.0f | %.0f%% | %.2f%% | %s | "
+                    "%.1f | %.2f | %.2f |\n",
                     name, c.width, c.height, c.freeAreaAfter, c.specksRemoved,
                     imported.project.plan.obstacles.size(), imported.project.plan.rooms.size(),
                     m.length, m.ideal, 100.0 * (m.length - m.ideal) / m.ideal, 100.0 * m.coverage,
-                    m.unreachableArea, importSeconds, planSeconds);
+                    checked(imported.project.plan, result).c_str(), m.unreachableArea,
+                    importSeconds, planSeconds);
         std::fflush(stdout);
     }
 }
