@@ -163,6 +163,13 @@ Polyline ClearanceField::findPath(Vec2 a, Vec2 b, const std::vector<Vec2>& hints
     std::size_t checksLeft = maxChecks > 0 ? maxChecks : std::numeric_limits<std::size_t>::max();
     if (segmentIsClear(a, b))
         return {a, b};
+    // Provably apart: no search (a failed one tests every pair of corners in its window;
+    // wall touch-ups aimed into pockets made thousands of them on a traced map).
+    {
+        const int ra = openRegionOf(a), rb = openRegionOf(b);
+        if (ra >= 0 && rb >= 0 && ra != rb)
+            return {};
+    }
     double margin = std::min(std::max(4 * radius_, 0.5 * distance(a, b)), maxMargin);
     for (int round = 0; round < 8; ++round) {
         BoundingBox window;
@@ -175,12 +182,6 @@ Polyline ClearanceField::findPath(Vec2 a, Vec2 b, const std::vector<Vec2>& hints
             return path;
         if (checksLeft == 0)
             return {};
-        // Before searching wider: provably apart? (cheap once the grid exists)
-        if (round == 0) {
-            const int ra = openRegionOf(a), rb = openRegionOf(b);
-            if (ra >= 0 && rb >= 0 && ra != rb)
-                return {};
-        }
         const bool coversAll = window.minX <= extent_.minX && window.minY <= extent_.minY &&
                                window.maxX >= extent_.maxX && window.maxY >= extent_.maxY;
         if (coversAll || margin >= maxMargin)

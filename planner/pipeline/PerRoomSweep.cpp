@@ -2,6 +2,7 @@
 
 #include "graph/ComponentBridges.h"
 #include "pipeline/PathChoice.h"
+#include "pipeline/PreparedPlans.h"
 
 #include <algorithm>
 #include <chrono>
@@ -169,7 +170,7 @@ void throwIfCancelled(const SolveControl& control) {
 // Plans the request with the given angle per room (see roomSweepAngles).
 PlanResult planWithRoomAngles(const PlanRequest& request,
                               const std::map<std::string, double>& angles,
-                              const SolveControl& control) {
+                              const SolveControl& control, const PreparedPlans& prepared) {
     // The angles of the selected rooms; one angle is an ordinary plan.
     std::vector<double> distinct;
     auto addAngle = [&](double a) {
@@ -185,7 +186,7 @@ PlanResult planWithRoomAngles(const PlanRequest& request,
             addAngle(sweepAngleOfRoom(angles, room));
     }
     if (distinct.size() == 1)
-        return planAtAngle(request, distinct.front(), control);
+        return planAtAngle(request, distinct.front(), control, &prepared);
     const auto t0 = std::chrono::steady_clock::now();
 
     // Each group decomposes the whole floor at its angle (other rooms' cells carry its
@@ -193,10 +194,9 @@ PlanResult planWithRoomAngles(const PlanRequest& request,
     std::vector<Group> groups;
     for (double angle : distinct) {
         Group group;
-        group.angle = angle;
+        group.angle = PreparedPlans::roundedAngle(angle);
         throwIfCancelled(control); // each decomposition takes a while on large floors
-        group.prepared = preparePlan(request.plan, request.robot, angle, request.transitionCells,
-                                     solverNeedsClassicStages(request.solver));
+        group.prepared = prepared.at(group.angle, solverNeedsClassicStages(request.solver));
         double area = 0.0;
         Vec2 weighted;
         for (const std::string& name : group.prepared.decomposition.roomNames) {
@@ -393,6 +393,7 @@ PlanResult planPerRoom(const PlanRequest& request, const SolveControl& control) 
     request.robot.validate();
     const auto t0 = std::chrono::steady_clock::now();
     const std::map<std::string, double> walls = roomSweepAngles(request.plan, request.sweep);
+    const PreparedPlans prepared(request.plan, request.robot, request.transitionCells);
     auto free = [&](const std::string& room) { return request.sweep.roomAngles.count(room) == 0; };
 
     // The groups of the rooms' own angles, the one with the most rooms first.
@@ -420,7 +421,7 @@ PlanResult planPerRoom(const PlanRequest& request, const SolveControl& control) 
     }
     // Large floors plan the family alone; small ones search (below).
     if (request.plan.rooms.size() > kPerRoomSearchMaxRooms) {
-        PlanResult best = planWithRoomAngles(request, family, control);
+        PlanResult best = planWithRoomAngles(request, family, control, prepared);
         best.metrics.seconds =
             std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
         return best;
@@ -459,7 +460,7 @@ PlanResult planPerRoom(const PlanRequest& request, const SolveControl& control) 
         }
         try {
             screened.push_back(
-                {candidate, planWithRoomAngles(screening, candidate, control).metrics});
+                {candidate, planWithRoomAngles(screening, candidate, control, prepared).metrics});
         } catch (const InputError&) {
             // e.g. one group's rooms cannot be reached from the start at its angle
         }
@@ -501,8 +502,8 @@ PlanResult planPerRoom(const PlanRequest& request, const SolveControl& control) 
     quiet.cancelled = control.cancelled;
     std::vector<std::future<PlanResult>> plans;
     for (const auto& finalist : finalists)
-        plans.push_back(std::async(std::launch::async, [&request, finalist, quiet]() {
-            PlanResult plan = planWithRoomAngles(request, finalist, quiet);
+        plans.push_back(std::async(std::launch::async, [&request, &prepared, finalist, quiet]() {
+            PlanResult plan = planWithRoomAngles(request, finalist, quiet, prepared);
             applyTouchUps(request, plan);
             return plan;
         }));

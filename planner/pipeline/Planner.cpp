@@ -5,6 +5,7 @@
 #include "path/CoverageRepair.h"
 #include "pipeline/PathChoice.h"
 #include "pipeline/PerRoomSweep.h"
+#include "pipeline/PreparedPlans.h"
 
 #include <algorithm>
 #include <chrono>
@@ -343,12 +344,19 @@ Metrics measurePath(const PreparedPlan& prepared, const std::vector<std::string>
 
 namespace {
 
-PlanResult planOneAngle(const PlanRequest& request, double angle, const SolveControl& control) {
+PlanResult planOneAngle(const PlanRequest& request, double angle, const SolveControl& control,
+                        const PreparedPlans* prepared) {
     const auto t0 = std::chrono::steady_clock::now();
     PlanResult result;
+    const bool classic = solverNeedsClassicStages(request.solver);
+    if (prepared) {
+        angle = PreparedPlans::roundedAngle(angle);
+        result.prepared = prepared->at(angle, classic);
+    } else {
+        result.prepared =
+            preparePlan(request.plan, request.robot, angle, request.transitionCells, classic);
+    }
     result.stripeAngleDeg = angle;
-    result.prepared = preparePlan(request.plan, request.robot, angle, request.transitionCells,
-                                  solverNeedsClassicStages(request.solver));
     result.query = makeQuery(result.prepared, request.rooms, request.start, request.end,
                              request.seed, result.warnings);
     // Every selected room counts, also cells the start could not reach (no silent loss).
@@ -414,9 +422,10 @@ std::vector<std::string> coverageLossWarnings(const Metrics& metrics) {
     return out;
 }
 
-PlanResult planAtAngle(const PlanRequest& request, double angleDeg, const SolveControl& control) {
+PlanResult planAtAngle(const PlanRequest& request, double angleDeg, const SolveControl& control,
+                       const PreparedPlans* prepared) {
     request.robot.validate();
-    return planOneAngle(request, angleDeg, control);
+    return planOneAngle(request, angleDeg, control, prepared);
 }
 
 namespace {
@@ -424,12 +433,12 @@ namespace {
 PlanResult planWithoutTouchUps(const PlanRequest& request, const SolveControl& control) {
     request.robot.validate();
     if (!request.sweep.automatic && !request.sweep.perRoom)
-        return planOneAngle(request, request.sweep.angleDeg, control);
+        return planOneAngle(request, request.sweep.angleDeg, control, nullptr);
     // A solver bound to one graph (a trained model) plans at the angle it was trained at.
     if (std::optional<RegisteredSolver> registered = findRegisteredSolver(request.solver))
         if (registered->sweepAngle)
             if (std::optional<double> angle = registered->sweepAngle(request.modelPath))
-                return planOneAngle(request, *angle, control);
+                return planOneAngle(request, *angle, control, nullptr);
     if (!request.sweep.automatic)
         return planPerRoom(request, control);
     const auto t0 = std::chrono::steady_clock::now();
@@ -437,7 +446,7 @@ PlanResult planWithoutTouchUps(const PlanRequest& request, const SolveControl& c
     std::string firstError;
     for (double angle : candidateAngles(request.plan)) {
         try {
-            PlanResult r = planOneAngle(request, angle, control);
+            PlanResult r = planOneAngle(request, angle, control, nullptr);
             applyTouchUps(request, r);
             if (!best || betterPlanChoice(r.metrics, best->metrics))
                 best = std::move(r);

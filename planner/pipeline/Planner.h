@@ -114,9 +114,12 @@ bool completePlan(const Metrics& metrics);
 // the path misses (uncovered) and area no robot position can sweep (unreachable).
 std::vector<std::string> coverageLossWarnings(const Metrics& metrics);
 
-// Plans the request at one sweep angle for the whole floor.
+class PreparedPlans;
+
+// Plans the request at one sweep angle for the whole floor. `prepared`: plans of
+// request.plan and request.robot already built (or to be shared) per angle.
 PlanResult planAtAngle(const PlanRequest& request, double angleDeg,
-                       const SolveControl& control = {});
+                       const SolveControl& control = {}, const PreparedPlans* prepared = nullptr);
 
 // The metrics of a path over the required rooms (by decomposition room name; empty: all).
 Metrics measurePath(const PreparedPlan& prepared, const std::vector<std::string>& requiredRooms,

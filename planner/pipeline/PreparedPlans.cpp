@@ -1,0 +1,46 @@
+#include "pipeline/PreparedPlans.h"
+
+#include "pipeline/Planner.h"
+
+#include <cmath>
+
+namespace fc {
+
+PreparedPlans::PreparedPlans(const Plan& plan, const RobotProfile& robot, bool transitionCells)
+    : plan_(plan), robot_(robot), transitionCells_(transitionCells) {}
+
+double PreparedPlans::roundedAngle(double angleDeg) {
+    return std::isfinite(angleDeg) ? std::round(angleDeg * 1e9) / 1e9 : angleDeg;
+}
+
+PreparedPlan PreparedPlans::at(double angleDeg, bool classicStages) const {
+    if (!std::isfinite(angleDeg)) // preparePlan's own error
+        return preparePlan(plan_, robot_, angleDeg, transitionCells_, classicStages);
+    const double angle = roundedAngle(angleDeg);
+    const auto key = std::make_tuple(std::llround(angle * 1e9), classicStages);
+    std::promise<std::shared_ptr<const PreparedPlan>> promise;
+    Built built;
+    bool builder = false;
+    {
+        std::lock_guard<std::mutex> lock(mutex_);
+        auto it = built_.find(key);
+        if (it == built_.end()) {
+            built = promise.get_future().share();
+            built_.emplace(key, built);
+            builder = true;
+        } else {
+            built = it->second;
+        }
+    }
+    if (builder) {
+        try {
+            promise.set_value(std::make_shared<const PreparedPlan>(
+                preparePlan(plan_, robot_, angle, transitionCells_, classicStages)));
+        } catch (...) {
+            promise.set_exception(std::current_exception());
+        }
+    }
+    return *built.get();
+}
+
+} // namespace fc
