@@ -338,6 +338,14 @@
         <source>%1 refused: %2</source>
         <translation>%1 abgelehnt: %2</translation>
     </message>
+    <message>
+        <source>Kept the existing boundary.</source>
+        <translation>Die bestehende Begrenzung bleibt.</translation>
+    </message>
+    <message>
+        <source>The plan already has a boundary, and a plan has only one. Replace it with the one you drew? (Undo brings the old boundary back.)</source>
+        <translation>Der Plan hat schon eine Begrenzung, und ein Plan hat nur eine. Durch die gezeichnete ersetzen? (Rückgängig holt die alte Begrenzung zurück.)</translation>
+    </message>
 </context>
 <context>
     <name>fc::ui::EditVerticesTool</name>
@@ -629,10 +637,6 @@ Abdeckungspfadplanung für Reinigungs- und Desinfektionsroboter.</translation>
         <translation>Ungespeicherte Änderungen wiederherstellen</translation>
     </message>
     <message>
-        <source>FloorCover did not close normally last time. Recover the unsaved changes?</source>
-        <translation>FloorCover wurde beim letzten Mal nicht normal beendet. Die ungespeicherten Änderungen wiederherstellen?</translation>
-    </message>
-    <message>
         <source>Recovered the unsaved changes of the last session.</source>
         <translation>Die ungespeicherten Änderungen der letzten Sitzung wurden wiederhergestellt.</translation>
     </message>
@@ -796,10 +800,6 @@ Abdeckungspfadplanung für Reinigungs- und Desinfektionsroboter.</translation>
         <translation>Export nach %1 nicht möglich: %2</translation>
     </message>
     <message>
-        <source>Exported %1 to %2</source>
-        <translation>%1 nach %2 exportiert</translation>
-    </message>
-    <message>
         <source>Export</source>
         <translation>Exportieren</translation>
     </message>
@@ -814,6 +814,44 @@ Abdeckungspfadplanung für Reinigungs- und Desinfektionsroboter.</translation>
     <message>
         <source>Importable plans (%1);;DXF drawings (*.dxf);;ROS occupancy maps (*.yaml *.yml);;WKT polygons (*.wkt);;GeoJSON plans (*.geojson *.json);;3D building models (*.ifc *.obj *.gltf *.glb *.stl)</source>
         <translation>Importierbare Pläne (%1);;DXF-Zeichnungen (*.dxf);;ROS-Belegungskarten (*.yaml *.yml);;WKT-Polygone (*.wkt);;GeoJSON-Pläne (*.geojson *.json);;3D-Gebäudemodelle (*.ifc *.obj *.gltf *.glb *.stl)</translation>
+    </message>
+    <message>
+        <source>an untitled plan</source>
+        <translation>einem unbenannten Plan</translation>
+    </message>
+    <message>
+        <source>%1 (in %2)</source>
+        <translation>%1 (in %2)</translation>
+    </message>
+    <message>
+        <source>FloorCover did not close normally last time. Recover the unsaved changes to %1, saved automatically %2?</source>
+        <translation>FloorCover wurde beim letzten Mal nicht normal beendet. Die ungesicherten Änderungen an %1 wiederherstellen (automatisch gesichert %2)?</translation>
+    </message>
+    <message>
+        <source>Exported %1 to %2 (%3)</source>
+        <translation>%1 nach %2 exportiert (%3)</translation>
+    </message>
+    <message>
+        <source>Exported the path as %1 to
+%2</source>
+        <translation>Der Pfad wurde als %1 exportiert nach
+%2</translation>
+    </message>
+    <message>
+        <source>Exported the zones as %1 to
+%2</source>
+        <translation>Die Zonen wurden als %1 exportiert nach
+%2</translation>
+    </message>
+    <message>
+        <source>Exported the plan as %1 to
+%2</source>
+        <translation>Der Plan wurde als %1 exportiert nach
+%2</translation>
+    </message>
+    <message>
+        <source>Show in Folder</source>
+        <translation>Im Ordner zeigen</translation>
     </message>
 </context>
 <context>
@@ -1680,6 +1718,14 @@ Abdeckungspfadplanung für Reinigungs- und Desinfektionsroboter.</translation>
     <message>
         <source>Training cannot start: %1</source>
         <translation>Training kann nicht starten: %1</translation>
+    </message>
+    <message>
+        <source>Done · %1 trained</source>
+        <translation>Fertig · %1 trainiert</translation>
+    </message>
+    <message>
+        <source>Paused at %p% · %1 trained</source>
+        <translation>Angehalten bei %p% · %1 trainiert</translation>
     </message>
 </context>
 <context>

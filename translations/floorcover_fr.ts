@@ -338,6 +338,14 @@
         <source>%1 refused: %2</source>
         <translation>%1 refusé : %2</translation>
     </message>
+    <message>
+        <source>Kept the existing boundary.</source>
+        <translation>La limite existante est conservée.</translation>
+    </message>
+    <message>
+        <source>The plan already has a boundary, and a plan has only one. Replace it with the one you drew? (Undo brings the old boundary back.)</source>
+        <translation>Le plan a déjà une limite, et un plan n’en a qu’une. La remplacer par celle que vous avez dessinée ? (Annuler rétablit l’ancienne limite.)</translation>
+    </message>
 </context>
 <context>
     <name>fc::ui::EditVerticesTool</name>
@@ -629,10 +637,6 @@ Planification de trajets de couverture pour robots de nettoyage et de désinfect
         <translation>Récupérer les modifications non enregistrées</translation>
     </message>
     <message>
-        <source>FloorCover did not close normally last time. Recover the unsaved changes?</source>
-        <translation>FloorCover ne s’est pas fermé normalement la dernière fois. Récupérer les modifications non enregistrées ?</translation>
-    </message>
-    <message>
         <source>Recovered the unsaved changes of the last session.</source>
         <translation>Les modifications non enregistrées de la dernière session ont été récupérées.</translation>
     </message>
@@ -796,10 +800,6 @@ Planification de trajets de couverture pour robots de nettoyage et de désinfect
         <translation>Impossible d’exporter vers %1 : %2</translation>
     </message>
     <message>
-        <source>Exported %1 to %2</source>
-        <translation>%1 exporté vers %2</translation>
-    </message>
-    <message>
         <source>Export</source>
         <translation>Exporter</translation>
     </message>
@@ -814,6 +814,44 @@ Planification de trajets de couverture pour robots de nettoyage et de désinfect
     <message>
         <source>Importable plans (%1);;DXF drawings (*.dxf);;ROS occupancy maps (*.yaml *.yml);;WKT polygons (*.wkt);;GeoJSON plans (*.geojson *.json);;3D building models (*.ifc *.obj *.gltf *.glb *.stl)</source>
         <translation>Plans importables (%1);;Dessins DXF (*.dxf);;Cartes d’occupation ROS (*.yaml *.yml);;Polygones WKT (*.wkt);;Plans GeoJSON (*.geojson *.json);;Maquettes 3D de bâtiment (*.ifc *.obj *.gltf *.glb *.stl)</translation>
+    </message>
+    <message>
+        <source>an untitled plan</source>
+        <translation>un plan sans titre</translation>
+    </message>
+    <message>
+        <source>%1 (in %2)</source>
+        <translation>%1 (dans %2)</translation>
+    </message>
+    <message>
+        <source>FloorCover did not close normally last time. Recover the unsaved changes to %1, saved automatically %2?</source>
+        <translation>FloorCover ne s’est pas fermé normalement la dernière fois. Récupérer les modifications non enregistrées de %1, sauvegardées automatiquement le %2 ?</translation>
+    </message>
+    <message>
+        <source>Exported %1 to %2 (%3)</source>
+        <translation>%1 exporté vers %2 (%3)</translation>
+    </message>
+    <message>
+        <source>Exported the path as %1 to
+%2</source>
+        <translation>Le chemin a été exporté en %1 vers
+%2</translation>
+    </message>
+    <message>
+        <source>Exported the zones as %1 to
+%2</source>
+        <translation>Les zones ont été exportées en %1 vers
+%2</translation>
+    </message>
+    <message>
+        <source>Exported the plan as %1 to
+%2</source>
+        <translation>Le plan a été exporté en %1 vers
+%2</translation>
+    </message>
+    <message>
+        <source>Show in Folder</source>
+        <translation>Afficher dans le dossier</translation>
     </message>
 </context>
 <context>
@@ -1680,6 +1718,14 @@ Planification de trajets de couverture pour robots de nettoyage et de désinfect
     <message>
         <source>Training cannot start: %1</source>
         <translation>L’entraînement ne peut pas démarrer : %1</translation>
+    </message>
+    <message>
+        <source>Done · %1 trained</source>
+        <translation>Terminé · %1 d’entraînement</translation>
+    </message>
+    <message>
+        <source>Paused at %p% · %1 trained</source>
+        <translation>En pause à %p% · %1 d’entraînement</translation>
     </message>
 </context>
 <context>

@@ -12,7 +12,9 @@
 #include "tasks/TaskListWidget.h"
 
 #include <QComboBox>
+#include <QDoubleSpinBox>
 #include <QElapsedTimer>
+#include <QProgressBar>
 #include <QPushButton>
 #include <QSignalSpy>
 #include <QTemporaryDir>
@@ -51,6 +53,7 @@ private slots:
     void trainsWithTheGraphStateSetting();
     void evaluatesTheModelAndStopCancels();
     void taskListCancelsTrainingAndEvaluationPromptly();
+    void progressSaysDoneWhenTheBudgetIsSpent();
 };
 
 void TrainingDockTest::trainsPausesResumesAndSaves() {
@@ -308,6 +311,24 @@ void TrainingDockTest::taskListCancelsTrainingAndEvaluationPromptly() {
     QTRY_VERIFY_WITH_TIMEOUT(dock->episodes() > episodes, 30000);
     dock->stop();
     QTRY_COMPARE_WITH_TIMEOUT(dock->state(), TrainingDock::State::Finished, 10000);
+}
+
+// Issue 16 trap: the bar stayed at "96% · 0:01 left" after training had ended.
+void TrainingDockTest::progressSaysDoneWhenTheBudgetIsSpent() {
+    registerDqnSolver();
+    TrainingDock dock;
+    dock.setTrainingOptions(smallOptions());
+    dock.setPreparedPlan(preparedSample("simple"));
+    auto* budget = dock.findChild<QDoubleSpinBox*>();
+    QVERIFY(budget != nullptr);
+    budget->setValue(budget->minimum()); // 5 s
+    dock.start();
+    QTRY_COMPARE_WITH_TIMEOUT(dock.state(), TrainingDock::State::Finished, 60000);
+    auto* bar = dock.findChild<QProgressBar*>();
+    QVERIFY(bar != nullptr);
+    QTRY_COMPARE_WITH_TIMEOUT(bar->value(), bar->maximum(), 10000);
+    QVERIFY2(!bar->text().contains(QStringLiteral("left")), qPrintable(bar->text()));
+    QVERIFY2(bar->text().startsWith(QStringLiteral("Done")), qPrintable(bar->text()));
 }
 
 QTEST_MAIN(TrainingDockTest)

@@ -299,8 +299,15 @@ void TrainingDock::onFinished(const TrainingRun& run) {
     lastSeconds_ = trainedSeconds;
     if (state_ == State::Running)
         setState(end == TrainingEnd::BudgetReached ? State::Finished : State::Paused);
-    if (end == TrainingEnd::BudgetReached)
+    if (end == TrainingEnd::BudgetReached) {
+        // The last progress report comes a moment before the end: the bar must not stay at
+        // "96% · 0:01 left" once training is done.
         progress_->setValue(progress_->maximum());
+        progress_->setFormat(tr("Done · %1 trained").arg(minutesAndSeconds(trainedSeconds)));
+    } else {
+        progress_->setFormat(
+            tr("Paused at %p% · %1 trained").arg(minutesAndSeconds(trainedSeconds)));
+    }
     // Offer the model to the planner: to its file if it has one, else to the cache.
     const QString path = modelPath_.isEmpty() ? cacheModelPath() : modelPath_;
     if (saveModel(path))

@@ -6,6 +6,7 @@
 
 #include <QDir>
 #include <QFile>
+#include <QFileInfo>
 #include <QSettings>
 #include <QStandardPaths>
 #include <QTimer>
@@ -46,6 +47,14 @@ bool Autosaver::hasRecovery() {
     return QFile::exists(recoveryPath());
 }
 
+QString Autosaver::recoveryOriginalFile() {
+    return QSettings().value(QLatin1String(kOriginalFileKey)).toString();
+}
+
+QDateTime Autosaver::recoveryTime() {
+    return QFileInfo(recoveryPath()).lastModified();
+}
+
 void Autosaver::saveNow() {
     if (!document_ || !document_->isModified())
         return;
@@ -67,7 +76,7 @@ std::unique_ptr<Document> Autosaver::recover(QString* error) {
     std::unique_ptr<Document> document = loadDocument(recoveryPath(), error);
     if (!document)
         return nullptr;
-    document->setFileName(QSettings().value(QLatin1String(kOriginalFileKey)).toString());
+    document->setFileName(recoveryOriginalFile());
     document->markModified();
     return document;
 }

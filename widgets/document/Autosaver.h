@@ -4,6 +4,7 @@
 // last session ended without saving, and the editor offers to recover it.
 #pragma once
 
+#include <QDateTime>
 #include <QObject>
 #include <QPointer>
 #include <memory>
@@ -26,6 +27,9 @@ public:
     static bool hasRecovery();
     // The recovered document (marked modified, named after its original file), or null.
     static std::unique_ptr<Document> recover(QString* error);
+    // The file the recovery belongs to (empty: a plan never saved) and when it was written.
+    static QString recoveryOriginalFile();
+    static QDateTime recoveryTime();
 
 public slots:
     void saveNow();

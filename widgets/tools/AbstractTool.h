@@ -55,6 +55,9 @@ signals:
 protected:
     Document* document() const { return document_; }
     PlanScene* scene() const { return scene_; }
+    // Asks the user through the tool manager (ToolManager::setConfirmation); yes when the
+    // tool is not registered.
+    bool confirm(const QString& question) const;
 
 private:
     QString name_;

@@ -1,13 +1,16 @@
 #include "tools/DrawPolygonTool.h"
 
-#include "document/Conversions.h"
 #include "canvas/PlanScene.h"
 #include "canvas/SceneStyle.h"
 #include "canvas/Snapper.h"
+#include "document/Conversions.h"
+#include "document/Document.h"
+#include "geometry/Geometry.h"
 
 #include <QGraphicsPathItem>
 #include <QKeyEvent>
 #include <QLineF>
+#include <algorithm>
 
 namespace fc::ui {
 
@@ -153,6 +156,11 @@ void DrawPolygonTool::finish(const QPolygonF& polygon) {
         return;
     }
     points_ = polygon;
+    if (role_ == PolygonRole::Boundary && !replacesBoundary(toRing(polygon))) {
+        clearSketch();
+        emit statusMessage(tr("Kept the existing boundary."));
+        return;
+    }
     QString problem;
     // The document reports a refused edit through editRejected; catch it for the sketch.
     auto connection = connect(document(), &Document::editRejected, this,
@@ -166,6 +174,17 @@ void DrawPolygonTool::finish(const QPolygonF& polygon) {
     rejected_ = true;
     updatePreview();
     emit statusMessage(tr("%1 refused: %2").arg(name(), problem));
+}
+
+bool DrawPolygonTool::replacesBoundary(const Ring& ring) const {
+    const Ring& old = document()->plan().boundary;
+    if (old.empty())
+        return true;
+    // Drawn around the old one: a larger outline, plainly meant to replace it.
+    if (std::all_of(old.begin(), old.end(), [&ring](Vec2 p) { return pointInRing(ring, p); }))
+        return true;
+    return confirm(tr("The plan already has a boundary, and a plan has only one. Replace it "
+                      "with the one you drew? (Undo brings the old boundary back.)"));
 }
 
 void DrawPolygonTool::updatePreview() {

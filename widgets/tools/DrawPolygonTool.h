@@ -4,8 +4,8 @@
 // stays on the canvas in red with the message.
 #pragma once
 
-#include "tools/AbstractTool.h"
 #include "document/Document.h"
+#include "tools/AbstractTool.h"
 
 #include <QPolygonF>
 
@@ -34,6 +34,8 @@ private:
     // Where a click puts the next vertex: snapped, and with Shift at a right angle.
     QPointF target(const ToolMouseEvent& event) const;
     void finish(const QPolygonF& polygon);
+    // Whether a drawn boundary may replace the plan's (asks unless it encloses the old one).
+    bool replacesBoundary(const Ring& ring) const;
     void updatePreview();
     void clearSketch();
     bool nearFirstPoint(const ToolMouseEvent& event) const;

@@ -1,7 +1,7 @@
 #include "tools/ToolManager.h"
 
-#include "tools/AbstractTool.h"
 #include "document/Document.h"
+#include "tools/AbstractTool.h"
 
 #include <QAction>
 #include <QActionGroup>
@@ -10,6 +10,10 @@ namespace fc::ui {
 
 ToolManager::ToolManager(QObject* parent) : QObject(parent), group_(new QActionGroup(this)) {
     group_->setExclusive(true);
+}
+
+void ToolManager::setConfirmation(std::function<bool(const QString&)> confirm) {
+    confirm_ = std::move(confirm);
 }
 
 void ToolManager::registerTool(AbstractTool* tool) {

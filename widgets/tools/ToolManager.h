@@ -3,6 +3,7 @@
 
 #include <QObject>
 #include <QPointer>
+#include <functional>
 #include <vector>
 
 class QAction;
@@ -27,6 +28,10 @@ public:
     AbstractTool* findTool(const QString& name) const;
 
     void setActiveTool(AbstractTool* tool);
+    // How tools ask before an edit that throws work away (replacing the boundary): the
+    // window shows a question; unset, every question is answered yes.
+    void setConfirmation(std::function<bool(const QString& question)> confirm);
+    bool confirm(const QString& question) const { return !confirm_ || confirm_(question); }
     // Re-activates the tool on another document or scene.
     void setContext(Document* document, PlanScene* scene);
 
@@ -38,6 +43,7 @@ private:
     std::vector<AbstractTool*> tools_;
     QActionGroup* group_;
     AbstractTool* active_ = nullptr;
+    std::function<bool(const QString&)> confirm_;
     QPointer<Document> document_;
     PlanScene* scene_ = nullptr;
 };

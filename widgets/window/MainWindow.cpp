@@ -22,12 +22,16 @@
 #include "tools/PlaceEndpointTool.h"
 #include "tools/SplitRoomTool.h"
 #include "tools/ToolManager.h"
+#include "window/WheelGuard.h"
 
 #include <QAction>
 #include <QApplication>
 #include <QCloseEvent>
+#include <QDir>
 #include <QDockWidget>
+#include <QFileInfo>
 #include <QLabel>
+#include <QLocale>
 #include <QMenuBar>
 #include <QMessageBox>
 #include <QStatusBar>
@@ -45,6 +49,7 @@ MainWindow::MainWindow(QWidget* parent)
       planningDock_(new PlanningDock(this)), autosaver_(new Autosaver(this)) {
     setObjectName(QStringLiteral("MainWindow"));
     setAcceptDrops(true);
+    WheelGuard::install();
     view_->setScene(scene_);
     setCentralWidget(view_);
     scene_->setPlanningController(planner_);
@@ -77,6 +82,10 @@ MainWindow::~MainWindow() {
 }
 
 void MainWindow::createTools() {
+    tools_->setConfirmation([this](const QString& question) {
+        return !dialogsEnabled_ ||
+               QMessageBox::question(this, tr("FloorCover"), question) == QMessageBox::Yes;
+    });
     tools_->registerTool(new EditVerticesTool);
     tools_->registerTool(new DrawPolygonTool(PolygonRole::Boundary));
     tools_->registerTool(new DrawPolygonTool(PolygonRole::Obstacle));
@@ -95,6 +104,16 @@ void MainWindow::createTools() {
     toolBar->addActions(tools_->actions());
 }
 
+QList<QKeySequence> MainWindow::redoShortcuts() {
+    // The platform's Redo keys plus Ctrl+Shift+Z, each once: a key bound twice, even to the
+    // same action, is an "ambiguous shortcut overload" and does nothing.
+    QList<QKeySequence> keys = QKeySequence::keyBindings(QKeySequence::Redo);
+    const QKeySequence ctrlShiftZ(Qt::CTRL | Qt::SHIFT | Qt::Key_Z);
+    if (!keys.contains(ctrlShiftZ))
+        keys.append(ctrlShiftZ);
+    return keys;
+}
+
 void MainWindow::createMenus() {
     createFileMenu();
 
@@ -102,7 +121,7 @@ void MainWindow::createMenus() {
     QAction* undo = undoGroup_->createUndoAction(this, tr("&Undo"));
     undo->setShortcut(QKeySequence::Undo);
     QAction* redo = undoGroup_->createRedoAction(this, tr("&Redo"));
-    redo->setShortcuts({QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_Z), QKeySequence::Redo});
+    redo->setShortcuts(redoShortcuts());
     edit->addAction(undo);
     edit->addAction(redo);
     edit->addSeparator();
@@ -275,13 +294,23 @@ void MainWindow::changeEvent(QEvent* event) {
     QMainWindow::changeEvent(event);
 }
 
+QString MainWindow::recoveryQuestion() {
+    const QString original = Autosaver::recoveryOriginalFile();
+    const QString what =
+        original.isEmpty() ? tr("an untitled plan")
+                           : tr("%1 (in %2)")
+                                 .arg(QFileInfo(original).fileName(),
+                                      QDir::toNativeSeparators(QFileInfo(original).absolutePath()));
+    return tr("FloorCover did not close normally last time. Recover the unsaved changes to %1, "
+              "saved automatically %2?")
+        .arg(what, QLocale().toString(Autosaver::recoveryTime(), QLocale::ShortFormat));
+}
+
 bool MainWindow::recoverAutosave() {
     if (!Autosaver::hasRecovery())
         return false;
-    if (dialogsEnabled_ &&
-        QMessageBox::question(this, tr("Recover unsaved changes"),
-                              tr("FloorCover did not close normally last time. Recover the "
-                                 "unsaved changes?")) != QMessageBox::Yes) {
+    if (dialogsEnabled_ && QMessageBox::question(this, tr("Recover unsaved changes"),
+                                                 recoveryQuestion()) != QMessageBox::Yes) {
         autosaver_->discard();
         return false;
     }

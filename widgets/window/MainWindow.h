@@ -69,6 +69,13 @@ public:
     // Any export of the CLI's `export` command (MainWindowExport.cpp): the planned path, the
     // plan or its zones; the path subject needs a planned document.
     bool exportFile(const QString& path, ExportFormat format, ExportSubject subject);
+    // Where the export dialog starts: the last export's folder (else the project's) and
+    // the last format chosen for the subject (else the first).
+    struct ExportDefaults {
+        QString path;
+        QString filter;
+    };
+    ExportDefaults exportDefaults(ExportSubject subject) const;
     // The visible canvas as .png or .svg.
     bool exportView(const QString& path);
     // One-page PDF report of the plan, path, metrics and robot profile.
@@ -79,7 +86,11 @@ public:
     // Offers the document of a session that ended without saving (asks first when dialogs
     // are on). Returns true when it was recovered.
     bool recoverAutosave();
+    // The recovery prompt: which file the changes belong to and when they were saved.
+    static QString recoveryQuestion();
     Autosaver* autosaver() const { return autosaver_; }
+    // Edit > Redo's keys: the platform's Redo keys and Ctrl+Shift+Z, each once.
+    static QList<QKeySequence> redoShortcuts();
 
     // Modal dialogs off (tests, --screenshot): errors go to the status bar and lastError(),
     // and unsaved changes are discarded without asking.

@@ -6,9 +6,16 @@
 #include "tasks/PlanningController.h"
 #include "window/MainWindow.h"
 
+#include <QDesktopServices>
+#include <QDir>
 #include <QFileDialog>
 #include <QFileInfo>
+#include <QLocale>
+#include <QMessageBox>
+#include <QPushButton>
+#include <QSettings>
 #include <QStatusBar>
+#include <QUrl>
 
 namespace fc::ui {
 
@@ -54,7 +61,47 @@ QString filterOf(const ExportChoice& choice) {
         .arg(QString::fromUtf8(choice.label), QString::fromUtf8(choice.suffix));
 }
 
+const char* subjectName(ExportSubject subject) {
+    return subject == ExportSubject::Path    ? "path"
+           : subject == ExportSubject::Zones ? "zones"
+                                             : "plan";
+}
+
+// The last export's choice per subject and its folder, remembered across sessions.
+QString choiceKey(ExportSubject subject) {
+    return QStringLiteral("export/%1/choice").arg(QLatin1String(subjectName(subject)));
+}
+const QString kExportFolderKey = QStringLiteral("export/folder");
+
+void rememberExport(ExportSubject subject, ExportFormat format, const QString& path) {
+    QSettings settings;
+    for (const ExportChoice& choice : choicesFor(subject))
+        if (choice.format == format)
+            settings.setValue(choiceKey(subject), QString::fromUtf8(choice.label));
+    settings.setValue(kExportFolderKey, QFileInfo(path).absolutePath());
+}
+
 } // namespace
+
+MainWindow::ExportDefaults MainWindow::exportDefaults(ExportSubject subject) const {
+    const std::vector<ExportChoice> choices = choicesFor(subject);
+    QSettings settings;
+    const QString label = settings.value(choiceKey(subject)).toString();
+    ExportChoice chosen = choices.front();
+    for (const ExportChoice& choice : choices)
+        if (QString::fromUtf8(choice.label) == label)
+            chosen = choice;
+    QString folder = settings.value(kExportFolderKey).toString();
+    if (folder.isEmpty() || !QFileInfo(folder).isDir())
+        folder = document_->fileName().isEmpty() ? QDir::homePath()
+                                                 : QFileInfo(document_->fileName()).absolutePath();
+    ExportDefaults defaults;
+    defaults.path = QDir(folder).filePath(document_->displayName() + QLatin1Char('-') +
+                                          QLatin1String(subjectName(subject)) + QLatin1Char('.') +
+                                          QString::fromUtf8(chosen.suffix));
+    defaults.filter = filterOf(chosen);
+    return defaults;
+}
 
 bool MainWindow::exportPath(const QString& path) {
     const auto format = exportFormatForExtension(path.toStdString());
@@ -89,8 +136,11 @@ bool MainWindow::exportFile(const QString& path, ExportFormat format, ExportSubj
         showError(tr("Cannot export to %1: %2").arg(path, fromStd(e.what())));
         return false;
     }
-    statusBar()->showMessage(tr("Exported %1 to %2").arg(fromStd(exportFormatName(format)), path),
-                             5000);
+    rememberExport(subject, format, path);
+    statusBar()->showMessage(tr("Exported %1 to %2 (%3)")
+                                 .arg(fromStd(exportFormatName(format)), path,
+                                      QLocale().formattedDataSize(QFileInfo(path).size())),
+                             15000);
     return true;
 }
 
@@ -99,15 +149,10 @@ void MainWindow::exportWithDialog(ExportSubject subject) {
     QStringList filters;
     for (const ExportChoice& choice : choices)
         filters << filterOf(choice);
-    const char* what = subject == ExportSubject::Path    ? "path"
-                       : subject == ExportSubject::Zones ? "zones"
-                                                         : "plan";
-    QString selected = filters.front();
+    const ExportDefaults defaults = exportDefaults(subject);
+    QString selected = defaults.filter;
     const QString path = QFileDialog::getSaveFileName(
-        this, tr("Export"),
-        document_->displayName() + QLatin1Char('-') + QLatin1String(what) + QLatin1Char('.') +
-            QString::fromUtf8(choices.front().suffix),
-        filters.join(QStringLiteral(";;")), &selected);
+        this, tr("Export"), defaults.path, filters.join(QStringLiteral(";;")), &selected);
     if (path.isEmpty())
         return;
     const auto index = static_cast<size_t>(std::max<qsizetype>(0, filters.indexOf(selected)));
@@ -115,7 +160,19 @@ void MainWindow::exportWithDialog(ExportSubject subject) {
     QString target = path;
     if (QFileInfo(path).suffix().isEmpty())
         target += QLatin1Char('.') + QString::fromUtf8(choice.suffix);
-    exportFile(target, choice.format, subject);
+    if (!exportFile(target, choice.format, subject) || !dialogsEnabled_)
+        return;
+    // Said plainly, with the way to the file: the status bar alone was easy to miss.
+    const QString text = subject == ExportSubject::Path    ? tr("Exported the path as %1 to\n%2")
+                         : subject == ExportSubject::Zones ? tr("Exported the zones as %1 to\n%2")
+                                                           : tr("Exported the plan as %1 to\n%2");
+    QMessageBox done(QMessageBox::Information, tr("Export"),
+                     text.arg(QString::fromUtf8(choice.label), QDir::toNativeSeparators(target)),
+                     QMessageBox::Ok, this);
+    QPushButton* show = done.addButton(tr("Show in Folder"), QMessageBox::ActionRole);
+    done.exec();
+    if (done.clickedButton() == show)
+        QDesktopServices::openUrl(QUrl::fromLocalFile(QFileInfo(target).absolutePath()));
 }
 
 } // namespace fc::ui

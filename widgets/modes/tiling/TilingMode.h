@@ -32,6 +32,7 @@ public:
 
 private:
     void updateItem();
+    void shareATab(QMainWindow* window);
 
     QPointer<QGraphicsScene> scene_; // owns item_ while it lives
     TilingController* controller_;

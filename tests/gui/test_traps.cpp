@@ -1,0 +1,206 @@
+// Issue 16, item 5: the traps a supervisor fell into on the first day, each reproduced.
+// (Training progress reaching "Done" is in gui_training; 1-, 8- and 16-bit maps in
+// map_tests.)
+#include "EditorFixture.h"
+#include "docks/PlanningDock.h"
+#include "document/Autosaver.h"
+#include "modes/tiling/TilingDock.h"
+#include "modes/tiling/TilingMode.h"
+#include "tasks/PlanningController.h"
+
+#include <QAction>
+#include <QApplication>
+#include <QDoubleSpinBox>
+#include <QMenu>
+#include <QMenuBar>
+#include <QScreen>
+#include <QStandardPaths>
+#include <QStatusBar>
+#include <QTemporaryDir>
+#include <QUndoStack>
+#include <QWheelEvent>
+
+using namespace fc::ui;
+using namespace fc::ui::test;
+
+class TrapsTest : public QObject {
+    Q_OBJECT
+
+private slots:
+    void initTestCase();
+    void redoShortcutRedoes();
+    void recoveryPromptNamesTheFile();
+    void secondBoundaryAsksBeforeReplacing();
+    void wheelOverAnUnfocusedFieldLeavesItAlone();
+    void exportRemembersFormatAndFolder();
+    void tilingModeKeepsTheWindowOnTheScreen();
+};
+
+void TrapsTest::initTestCase() {
+    QStandardPaths::setTestModeEnabled(true);
+    QCoreApplication::setOrganizationName(QStringLiteral("FloorCoverTests"));
+    QCoreApplication::setApplicationName(QStringLiteral("gui_traps"));
+}
+
+QAction* redoAction(MainWindow& window) {
+    for (QAction* menu : window.menuBar()->actions())
+        if (menu->menu())
+            for (QAction* action : menu->menu()->actions())
+                if (action->shortcuts().contains(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_Z)))
+                    return action;
+    return nullptr;
+}
+
+// Ctrl+Shift+Z was bound twice to Redo ("Ambiguous shortcut overload") and did nothing.
+void TrapsTest::redoShortcutRedoes() {
+    auto window = makeWindow();
+    window->openSample();
+    QApplication::setActiveWindow(window.get());
+    QVERIFY(QTest::qWaitForWindowActive(window.get()));
+    QAction* redo = redoAction(*window);
+    QVERIFY(redo != nullptr);
+    const QList<QKeySequence> keys = redo->shortcuts();
+    for (const QKeySequence& key : keys)
+        QCOMPARE(keys.count(key), 1);
+
+    Document* document = window->document();
+    const size_t obstacles = document->plan().obstacles.size();
+    QVERIFY(document->addPolygon(PolygonRole::Obstacle, {{2, 2}, {3, 2}, {3, 3}, {2, 3}}));
+    for (const QKeySequence& key : keys) {
+        document->undoStack()->undo();
+        QCOMPARE(document->plan().obstacles.size(), obstacles);
+        QTest::keySequence(window.get(), key);
+        QCOMPARE(document->plan().obstacles.size(), obstacles + 1);
+    }
+}
+
+// The prompt at start-up said "Recover the unsaved changes?" without saying of which file.
+void TrapsTest::recoveryPromptNamesTheFile() {
+    QTemporaryDir dir;
+    const QString path = dir.filePath(QStringLiteral("east-wing.fcproj"));
+    Document document;
+    document.setFileName(path);
+    QVERIFY(document.addPolygon(PolygonRole::Boundary, {{0, 0}, {10, 0}, {10, 8}, {0, 8}}));
+    Autosaver saver;
+    saver.setDocument(&document);
+    saver.saveNow();
+    QVERIFY(Autosaver::hasRecovery());
+    const QString question = MainWindow::recoveryQuestion();
+    QVERIFY2(question.contains(QStringLiteral("east-wing.fcproj")), qPrintable(question));
+    QVERIFY2(question.contains(QDir::toNativeSeparators(dir.path())), qPrintable(question));
+    saver.discard();
+    Document untitled;
+    QVERIFY(untitled.addPolygon(PolygonRole::Boundary, {{0, 0}, {10, 0}, {10, 8}, {0, 8}}));
+    saver.setDocument(&untitled);
+    saver.saveNow();
+    QVERIFY(MainWindow::recoveryQuestion().contains(QStringLiteral("untitled")));
+    saver.discard();
+}
+
+// A second boundary drawn beside the first silently replaced it (and the rooms inside).
+void TrapsTest::secondBoundaryAsksBeforeReplacing() {
+    auto window = makeWindow();
+    QVERIFY(window->openFile(QStringLiteral(FC_PLANS_DIR "/simple.geojson")));
+    useDrawingScale(*window);
+    int asked = 0;
+    bool answer = false;
+    window->toolManager()->setConfirmation([&](const QString&) {
+        ++asked;
+        return answer;
+    });
+    useTool(*window, "drawBoundary");
+    const fc::Ring before = window->document()->plan().boundary;
+    const int steps = window->document()->undoStack()->count();
+    // Overlapping the old one (and holding the obstacle), not around it.
+    const std::vector<QPointF> beside{{2, 1}, {10, 1}, {10, 7}, {2, 7}};
+    clickPolygon(*window, beside);
+    QCOMPARE(asked, 1);
+    QCOMPARE(window->document()->plan().boundary, before); // "no": kept
+    QCOMPARE(window->document()->undoStack()->count(), steps);
+    answer = true;
+    clickPolygon(*window, beside);
+    QCOMPARE(asked, 2);
+    QCOMPARE(window->document()->plan().boundary.size(), size_t(4));
+    QVERIFY(window->document()->plan().boundary != before); // "yes": replaced, one step
+    QCOMPARE(window->document()->undoStack()->count(), steps + 1);
+    window->document()->undoStack()->undo();
+    QCOMPARE(window->document()->plan().boundary, before);
+}
+
+// Scrolling the Planning panel over a spin box changed its value (turn time set to 0.0).
+void TrapsTest::wheelOverAnUnfocusedFieldLeavesItAlone() {
+    auto window = makeWindow();
+    window->openSample();
+    QApplication::setActiveWindow(window.get());
+    QVERIFY(QTest::qWaitForWindowActive(window.get()));
+    QDoubleSpinBox* width = window->planningDock()->widthBox();
+    QVERIFY(width->isVisible());
+    const double before = width->value();
+    auto wheelDown = [&] {
+        const QPointF local = width->rect().center();
+        QWheelEvent wheel(local, width->mapToGlobal(local), QPoint(), QPoint(0, -120), Qt::NoButton,
+                          Qt::NoModifier, Qt::NoScrollPhase, false);
+        QApplication::sendEvent(width, &wheel);
+    };
+    window->view()->setFocus();
+    wheelDown();
+    QCOMPARE(width->value(), before);
+    width->setFocus();
+    QTRY_VERIFY(width->hasFocus());
+    wheelDown();
+    QVERIFY(width->value() < before); // focused: the wheel steps it
+}
+
+// After an export nothing confirmed it, and the next export started again at GeoJSON in
+// the working folder.
+void TrapsTest::exportRemembersFormatAndFolder() {
+    QTemporaryDir dir;
+    auto window = makeWindow();
+    window->openSample();
+    QVERIFY(window->planningController()->planAndWait());
+    const QString csv = dir.filePath(QStringLiteral("tour.csv"));
+    QVERIFY(window->exportFile(csv, fc::ExportFormat::Csv, fc::ExportSubject::Path));
+    const MainWindow::ExportDefaults next = window->exportDefaults(fc::ExportSubject::Path);
+    QVERIFY2(next.filter.startsWith(QStringLiteral("CSV")), qPrintable(next.filter));
+    QCOMPARE(QFileInfo(next.path).absolutePath(), QFileInfo(csv).absolutePath());
+    QVERIFY(next.path.endsWith(QStringLiteral(".csv")));
+    // The status bar says where it went.
+    QVERIFY(window->statusBar()->currentMessage().contains(csv));
+    // Another subject keeps its own format.
+    QVERIFY(
+        !window->exportDefaults(fc::ExportSubject::Zones).filter.startsWith(QStringLiteral("CSV")));
+}
+
+// Tiling Robot Mode un-maximised the window and grew it past the screen: its dock was
+// stacked under four others, and their minimum heights added up.
+void TrapsTest::tilingModeKeepsTheWindowOnTheScreen() {
+    auto window = makeWindow();
+    window->openSample();
+    window->showMaximized();
+    QTest::qWait(300);
+    const QRect screen = window->screen()->availableGeometry();
+    window->tilingMode()->action()->setChecked(true);
+    QTest::qWait(300);
+    QVERIFY2(window->minimumSizeHint().height() <= screen.height(),
+             qPrintable(QStringLiteral("minimum height %1 on a screen %2 high")
+                            .arg(window->minimumSizeHint().height())
+                            .arg(screen.height())));
+    QVERIFY2(screen.contains(window->frameGeometry()) || window->isMaximized(),
+             qPrintable(QStringLiteral("window %1,%2 %3x%4 on a screen %5x%6")
+                            .arg(window->frameGeometry().x())
+                            .arg(window->frameGeometry().y())
+                            .arg(window->frameGeometry().width())
+                            .arg(window->frameGeometry().height())
+                            .arg(screen.width())
+                            .arg(screen.height())));
+    if (QGuiApplication::platformName() == QLatin1String("xcb"))
+        QVERIFY(window->isMaximized());
+    // As a tab it is in front and the mode is on; closing it still leaves the mode.
+    QVERIFY(window->tilingMode()->isActive());
+    QTRY_VERIFY(window->tilingMode()->dock()->isVisible());
+    window->tilingMode()->dock()->close();
+    QVERIFY(!window->tilingMode()->isActive());
+}
+
+QTEST_MAIN(TrapsTest)
+#include "test_traps.moc"
