@@ -2,6 +2,21 @@
 <!DOCTYPE TS>
 <TS version="2.1" language="de_DE">
 <context>
+    <name>PlannerMessages</name>
+    <message>
+        <source>The exact solver orders at most %1 cells, and these rooms have %2. Choose the heuristic solver in the Planning panel.</source>
+        <translation>Der exakte Löser ordnet höchstens %1 Zellen, diese Räume haben %2. Wählen Sie im Bereich Planung den heuristischen Löser.</translation>
+    </message>
+    <message>
+        <source>The exact solver could not prove the best order of %1 cells within its budget (%2). Choose the heuristic solver in the Planning panel.</source>
+        <translation>Der exakte Löser konnte die beste Reihenfolge von %1 Zellen in seinem Budget (%2) nicht beweisen. Wählen Sie im Bereich Planung den heuristischen Löser.</translation>
+    </message>
+    <message>
+        <source>The dqn solver needs a trained model: train one in the Training panel (or load one there), or choose another solver.</source>
+        <translation>Der Löser dqn braucht ein trainiertes Modell: trainieren Sie eines im Bereich Training (oder laden Sie es dort), oder wählen Sie einen anderen Löser.</translation>
+    </message>
+</context>
+<context>
     <name>fc::ui::BuildingImportDialog</name>
     <message>
         <source>File&apos;s unit</source>
@@ -122,14 +137,6 @@
         <translation>Planung (s)</translation>
     </message>
     <message>
-        <source>refused: %1</source>
-        <translation>abgelehnt: %1</translation>
-    </message>
-    <message>
-        <source>%1 against %2: extra distance %3 %, turns %4 % (paper: %5)</source>
-        <translation>%1 gegenüber %2: Zusatzstrecke %3 %, Wendungen %4 % (Artikel: %5)</translation>
-    </message>
-    <message>
         <source>%1 of %2 solvers answered; overlaps are drawn in blue.</source>
         <translation>%1 von %2 Lösern haben geantwortet; Überlappungen sind blau gezeichnet.</translation>
     </message>
@@ -148,6 +155,50 @@
     <message>
         <source>The comparison was cancelled.</source>
         <translation>Der Vergleich wurde abgebrochen.</translation>
+    </message>
+    <message>
+        <source>The method that ordered the rooms&apos; cells</source>
+        <translation>Das Verfahren, das die Zellen der Räume geordnet hat</translation>
+    </message>
+    <message>
+        <source>How far the robot drives in all</source>
+        <translation>Wie weit der Roboter insgesamt fährt</translation>
+    </message>
+    <message>
+        <source>Distance beyond the stripes themselves (floor area / coverage width): the moves between stripes and rooms. Less is better.</source>
+        <translation>Strecke über die Bahnen selbst hinaus (Bodenfläche / Arbeitsbreite): die Fahrten zwischen Bahnen und Räumen. Weniger ist besser.</translation>
+    </message>
+    <message>
+        <source>Turns the robot makes; each costs the turn time</source>
+        <translation>Wendungen des Roboters; jede kostet die Wendezeit</translation>
+    </message>
+    <message>
+        <source>Share of the floor the robot can reach that the path sweeps</source>
+        <translation>Anteil des erreichbaren Bodens, den der Pfad überstreicht</translation>
+    </message>
+    <message>
+        <source>Estimated cleaning time: length / speed + turns × turn time</source>
+        <translation>Geschätzte Reinigungszeit: Länge / Geschwindigkeit + Wendungen × Wendezeit</translation>
+    </message>
+    <message>
+        <source>How long the computer took to plan</source>
+        <translation>Wie lange der Rechner zum Planen brauchte</translation>
+    </message>
+    <message>
+        <source>Stop</source>
+        <translation>Anhalten</translation>
+    </message>
+    <message>
+        <source>Stop comparing; solvers that answered stay in the table</source>
+        <translation>Vergleich anhalten; Löser, die geantwortet haben, bleiben in der Tabelle</translation>
+    </message>
+    <message>
+        <source>Did not plan: %1</source>
+        <translation>Nicht geplant: %1</translation>
+    </message>
+    <message>
+        <source>%1 drives %3 % of the extra distance of %2 (a published method) and makes %4 % of its turns; below 100 % is better. The published comparison: %5.</source>
+        <translation>%1 fährt %3 % der Zusatzstrecke von %2 (einem veröffentlichten Verfahren) und macht %4 % seiner Wendungen; unter 100 % ist besser. Der veröffentlichte Vergleich: %5.</translation>
     </message>
 </context>
 <context>

@@ -2,6 +2,21 @@
 <!DOCTYPE TS>
 <TS version="2.1" language="fr_FR">
 <context>
+    <name>PlannerMessages</name>
+    <message>
+        <source>The exact solver orders at most %1 cells, and these rooms have %2. Choose the heuristic solver in the Planning panel.</source>
+        <translation>Le solveur exact ordonne au plus %1 cellules, et ces pièces en ont %2. Choisissez le solveur heuristique dans le panneau Planification.</translation>
+    </message>
+    <message>
+        <source>The exact solver could not prove the best order of %1 cells within its budget (%2). Choose the heuristic solver in the Planning panel.</source>
+        <translation>Le solveur exact n’a pas pu prouver le meilleur ordre de %1 cellules dans son budget (%2). Choisissez le solveur heuristique dans le panneau Planification.</translation>
+    </message>
+    <message>
+        <source>The dqn solver needs a trained model: train one in the Training panel (or load one there), or choose another solver.</source>
+        <translation>Le solveur dqn a besoin d’un modèle entraîné : entraînez-en un dans le panneau Entraînement (ou chargez-le là), ou choisissez un autre solveur.</translation>
+    </message>
+</context>
+<context>
     <name>fc::ui::BuildingImportDialog</name>
     <message>
         <source>File&apos;s unit</source>
@@ -122,14 +137,6 @@
         <translation>Planification (s)</translation>
     </message>
     <message>
-        <source>refused: %1</source>
-        <translation>refusé : %1</translation>
-    </message>
-    <message>
-        <source>%1 against %2: extra distance %3 %, turns %4 % (paper: %5)</source>
-        <translation>%1 face à %2 : distance supplémentaire %3 %, virages %4 % (article : %5)</translation>
-    </message>
-    <message>
         <source>%1 of %2 solvers answered; overlaps are drawn in blue.</source>
         <translation>%1 solveurs sur %2 ont répondu ; les recouvrements sont tracés en bleu.</translation>
     </message>
@@ -148,6 +155,50 @@
     <message>
         <source>The comparison was cancelled.</source>
         <translation>La comparaison a été annulée.</translation>
+    </message>
+    <message>
+        <source>The method that ordered the rooms&apos; cells</source>
+        <translation>La méthode qui a ordonné les cellules des pièces</translation>
+    </message>
+    <message>
+        <source>How far the robot drives in all</source>
+        <translation>La distance totale parcourue par le robot</translation>
+    </message>
+    <message>
+        <source>Distance beyond the stripes themselves (floor area / coverage width): the moves between stripes and rooms. Less is better.</source>
+        <translation>Distance au-delà des bandes elles-mêmes (surface / largeur de couverture) : les trajets entre bandes et pièces. Moins, c’est mieux.</translation>
+    </message>
+    <message>
+        <source>Turns the robot makes; each costs the turn time</source>
+        <translation>Virages du robot ; chacun coûte le temps de virage</translation>
+    </message>
+    <message>
+        <source>Share of the floor the robot can reach that the path sweeps</source>
+        <translation>Part du sol accessible que le chemin balaie</translation>
+    </message>
+    <message>
+        <source>Estimated cleaning time: length / speed + turns × turn time</source>
+        <translation>Temps de nettoyage estimé : longueur / vitesse + virages × temps de virage</translation>
+    </message>
+    <message>
+        <source>How long the computer took to plan</source>
+        <translation>Le temps de calcul de la planification</translation>
+    </message>
+    <message>
+        <source>Stop</source>
+        <translation>Arrêter</translation>
+    </message>
+    <message>
+        <source>Stop comparing; solvers that answered stay in the table</source>
+        <translation>Arrêter la comparaison ; les solveurs qui ont répondu restent dans le tableau</translation>
+    </message>
+    <message>
+        <source>Did not plan: %1</source>
+        <translation>Pas de plan : %1</translation>
+    </message>
+    <message>
+        <source>%1 drives %3 % of the extra distance of %2 (a published method) and makes %4 % of its turns; below 100 % is better. The published comparison: %5.</source>
+        <translation>%1 parcourt %3 % de la distance supplémentaire de %2 (une méthode publiée) et fait %4 % de ses virages ; moins de 100 %, c’est mieux. La comparaison publiée : %5.</translation>
     </message>
 </context>
 <context>

@@ -1,8 +1,12 @@
 // Plan > Compare Solvers: every solver on the same query, the table, the paper's ratios and
 // the paths side by side with overlaps in blue.
-#include "dialogs/CompareDialog.h"
 #include "EditorFixture.h"
+#include "dialogs/CompareDialog.h"
+#include "tasks/Task.h"
 
+#include <QElapsedTimer>
+#include <QPointer>
+#include <QPushButton>
 #include <QTableWidget>
 #include <QtTest>
 
@@ -14,6 +18,8 @@ class CompareDialogTest : public QObject {
 private slots:
     void comparesEverySolverWithTheBaselines();
     void menuOpensTheDialog();
+    void stopButtonStopsAndCloseReturnsAtOnce();
+    void columnsAreExplained();
 };
 
 void CompareDialogTest::comparesEverySolverWithTheBaselines() {
@@ -63,6 +69,45 @@ void CompareDialogTest::menuOpensTheDialog() {
     QVERIFY(done.wait(120000));
     QVERIFY(dialog->table()->rowCount() >= 5);
     dialog->close();
+}
+
+// Issue 16 trap: Compare could not be stopped, and closing it blocked the window until
+// every solver had ended.
+void CompareDialogTest::stopButtonStopsAndCloseReturnsAtOnce() {
+    PlanRequest request =
+        planRequestFor(loadProjectFile(std::string(FC_PLANS_DIR) + "/ward.geojson"));
+    {
+        CompareDialog dialog(request);
+        dialog.show();
+        QVERIFY(!dialog.stopButton()->isEnabled());
+        QSignalSpy done(&dialog, &CompareDialog::finished);
+        dialog.start();
+        QVERIFY(dialog.stopButton()->isEnabled());
+        QTest::mouseClick(dialog.stopButton(), Qt::LeftButton);
+        QVERIFY(done.wait(30000));
+        QTRY_VERIFY_WITH_TIMEOUT(!dialog.stopButton()->isEnabled(), 10000);
+        QVERIFY(!dialog.task());
+    }
+    CompareDialog dialog(request);
+    dialog.show();
+    dialog.start();
+    QPointer<Task> task = dialog.task();
+    QVERIFY(task);
+    QElapsedTimer closing;
+    closing.start();
+    dialog.close();
+    QVERIFY2(closing.elapsed() < 2000, "closing waited for the solvers");
+    QTRY_VERIFY_WITH_TIMEOUT(!task, 60000); // the work ends on its own, cancelled
+}
+
+void CompareDialogTest::columnsAreExplained() {
+    CompareDialog dialog(
+        planRequestFor(loadProjectFile(std::string(FC_PLANS_DIR) + "/simple.geojson")));
+    for (int c = 0; c < dialog.table()->columnCount(); ++c)
+        QVERIFY(!dialog.table()->horizontalHeaderItem(c)->toolTip().isEmpty());
+    QVERIFY(dialog.runAndWait());
+    QVERIFY2(dialog.ratiosText().contains(QStringLiteral("below 100 % is better")),
+             qPrintable(dialog.ratiosText()));
 }
 
 QTEST_MAIN(CompareDialogTest)

@@ -4,6 +4,8 @@
 #include "EditorFixture.h"
 #include "docks/PlanningDock.h"
 #include "document/Autosaver.h"
+#include "document/PlannerMessages.h"
+#include "learning/dqn/DqnSolver.h"
 #include "modes/tiling/TilingDock.h"
 #include "modes/tiling/TilingMode.h"
 #include "tasks/PlanningController.h"
@@ -34,6 +36,7 @@ private slots:
     void wheelOverAnUnfocusedFieldLeavesItAlone();
     void exportRemembersFormatAndFolder();
     void tilingModeKeepsTheWindowOnTheScreen();
+    void plannerMessagesSpeakOfTheEditor();
 };
 
 void TrapsTest::initTestCase() {
@@ -200,6 +203,35 @@ void TrapsTest::tilingModeKeepsTheWindowOnTheScreen() {
     QTRY_VERIFY(window->tilingMode()->dock()->isVisible());
     window->tilingMode()->dock()->close();
     QVERIFY(!window->tilingMode()->isActive());
+}
+
+// "solver dqn needs a trained model (--model FILE; make one with floorcover-cli train)" and
+// "use `--solver heuristic`" told a supervisor which command-line flag to pass.
+void TrapsTest::plannerMessagesSpeakOfTheEditor() {
+    for (const char* cli :
+         {"solver dqn needs a trained model (--model FILE; make one with floorcover-cli train)",
+          "exact solver: 174 required cells exceed its limit of 40; use `--solver heuristic` for "
+          "this query",
+          "exact solver: 30 required cells: no proof of optimality within its budget (2,000,000 "
+          "states or 60 s; the best walk known is within 1.2% of optimal); use `--solver "
+          "heuristic` for this query"}) {
+        const QString plain = plainMessage(QString::fromLatin1(cli));
+        QVERIFY2(!plain.contains(QStringLiteral("--")) && !plain.contains(QStringLiteral("cli")),
+                 qPrintable(plain));
+        QVERIFY2(plain.contains(QStringLiteral("panel")), qPrintable(plain));
+    }
+    QCOMPARE(plainMessage(QStringLiteral("the start point lies in an obstacle")),
+             QStringLiteral("the start point lies in an obstacle"));
+    // Through the window: dqn without a model; the message stays when the background
+    // preparation of the overlays ends after the plan failed (it cleared it).
+    fc::registerDqnSolver();
+    auto window = makeWindow();
+    window->openSample();
+    QVERIFY(window->document()->setSolver(QStringLiteral("dqn")));
+    QVERIFY(!window->planningController()->planAndWait());
+    QTRY_VERIFY2_WITH_TIMEOUT(
+        window->planningController()->errorMessage().contains(QStringLiteral("Training panel")),
+        qPrintable(window->planningController()->errorMessage()), 10000);
 }
 
 QTEST_MAIN(TrapsTest)

@@ -1,15 +1,18 @@
 #include "dialogs/CompareDialog.h"
 
+#include "document/PlannerMessages.h"
 #include "pipeline/Comparison.h"
 #include "tasks/Task.h"
 
 #include <QCloseEvent>
+#include <QDialogButtonBox>
 #include <QEventLoop>
 #include <QGridLayout>
 #include <QHeaderView>
 #include <QLabel>
 #include <QPainter>
 #include <QPainterPath>
+#include <QPushButton>
 #include <QScrollArea>
 #include <QTableWidget>
 #include <QTimer>
@@ -66,6 +69,18 @@ CompareDialog::CompareDialog(PlanRequest request, QWidget* parent)
     table_->setColumnCount(7);
     table_->setHorizontalHeaderLabels({tr("Solver"), tr("Length (m)"), tr("Extra (m)"), tr("Turns"),
                                        tr("Coverage"), tr("Time (s)"), tr("Planning (s)")});
+    // What each column means, in the words of the floor rather than the paper.
+    const QStringList tips{
+        tr("The method that ordered the rooms' cells"),
+        tr("How far the robot drives in all"),
+        tr("Distance beyond the stripes themselves (floor area / coverage width): the "
+           "moves between stripes and rooms. Less is better."),
+        tr("Turns the robot makes; each costs the turn time"),
+        tr("Share of the floor the robot can reach that the path sweeps"),
+        tr("Estimated cleaning time: length / speed + turns × turn time"),
+        tr("How long the computer took to plan")};
+    for (int c = 0; c < tips.size(); ++c)
+        table_->horizontalHeaderItem(c)->setToolTip(tips[c]);
     table_->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
     table_->setEditTriggers(QAbstractItemView::NoEditTriggers);
     layout->addWidget(table_);
@@ -78,6 +93,13 @@ CompareDialog::CompareDialog(PlanRequest request, QWidget* parent)
     scroll->setWidget(pathsWidget);
     scroll->setWidgetResizable(true);
     layout->addWidget(scroll, 1);
+    auto* buttons = new QDialogButtonBox(QDialogButtonBox::Close, this);
+    stop_ = buttons->addButton(tr("Stop"), QDialogButtonBox::ActionRole);
+    stop_->setToolTip(tr("Stop comparing; solvers that answered stay in the table"));
+    stop_->setEnabled(false);
+    connect(stop_, &QPushButton::clicked, this, &CompareDialog::cancel);
+    connect(buttons, &QDialogButtonBox::rejected, this, &QDialog::reject);
+    layout->addWidget(buttons);
     resize(1000, 760);
 }
 
@@ -91,6 +113,7 @@ void CompareDialog::start() {
     task_ = TaskManager::forObject(this)->run(
         tr("Comparing the solvers"),
         [request = request_](TaskFeedback& feedback) { return planAll(request, feedback); });
+    stop_->setEnabled(true);
     connect(task_, &Task::statusChanged, this, [this](const QString& solver) {
         status_->setText(tr("Planning with every solver… (%1)").arg(solver));
     });
@@ -100,14 +123,17 @@ void CompareDialog::start() {
         emit finished();
     });
     connect(task_, &Task::failed, this, [this](const QString& message) {
-        status_->setText(tr("The comparison failed: %1").arg(message));
+        status_->setText(tr("The comparison failed: %1").arg(plainMessage(message)));
         emit finished();
     });
     connect(task_, &Task::cancelled, this, [this] {
         status_->setText(tr("The comparison was cancelled."));
         emit finished();
     });
-    connect(task_, &Task::ended, this, [this] { task_ = nullptr; });
+    connect(task_, &Task::ended, this, [this] {
+        task_ = nullptr;
+        stop_->setEnabled(false);
+    });
 }
 
 void CompareDialog::cancel() {
@@ -144,9 +170,12 @@ void CompareDialog::showRuns() {
         const int r = static_cast<int>(i);
         table_->setItem(r, 0, new QTableWidgetItem(QString::fromStdString(run.solver)));
         if (!run.result) {
-            table_->setItem(
-                r, 1,
-                new QTableWidgetItem(tr("refused: %1").arg(QString::fromStdString(run.error))));
+            // Across the figures' columns, so a long reason does not widen "Length".
+            const QString reason = plainMessage(QString::fromStdString(run.error));
+            auto* item = new QTableWidgetItem(tr("Did not plan: %1").arg(reason));
+            item->setToolTip(reason);
+            table_->setItem(r, 1, item);
+            table_->setSpan(r, 1, 1, table_->columnCount() - 1);
             images_.emplace_back();
             continue;
         }
@@ -170,7 +199,8 @@ void CompareDialog::showRuns() {
     }
     QStringList lines;
     for (const BaselineRatio& ratio : baselineRatios(answered))
-        lines << tr("%1 against %2: extra distance %3 %, turns %4 % (paper: %5)")
+        lines << tr("%1 drives %3 % of the extra distance of %2 (a published method) and makes "
+                    "%4 % of its turns; below 100 % is better. The published comparison: %5.")
                      .arg(QString::fromStdString(ratio.ours),
                           QString::fromStdString(ratio.baseline),
                           number(100.0 * ratio.extraRatio, 1), number(100.0 * ratio.turnsRatio, 1),

@@ -16,6 +16,7 @@
 
 class QGridLayout;
 class QLabel;
+class QPushButton;
 class QTableWidget;
 
 namespace fc::ui {
@@ -41,6 +42,7 @@ public:
     const std::vector<SolverRun>& runs() const { return runs_; }
     QTableWidget* table() const { return table_; }
     QString ratiosText() const;
+    QPushButton* stopButton() const { return stop_; } // enabled while comparing
     QImage pathImage(std::size_t index) const { return images_.at(index); }
 
     // The plan's walls with the path in dark red and its overlaps in blue.
@@ -60,6 +62,7 @@ private:
     std::vector<QImage> images_;
     QPointer<Task> task_;
     QTableWidget* table_;
+    QPushButton* stop_ = nullptr;
     QLabel* ratios_;
     QLabel* status_;
     QGridLayout* paths_;

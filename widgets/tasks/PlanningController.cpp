@@ -2,6 +2,7 @@
 
 #include "document/Conversions.h"
 #include "document/Document.h"
+#include "document/PlannerMessages.h"
 #include "pipeline/PerRoomSweep.h"
 #include "tasks/Task.h"
 
@@ -119,12 +120,17 @@ void PlanningController::startPrepare() {
     prepareTask_ = task;
     connect(task, &Task::finished, this, [this, task] {
         prepared_ = task->result<PreparedPlan>();
-        setError(QString());
+        // Only a preparation's own error is cleared: a plan that failed (solver dqn without
+        // a model) keeps saying why while the overlays are brought up to date.
+        if (errorFromPrepare_)
+            setError(QString());
+        errorFromPrepare_ = false;
         emit preparedChanged();
     });
     connect(task, &Task::failed, this, [this](const QString& message) {
         prepared_.reset();
-        setError(message);
+        setError(plainMessage(message));
+        errorFromPrepare_ = true;
         emit preparedChanged();
     });
     connect(task, &Task::ended, this, [this, task] { taskEnded(task); });
@@ -145,11 +151,13 @@ void PlanningController::plan() {
     connect(task, &Task::finished, this, [this, task] {
         result_ = task->result<PlanResult>();
         setError(QString());
+        errorFromPrepare_ = false;
         emit resultChanged();
     });
     connect(task, &Task::failed, this, [this](const QString& message) {
         result_.reset();
-        setError(message);
+        setError(plainMessage(message));
+        errorFromPrepare_ = false;
         emit resultChanged();
     });
     connect(task, &Task::ended, this, [this, task] { taskEnded(task); });

@@ -73,6 +73,7 @@ private:
     std::shared_ptr<const PreparedPlan> prepared_;
     std::shared_ptr<const PlanResult> result_;
     QString error_;
+    bool errorFromPrepare_ = false; // error_ came from the preparation, not from planning
     std::string modelPath_;
     // The current tasks (null when none); an edit cancels them.
     QPointer<Task> prepareTask_;
