@@ -1108,10 +1108,6 @@ Abdeckungspfadplanung für Reinigungs- und Desinfektionsroboter.</translation>
         <translation>Ziel setzen</translation>
     </message>
     <message>
-        <source>Place Start: click where the robot starts (snapped to the nearest corner when planning); right-click removes it.</source>
-        <translation>Start setzen: dort klicken, wo der Roboter beginnt (beim Planen an die nächste Ecke gefangen); Rechtsklick entfernt ihn.</translation>
-    </message>
-    <message>
         <source>Place End: click where the robot should finish; right-click removes it (the path then returns to the start).</source>
         <translation>Ziel setzen: dort klicken, wo der Roboter enden soll; Rechtsklick entfernt es (der Pfad kehrt dann zum Start zurück).</translation>
     </message>
@@ -1126,6 +1122,22 @@ Abdeckungspfadplanung für Reinigungs- und Desinfektionsroboter.</translation>
     <message>
         <source>%1: the point must lie inside the floor.</source>
         <translation>%1: Der Punkt muss innerhalb der Fläche liegen.</translation>
+    </message>
+    <message>
+        <source>Place Start: click where the robot starts (moved off a wall to where the robot fits); right-click removes it.</source>
+        <translation>Start setzen: klicken Sie, wo der Roboter beginnt (von einer Wand weg dorthin gerückt, wo der Roboter passt); Rechtsklick entfernt ihn.</translation>
+    </message>
+    <message>
+        <source>%1: that point is inside an obstacle; click on the floor.</source>
+        <translation>%1: dieser Punkt liegt in einem Hindernis; klicken Sie auf den Boden.</translation>
+    </message>
+    <message>
+        <source>%1: the robot (%2 m across) does not fit there or nearby.</source>
+        <translation>%1: der Roboter (%2 m breit) passt dort und in der Nähe nicht hin.</translation>
+    </message>
+    <message>
+        <source>%1: moved %2 m off the wall, where the robot fits.</source>
+        <translation>%1: um %2 m von der Wand weg gerückt, wo der Roboter passt.</translation>
     </message>
 </context>
 <context>

@@ -1108,10 +1108,6 @@ Planification de trajets de couverture pour robots de nettoyage et de désinfect
         <translation>Placer l’arrivée</translation>
     </message>
     <message>
-        <source>Place Start: click where the robot starts (snapped to the nearest corner when planning); right-click removes it.</source>
-        <translation>Placer le départ : cliquez là où le robot commence (aimanté au coin le plus proche lors de la planification) ; clic droit pour le retirer.</translation>
-    </message>
-    <message>
         <source>Place End: click where the robot should finish; right-click removes it (the path then returns to the start).</source>
         <translation>Placer l’arrivée : cliquez là où le robot doit finir ; clic droit pour la retirer (le trajet revient alors au départ).</translation>
     </message>
@@ -1126,6 +1122,22 @@ Planification de trajets de couverture pour robots de nettoyage et de désinfect
     <message>
         <source>%1: the point must lie inside the floor.</source>
         <translation>%1 : le point doit se trouver dans la surface.</translation>
+    </message>
+    <message>
+        <source>Place Start: click where the robot starts (moved off a wall to where the robot fits); right-click removes it.</source>
+        <translation>Placer le départ : cliquez là où le robot part (écarté d’un mur jusqu’où le robot tient) ; clic droit pour le retirer.</translation>
+    </message>
+    <message>
+        <source>%1: that point is inside an obstacle; click on the floor.</source>
+        <translation>%1 : ce point est dans un obstacle ; cliquez sur le sol.</translation>
+    </message>
+    <message>
+        <source>%1: the robot (%2 m across) does not fit there or nearby.</source>
+        <translation>%1 : le robot (%2 m de large) ne tient ni là ni à proximité.</translation>
+    </message>
+    <message>
+        <source>%1: moved %2 m off the wall, where the robot fits.</source>
+        <translation>%1 : déplacé de %2 m loin du mur, là où le robot tient.</translation>
     </message>
 </context>
 <context>

@@ -6,6 +6,7 @@
 #include "document/Autosaver.h"
 #include "document/PlannerMessages.h"
 #include "learning/dqn/DqnSolver.h"
+#include "model/RobotPlacement.h"
 #include "modes/tiling/TilingDock.h"
 #include "modes/tiling/TilingMode.h"
 #include "tasks/PlanningController.h"
@@ -37,6 +38,7 @@ private slots:
     void exportRemembersFormatAndFolder();
     void tilingModeKeepsTheWindowOnTheScreen();
     void plannerMessagesSpeakOfTheEditor();
+    void startInAnObstacleIsRefusedOnTheSpot();
 };
 
 void TrapsTest::initTestCase() {
@@ -232,6 +234,31 @@ void TrapsTest::plannerMessagesSpeakOfTheEditor() {
     QTRY_VERIFY2_WITH_TIMEOUT(
         window->planningController()->errorMessage().contains(QStringLiteral("Training panel")),
         qPrintable(window->planningController()->errorMessage()), 10000);
+}
+
+// A start clicked inside an obstacle was accepted; planning then failed with "the start
+// point cannot be joined to the corner graph without collision".
+void TrapsTest::startInAnObstacleIsRefusedOnTheSpot() {
+    auto window = makeWindow();
+    QVERIFY(window->openFile(QStringLiteral(FC_PLANS_DIR "/simple.geojson"))); // pillar 5-7 x 3-5
+    useDrawingScale(*window);
+    QString said;
+    connect(window->toolManager(), &ToolManager::statusMessage, this,
+            [&said](const QString& message) { said = message; });
+    useTool(*window, "placeStart");
+    click(*window, {6, 4});
+    QVERIFY(!window->document()->project().hasStart);
+    QVERIFY2(said.contains(QStringLiteral("obstacle")), qPrintable(said));
+    // At the wall: moved to where the disc fits, and planning works from there.
+    for (QAction* action : window->findChildren<QAction*>())
+        if (action->text().contains(QStringLiteral("Snap to Grid")))
+            action->setChecked(false);
+    click(*window, {0.15, 4.2});
+    QVERIFY(window->document()->project().hasStart);
+    const fc::Vec2 start = window->document()->project().start;
+    QVERIFY(fc::distanceToWalls(window->document()->plan(), start) >= 0.3);
+    QVERIFY2(said.contains(QStringLiteral("moved")), qPrintable(said));
+    QVERIFY(window->planningController()->planAndWait());
 }
 
 QTEST_MAIN(TrapsTest)

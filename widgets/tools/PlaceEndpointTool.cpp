@@ -1,9 +1,10 @@
 #include "tools/PlaceEndpointTool.h"
 
-#include "document/Conversions.h"
-#include "document/Document.h"
 #include "canvas/PlanScene.h"
 #include "canvas/SceneStyle.h"
+#include "document/Conversions.h"
+#include "document/Document.h"
+#include "model/RobotPlacement.h"
 
 #include <QGraphicsItem>
 
@@ -19,8 +20,8 @@ PlaceEndpointTool::PlaceEndpointTool(Endpoint endpoint, QObject* parent)
 
 QString PlaceEndpointTool::usageHint() const {
     return endpoint_ == Endpoint::Start
-               ? tr("Place Start: click where the robot starts (snapped to the nearest corner "
-                    "when planning); right-click removes it.")
+               ? tr("Place Start: click where the robot starts (moved off a wall to where the "
+                    "robot fits); right-click removes it.")
                : tr("Place End: click where the robot should finish; right-click removes it "
                     "(the path then returns to the start).");
 }
@@ -67,15 +68,32 @@ void PlaceEndpointTool::mouseReleased(const ToolMouseEvent& event) {
     pressed_ = false;
     delete ghost_;
     ghost_ = nullptr;
-    const Vec2 position = toVec2(event.snapped);
-    if (!document()->roomAt(position) && !pointInRing(document()->plan().boundary, position)) {
+    // Refused or moved on the spot: a start in an obstacle used to be accepted and planning
+    // then failed with "cannot be joined to the corner graph without collision".
+    const double diameter = document()->project().robot.robotDiameter;
+    const RobotPlacement placed = placeRobot(document()->plan(), toVec2(event.snapped), diameter);
+    switch (placed.problem) {
+    case PlacementProblem::OutsideFloor:
         emit statusMessage(tr("%1: the point must lie inside the floor.").arg(name()));
         return;
+    case PlacementProblem::InsideObstacle:
+        emit statusMessage(
+            tr("%1: that point is inside an obstacle; click on the floor.").arg(name()));
+        return;
+    case PlacementProblem::NoRoom:
+        emit statusMessage(tr("%1: the robot (%2 m across) does not fit there or nearby.")
+                               .arg(name())
+                               .arg(diameter, 0, 'f', 2));
+        return;
+    case PlacementProblem::None:
+        break;
     }
-    if (endpoint_ == Endpoint::Start)
-        document()->setStart(position);
-    else
-        document()->setEnd(position);
+    const bool accepted = endpoint_ == Endpoint::Start ? document()->setStart(placed.position)
+                                                       : document()->setEnd(placed.position);
+    if (accepted && placed.moved > 0.0)
+        emit statusMessage(tr("%1: moved %2 m off the wall, where the robot fits.")
+                               .arg(name())
+                               .arg(placed.moved, 0, 'f', 2));
 }
 
 } // namespace fc::ui
