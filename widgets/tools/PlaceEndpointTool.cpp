@@ -70,7 +70,9 @@ void PlaceEndpointTool::mouseReleased(const ToolMouseEvent& event) {
     ghost_ = nullptr;
     // Refused or moved on the spot: a start in an obstacle used to be accepted and planning
     // then failed with "cannot be joined to the corner graph without collision".
-    const double diameter = document()->project().robot.robotDiameter;
+    const RobotProfile& robot = document()->project().robot;
+    // L = 0 reads as L = W, as in the planner.
+    const double diameter = robot.robotDiameter > 0.0 ? robot.robotDiameter : robot.coverageWidth;
     const RobotPlacement placed = placeRobot(document()->plan(), toVec2(event.snapped), diameter);
     switch (placed.problem) {
     case PlacementProblem::OutsideFloor:
