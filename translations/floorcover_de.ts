@@ -904,6 +904,26 @@ Abdeckungspfadplanung für Reinigungs- und Desinfektionsroboter.</translation>
         <source>Show in Folder</source>
         <translation>Im Ordner zeigen</translation>
     </message>
+    <message>
+        <source>&amp;Replan After Each Edit</source>
+        <translation>Nach jeder Änderung &amp;neu planen</translation>
+    </message>
+    <message>
+        <source>Plan the path again in the background whenever the floor, the rooms or the start and end change; the old path stays greyed until then.</source>
+        <translation>Den Pfad im Hintergrund neu planen, sobald sich Grundriss, Räume, Start oder Ziel ändern; bis dahin bleibt der alte Pfad grau sichtbar.</translation>
+    </message>
+    <message>
+        <source>Loaded the trained model %1</source>
+        <translation>Trainiertes Modell %1 geladen</translation>
+    </message>
+    <message>
+        <source>The trained model beside the project was not loaded (%1): %2</source>
+        <translation>Das trainierte Modell neben dem Projekt wurde nicht geladen (%1): %2</translation>
+    </message>
+    <message>
+        <source>The project was saved, but not its trained model: %1</source>
+        <translation>Das Projekt wurde gespeichert, sein trainiertes Modell jedoch nicht: %1</translation>
+    </message>
 </context>
 <context>
     <name>fc::ui::OverlayLayer</name>
@@ -1181,6 +1201,10 @@ Abdeckungspfadplanung für Reinigungs- und Desinfektionsroboter.</translation>
         <source>Planning the path</source>
         <translation>Pfad wird geplant</translation>
     </message>
+    <message>
+        <source>Sketching the path</source>
+        <translation>Pfad wird skizziert</translation>
+    </message>
 </context>
 <context>
     <name>fc::ui::PlanningDock</name>
@@ -1371,6 +1395,10 @@ Abdeckungspfadplanung für Reinigungs- und Desinfektionsroboter.</translation>
     <message>
         <source>Join the two selected rooms into one (they must share a wall or a doorway); the first keeps its name.</source>
         <translation>Die zwei ausgewählten Räume zu einem verbinden (sie müssen eine Wand oder eine Tür teilen); der erste behält seinen Namen.</translation>
+    </message>
+    <message>
+        <source>A quick sketch of the path is shown; the planner is refining it…</source>
+        <translation>Eine schnelle Skizze des Pfads wird angezeigt; der Planer verfeinert sie…</translation>
     </message>
 </context>
 <context>
@@ -1789,6 +1817,10 @@ Abdeckungspfadplanung für Reinigungs- und Desinfektionsroboter.</translation>
     <message>
         <source>Paused at %p% · %1 trained</source>
         <translation>Angehalten bei %p% · %1 trainiert</translation>
+    </message>
+    <message>
+        <source>cannot replace the file</source>
+        <translation>die Datei kann nicht ersetzt werden</translation>
     </message>
 </context>
 <context>

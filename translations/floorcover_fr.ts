@@ -904,6 +904,26 @@ Planification de trajets de couverture pour robots de nettoyage et de désinfect
         <source>Show in Folder</source>
         <translation>Afficher dans le dossier</translation>
     </message>
+    <message>
+        <source>&amp;Replan After Each Edit</source>
+        <translation>&amp;Replanifier après chaque modification</translation>
+    </message>
+    <message>
+        <source>Plan the path again in the background whenever the floor, the rooms or the start and end change; the old path stays greyed until then.</source>
+        <translation>Replanifier le trajet en arrière-plan dès que le plan, les pièces, le départ ou l’arrivée changent ; l’ancien trajet reste grisé jusque-là.</translation>
+    </message>
+    <message>
+        <source>Loaded the trained model %1</source>
+        <translation>Modèle entraîné %1 chargé</translation>
+    </message>
+    <message>
+        <source>The trained model beside the project was not loaded (%1): %2</source>
+        <translation>Le modèle entraîné à côté du projet n’a pas été chargé (%1) : %2</translation>
+    </message>
+    <message>
+        <source>The project was saved, but not its trained model: %1</source>
+        <translation>Le projet a été enregistré, mais pas son modèle entraîné : %1</translation>
+    </message>
 </context>
 <context>
     <name>fc::ui::OverlayLayer</name>
@@ -1181,6 +1201,10 @@ Planification de trajets de couverture pour robots de nettoyage et de désinfect
         <source>Planning the path</source>
         <translation>Planification du trajet</translation>
     </message>
+    <message>
+        <source>Sketching the path</source>
+        <translation>Esquisse du trajet</translation>
+    </message>
 </context>
 <context>
     <name>fc::ui::PlanningDock</name>
@@ -1371,6 +1395,10 @@ Planification de trajets de couverture pour robots de nettoyage et de désinfect
     <message>
         <source>Join the two selected rooms into one (they must share a wall or a doorway); the first keeps its name.</source>
         <translation>Réunir les deux pièces sélectionnées en une seule (elles doivent partager un mur ou une porte) ; la première garde son nom.</translation>
+    </message>
+    <message>
+        <source>A quick sketch of the path is shown; the planner is refining it…</source>
+        <translation>Une esquisse rapide du trajet est affichée ; le planificateur l’affine…</translation>
     </message>
 </context>
 <context>
@@ -1789,6 +1817,10 @@ Planification de trajets de couverture pour robots de nettoyage et de désinfect
     <message>
         <source>Paused at %p% · %1 trained</source>
         <translation>En pause à %p% · %1 d’entraînement</translation>
+    </message>
+    <message>
+        <source>cannot replace the file</source>
+        <translation>impossible de remplacer le fichier</translation>
     </message>
 </context>
 <context>

@@ -167,7 +167,8 @@ void throwIfCancelled(const SolveControl& control) {
         throw SolverError("cancelled");
 }
 
-// Plans the request with the given angle per room (see roomSweepAngles).
+} // namespace
+
 PlanResult planWithRoomAngles(const PlanRequest& request,
                               const std::map<std::string, double>& angles,
                               const SolveControl& control, const PreparedPlans& prepared) {
@@ -387,16 +388,10 @@ PlanResult planWithRoomAngles(const PlanRequest& request,
     return result;
 }
 
-} // namespace
+namespace {
 
-PlanResult planPerRoom(const PlanRequest& request, const SolveControl& control) {
-    request.robot.validate();
-    const auto t0 = std::chrono::steady_clock::now();
-    const std::map<std::string, double> walls = roomSweepAngles(request.plan, request.sweep);
-    const PreparedPlans prepared(request.plan, request.robot, request.transitionCells);
-    auto free = [&](const std::string& room) { return request.sweep.roomAngles.count(room) == 0; };
-
-    // The groups of the rooms' own angles, the one with the most rooms first.
+// The groups of the rooms' own angles, the one with the most rooms first.
+std::vector<std::pair<double, int>> angleGroups(const std::map<std::string, double>& walls) {
     std::vector<std::pair<double, int>> groups; // angle, rooms
     for (const auto& entry : walls) {
         auto it = std::find_if(groups.begin(), groups.end(), [&](const auto& g) {
@@ -409,17 +404,41 @@ PlanResult planPerRoom(const PlanRequest& request, const SolveControl& control) 
     }
     std::stable_sort(groups.begin(), groups.end(),
                      [](const auto& a, const auto& b) { return a.second > b.second; });
+    return groups;
+}
 
-    // First the building's family swept as one: every room of the main group's wall family
-    // (along or across it) at the main group's angle. Sweeping a family in two passes
-    // crosses the building twice (offices, then their corridors), so this is often best.
+} // namespace
+
+std::map<std::string, double> familyAngles(const Plan& plan, const SweepOptions& sweep) {
+    const std::map<std::string, double> walls = roomSweepAngles(plan, sweep);
+    const std::vector<std::pair<double, int>> groups = angleGroups(walls);
+    // Every room of the main group's wall family (along or across it) at the main group's
+    // angle: sweeping a family in two passes crosses the building twice (offices, then their
+    // corridors). Fixed angles stay.
     std::map<std::string, double> family = walls;
     for (auto& [room, angle] : family) {
         const double d = angleDistance(angle, groups.front().first);
-        if (free(room) && (d < 0.5 || std::abs(d - 90.0) < 0.5))
+        if (sweep.roomAngles.count(room) == 0 && (d < 0.5 || std::abs(d - 90.0) < 0.5))
             angle = groups.front().first;
     }
-    // Large floors plan the family alone; small ones search (below).
+    return family;
+}
+
+PlanResult planPerRoom(const PlanRequest& request, const SolveControl& control,
+                       const PreparedPlans* shared) {
+    request.robot.validate();
+    const auto t0 = std::chrono::steady_clock::now();
+    const std::map<std::string, double> walls = roomSweepAngles(request.plan, request.sweep);
+    std::optional<PreparedPlans> own;
+    if (!shared)
+        own.emplace(request.plan, request.robot, request.transitionCells);
+    const PreparedPlans& prepared = shared ? *shared : *own;
+    const std::vector<std::pair<double, int>> groups = angleGroups(walls);
+    const std::map<std::string, double> family = familyAngles(request.plan, request.sweep);
+    auto free = [&](const std::string& room) { return request.sweep.roomAngles.count(room) == 0; };
+
+    // First the building's family swept as one (familyAngles). Large floors plan the family
+    // alone; small ones search (below).
     if (request.plan.rooms.size() > kPerRoomSearchMaxRooms) {
         PlanResult best = planWithRoomAngles(request, family, control, prepared);
         best.metrics.seconds =

@@ -22,9 +22,23 @@ std::map<std::string, double> roomSweepAngles(const Plan& plan, const SweepOptio
 // "Floor" or "Unassigned 1", take the floor's entry).
 double sweepAngleOfRoom(const std::map<std::string, double>& angles, const std::string& room);
 
-// Plans each group of rooms that shares one angle in its own frame, in turn (the start's
-// group first, then the nearest group), joined by collision-free transits; metrics over the
-// whole path. With one angle this is planAtAngle.
-PlanResult planPerRoom(const PlanRequest& request, const SolveControl& control = {});
+// The rooms' angles with the building's main wall family swept as one: every room whose own
+// angle lies along or across the family of most rooms takes that family's angle; rooms of
+// other families and fixed angles (sweep.roomAngles) keep theirs. What large floors plan.
+std::map<std::string, double> familyAngles(const Plan& plan, const SweepOptions& sweep);
+
+// Plans each group of rooms that shares one angle of `angles` in its own frame, in turn (the
+// start's group first, then the nearest group), joined by collision-free transits; metrics
+// over the whole path. With one angle this is planAtAngle. `prepared`: of request.plan and
+// request.robot.
+PlanResult planWithRoomAngles(const PlanRequest& request,
+                              const std::map<std::string, double>& angles,
+                              const SolveControl& control, const PreparedPlans& prepared);
+
+// The per-room plan (SPEC sect. 1): the family plan, and on small floors the rooms' own
+// angles and turned groups, keeping the best. `prepared` (optional): of request.plan and
+// request.robot, shared with other requests (the editor's live replanning).
+PlanResult planPerRoom(const PlanRequest& request, const SolveControl& control = {},
+                       const PreparedPlans* prepared = nullptr);
 
 } // namespace fc

@@ -430,23 +430,24 @@ PlanResult planAtAngle(const PlanRequest& request, double angleDeg, const SolveC
 
 namespace {
 
-PlanResult planWithoutTouchUps(const PlanRequest& request, const SolveControl& control) {
+PlanResult planWithoutTouchUps(const PlanRequest& request, const SolveControl& control,
+                               const PreparedPlans* prepared) {
     request.robot.validate();
     if (!request.sweep.automatic && !request.sweep.perRoom)
-        return planOneAngle(request, request.sweep.angleDeg, control, nullptr);
+        return planOneAngle(request, request.sweep.angleDeg, control, prepared);
     // A solver bound to one graph (a trained model) plans at the angle it was trained at.
     if (std::optional<RegisteredSolver> registered = findRegisteredSolver(request.solver))
         if (registered->sweepAngle)
             if (std::optional<double> angle = registered->sweepAngle(request.modelPath))
-                return planOneAngle(request, *angle, control, nullptr);
+                return planOneAngle(request, *angle, control, prepared);
     if (!request.sweep.automatic)
-        return planPerRoom(request, control);
+        return planPerRoom(request, control, prepared);
     const auto t0 = std::chrono::steady_clock::now();
     std::optional<PlanResult> best;
     std::string firstError;
     for (double angle : candidateAngles(request.plan)) {
         try {
-            PlanResult r = planOneAngle(request, angle, control, nullptr);
+            PlanResult r = planOneAngle(request, angle, control, prepared);
             applyTouchUps(request, r);
             if (!best || betterPlanChoice(r.metrics, best->metrics))
                 best = std::move(r);
@@ -493,13 +494,35 @@ void applyTouchUps(const PlanRequest& request, PlanResult& result) {
     }
 }
 
-PlanResult planCoverage(const PlanRequest& request, const SolveControl& control) {
+PlanResult planCoverage(const PlanRequest& request, const SolveControl& control,
+                        const PreparedPlans* prepared) {
     const auto t0 = std::chrono::steady_clock::now();
-    PlanResult result = planWithoutTouchUps(request, control);
+    PlanResult result = planWithoutTouchUps(request, control, prepared);
     // The candidates of a search over angles were compared with their touch-ups (a plan
     // that leaves wedges along slanted walls may be the best once they are swept); a plan of
     // one angle gets them here.
     applyTouchUps(request, result);
+    result.metrics.seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    return result;
+}
+
+PlanResult draftCoverage(const PlanRequest& request, const PreparedPlans& prepared,
+                         const SolveControl& control) {
+    request.robot.validate();
+    const auto t0 = std::chrono::steady_clock::now();
+    PlanRequest quick = request;
+    quick.solver = "greedy";
+    quick.modelPath.clear();
+    PlanResult result;
+    if (request.sweep.perRoom && !request.sweep.automatic)
+        result =
+            planWithRoomAngles(quick, familyAngles(request.plan, request.sweep), control, prepared);
+    else
+        result = planOneAngle(quick,
+                              request.sweep.automatic ? candidateAngles(request.plan).front()
+                                                      : request.sweep.angleDeg,
+                              control, &prepared);
     result.metrics.seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     return result;

@@ -141,7 +141,16 @@ void touchUpCoverage(const PreparedPlan& prepared, const std::vector<std::string
 // cannot reach.
 void applyTouchUps(const PlanRequest& request, PlanResult& result);
 
-// Per-room (the default), auto or fixed sweep angle, as request.sweep says.
-PlanResult planCoverage(const PlanRequest& request, const SolveControl& control = {});
+// Per-room (the default), auto or fixed sweep angle, as request.sweep says. `prepared`
+// (optional): cells and graphs of request.plan and request.robot built by earlier requests
+// (pipeline/PreparedPlans.h); the caller keeps it for as long as plan and robot stay.
+PlanResult planCoverage(const PlanRequest& request, const SolveControl& control = {},
+                        const PreparedPlans* prepared = nullptr);
+
+// A quick plan of the request for the editor's live replanning, shown while planCoverage
+// refines it: the greedy solver at the family angles (per-room) or at the first candidate
+// angle ("auto"), without the angle search and the wall touch-ups. Same warnings.
+PlanResult draftCoverage(const PlanRequest& request, const PreparedPlans& prepared,
+                         const SolveControl& control = {});
 
 } // namespace fc

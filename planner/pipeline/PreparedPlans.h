@@ -17,7 +17,13 @@ namespace fc {
 
 class PreparedPlans {
 public:
+    // Keeps its own copy of the plan: the editor keeps one across requests (live
+    // replanning) while the document moves on.
     PreparedPlans(const Plan& plan, const RobotProfile& robot, bool transitionCells);
+
+    const Plan& plan() const { return plan_; }
+    const RobotProfile& robot() const { return robot_; }
+    bool transitionCells() const { return transitionCells_; }
 
     // A copy of the plan prepared at the angle rounded to 1e-9 degrees (so that 7.15 + 90
     // and 97.15 share one build, and a plan does not depend on which caller built it
@@ -30,7 +36,7 @@ public:
 
 private:
     using Built = std::shared_future<std::shared_ptr<const PreparedPlan>>;
-    const Plan& plan_;
+    Plan plan_;
     RobotProfile robot_;
     bool transitionCells_;
     mutable std::mutex mutex_;

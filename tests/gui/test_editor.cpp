@@ -201,11 +201,18 @@ void EditorTest::planShowsPathAndMetrics() {
     QVERIFY(window->planningDock()->metricText(QStringLiteral("length")).endsWith(" m"));
     QVERIFY(window->planningDock()->metricText(QStringLiteral("coverage")).endsWith(" %"));
 
-    // Any edit makes the path stale.
+    // Any edit makes the path stale: it stays on screen greyed, without its gaps, until
+    // live replanning brings the new one.
+    const auto before = planner->result();
     useTool(*window, "placeEnd");
     click(*window, {19, 13});
     QVERIFY(planner->result() == nullptr);
-    QCOMPARE(overlays->itemCount(OverlayKind::Path), 0);
+    QCOMPARE(planner->staleResult(), before);
+    QVERIFY(overlays->itemCount(OverlayKind::Path) > 0);
+    QCOMPARE(overlays->itemCount(OverlayKind::CoverageGaps), 0);
+    QTRY_VERIFY_WITH_TIMEOUT(planner->result() && !planner->isDraft(), 30000);
+    QVERIFY(planner->staleResult() == nullptr);
+    QCOMPARE(overlays->itemCount(OverlayKind::CoverageGaps), 1);
 }
 
 void EditorTest::robotProfileUpdatesOverlays() {

@@ -3,7 +3,9 @@
 // map_tests.)
 #include "EditorFixture.h"
 #include "docks/PlanningDock.h"
+#include "docks/TrainingDock.h"
 #include "document/Autosaver.h"
+#include "document/DocumentFiles.h"
 #include "document/PlannerMessages.h"
 #include "learning/dqn/DqnSolver.h"
 #include "model/RobotPlacement.h"
@@ -14,6 +16,8 @@
 #include <QAction>
 #include <QApplication>
 #include <QDoubleSpinBox>
+#include <QFile>
+#include <QLabel>
 #include <QMenu>
 #include <QMenuBar>
 #include <QScreen>
@@ -39,6 +43,7 @@ private slots:
     void tilingModeKeepsTheWindowOnTheScreen();
     void plannerMessagesSpeakOfTheEditor();
     void startInAnObstacleIsRefusedOnTheSpot();
+    void trainedModelComesBackWithTheProject();
 };
 
 void TrapsTest::initTestCase() {
@@ -259,6 +264,64 @@ void TrapsTest::startInAnObstacleIsRefusedOnTheSpot() {
     QVERIFY(fc::distanceToWalls(window->document()->plan(), start) >= 0.3);
     QVERIFY2(said.contains(QStringLiteral("moved")), qPrintable(said));
     QVERIFY(window->planningController()->planAndWait());
+}
+
+// A trained model sat in the cache and was gone after a restart: it is saved beside the
+// project and loaded back with it; a model of another plan is refused with a message.
+void TrapsTest::trainedModelComesBackWithTheProject() {
+    fc::registerDqnSolver();
+    QTemporaryDir dir;
+    const QString project = dir.filePath(QStringLiteral("site.fcproj"));
+    {
+        auto window = makeWindow();
+        QVERIFY(window->openFile(QStringLiteral(FC_PLANS_DIR "/simple.geojson")));
+        PlanningController* planner = window->planningController();
+        QTRY_VERIFY_WITH_TIMEOUT(planner->prepared() != nullptr, 20000);
+        TrainingDock* dock = window->trainingDock();
+        fc::TrainingOptions small = fc::TrainingOptions::improved(1);
+        small.agent.conv1Channels = small.agent.conv2Channels = small.agent.conv3Channels = 8;
+        small.agent.hiddenUnits = 32;
+        small.agent.learningStarts = 50;
+        small.agent.batchSize = 16;
+        dock->setTrainingOptions(small);
+        dock->start();
+        QTRY_VERIFY_WITH_TIMEOUT(dock->episodes() >= 3, 30000);
+        dock->stop();
+        QTRY_COMPARE_WITH_TIMEOUT(dock->state(), TrainingDock::State::Finished, 20000);
+        QVERIFY(dock->hasModel());
+        QVERIFY(window->saveFile(project));
+        QVERIFY(QFile::exists(modelFileFor(project)));
+        QCOMPARE(modelFileFor(project), dir.filePath(QStringLiteral("site.fcdqn")));
+    }
+    // A new session: the project brings its model, and solver dqn plans with it.
+    {
+        auto window = makeWindow();
+        QVERIFY(window->openFile(project));
+        TrainingDock* dock = window->trainingDock();
+        QTRY_VERIFY_WITH_TIMEOUT(dock->hasModel(), 20000);
+        QCOMPARE(dock->modelPath(), modelFileFor(project));
+        PlanningController* planner = window->planningController();
+        QCOMPARE(QString::fromStdString(planner->modelPath()), modelFileFor(project));
+        QVERIFY(window->document()->setSolver(QStringLiteral("dqn")));
+        QVERIFY2(planner->planAndWait(), qPrintable(planner->errorMessage()));
+        QCOMPARE(QString::fromStdString(planner->result()->solution.solver), QStringLiteral("dqn"));
+    }
+    // The same model beside a project of another plan: refused, named, nothing lost.
+    {
+        const QString other = dir.filePath(QStringLiteral("other.fcproj"));
+        {
+            auto window = makeWindow();
+            QVERIFY(window->openFile(QStringLiteral(FC_PLANS_DIR "/room-notches.geojson")));
+            QVERIFY(window->saveFile(other));
+        }
+        QVERIFY(QFile::copy(modelFileFor(project), modelFileFor(other)));
+        auto window = makeWindow();
+        QVERIFY(window->openFile(other));
+        QTRY_VERIFY_WITH_TIMEOUT(window->lastError().contains(QStringLiteral("other.fcdqn")),
+                                 20000);
+        QVERIFY(!window->trainingDock()->hasModel());
+        QVERIFY(!window->document()->plan().boundary.empty());
+    }
 }
 
 QTEST_MAIN(TrapsTest)

@@ -6,6 +6,7 @@
 
 #include <future>
 #include <gtest/gtest.h>
+#include <memory>
 #include <vector>
 
 namespace fc {
@@ -62,6 +63,55 @@ TEST(PreparedPlans, ABadPlanThrowsToEveryCaller) {
     const PreparedPlans plans(plan, RobotProfile{}, true);
     EXPECT_THROW(plans.at(0.0, false), InputError);
     EXPECT_THROW(plans.at(0.0, false), InputError); // the stored failure, again
+}
+
+TEST(PreparedPlans, OwnTheirPlanSoTheCallerMayMoveOn) {
+    auto plan = std::make_unique<Plan>(samplePlan("simple"));
+    const PreparedPlans plans(*plan, RobotProfile{}, true);
+    plan.reset(); // the editor's document changes while a task still plans
+    EXPECT_FALSE(plans.at(90.0, false).graph.nodes.empty());
+}
+
+// The editor keeps one PreparedPlans across requests (live replanning): a plan made with it
+// is the plan made without it, for every sweep mode.
+TEST(PreparedPlans, SharedAcrossRequestsPlanAsWithout) {
+    PlanRequest request =
+        planRequestFor(loadProjectFile(std::string(FC_PLANS_DIR) + "/room-obstacle.geojson"));
+    request.solver = "greedy";
+    const PreparedPlans plans(request.plan, request.robot, true);
+    for (int mode = 0; mode < 3; ++mode) {
+        request.sweep.perRoom = mode == 0;
+        request.sweep.automatic = mode == 1;
+        request.sweep.angleDeg = 90.0;
+        const PlanResult alone = planCoverage(request);
+        const PlanResult shared = planCoverage(request, {}, &plans);
+        EXPECT_NEAR(shared.metrics.length, alone.metrics.length, 1e-6) << "mode " << mode;
+        EXPECT_EQ(shared.metrics.turns, alone.metrics.turns) << "mode " << mode;
+    }
+}
+
+// The draft of live replanning: the greedy solver at the family angles, a plan of the same
+// floor and query that covers it, made from the shared cells and graphs.
+TEST(PreparedPlans, DraftPlansTheSameQueryQuickly) {
+    for (const char* name : {"office", "ward"}) {
+        PlanRequest request =
+            planRequestFor(loadProjectFile(std::string(FC_PLANS_DIR) + "/" + name + ".geojson"));
+        request.solver = "exact"; // the draft never runs the requested solver
+        const PreparedPlans plans(request.plan, request.robot, true);
+        const PlanResult draft = draftCoverage(request, plans);
+        EXPECT_FALSE(draft.path.empty()) << name;
+        EXPECT_GE(draft.metrics.coverage, 0.98) << name;
+        PlanRequest greedy = request;
+        greedy.solver = "greedy";
+        const PlanResult full = planCoverage(greedy, {}, &plans);
+        EXPECT_NEAR(draft.metrics.requiredArea, full.metrics.requiredArea,
+                    1e-6 * full.metrics.requiredArea)
+            << name;
+        // A room left out of the query is left out of the draft.
+        request.rooms = {request.plan.rooms.front().name};
+        const PlanResult one = draftCoverage(request, plans);
+        EXPECT_LT(one.metrics.requiredArea, 0.8 * draft.metrics.requiredArea) << name;
+    }
 }
 
 } // namespace

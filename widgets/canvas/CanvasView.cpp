@@ -6,8 +6,10 @@
 #include <QKeyEvent>
 #include <QMouseEvent>
 #include <QPainter>
+#include <QPixmapCache>
 #include <QScrollBar>
 #include <QWheelEvent>
+#include <algorithm>
 #include <cmath>
 
 namespace fc::ui {
@@ -32,6 +34,13 @@ CanvasView::CanvasView(QWidget* parent) : QGraphicsView(parent) {
     setResizeAnchor(QGraphicsView::AnchorViewCenter);
     setRenderHint(QPainter::Antialiasing);
     setViewportUpdateMode(QGraphicsView::FullViewportUpdate); // the grid moves with panning
+    // The grid is drawn once per zoom, not on every repaint (a path arriving, a tool's
+    // rubber band): Qt scrolls the cached background and redraws it when the zoom changes.
+    setCacheMode(QGraphicsView::CacheBackground);
+    // Scene items keep their rendering (DeviceCoordinateCache) so that a new path repaints
+    // only itself; a floor-sized item is a viewport-sized pixmap, and Qt's default 10 MB
+    // of pixmap cache holds two of them, so every repaint would render everything again.
+    QPixmapCache::setCacheLimit(std::max(QPixmapCache::cacheLimit(), 160 * 1024));
     setMouseTracking(true);
     setDragMode(QGraphicsView::NoDrag);
     setFocusPolicy(Qt::StrongFocus);
@@ -59,6 +68,7 @@ double CanvasView::gridStep() const {
 
 void CanvasView::setGridVisible(bool visible) {
     gridVisible_ = visible;
+    resetCachedContent();
     viewport()->update();
 }
 

@@ -1,9 +1,9 @@
 #include "canvas/OverlayLayer.h"
 
-#include "document/Conversions.h"
 #include "canvas/PlanScene.h"
-#include "tasks/PlanningController.h"
 #include "canvas/SceneStyle.h"
+#include "document/Conversions.h"
+#include "tasks/PlanningController.h"
 
 #include <QCoreApplication>
 #include <QGraphicsItemGroup>
@@ -17,6 +17,7 @@ namespace {
 QGraphicsPathItem* addPathItem(QGraphicsItem* parent, const QPainterPath& path, const QPen& pen,
                                const QBrush& brush = Qt::NoBrush) {
     auto* item = new QGraphicsPathItem(path, parent);
+    item->setCacheMode(QGraphicsItem::DeviceCoordinateCache);
     item->setPen(pen);
     item->setBrush(brush);
     return item;
@@ -98,8 +99,8 @@ void OverlayLayer::setPlanningController(PlanningController* controller) {
         disconnect(controller_, nullptr, this, nullptr);
     controller_ = controller;
     if (controller_) {
-        connect(controller_, &PlanningController::preparedChanged, this, &OverlayLayer::rebuild);
-        connect(controller_, &PlanningController::resultChanged, this, &OverlayLayer::rebuild);
+        connect(controller_, &PlanningController::preparedChanged, this, &OverlayLayer::refresh);
+        connect(controller_, &PlanningController::resultChanged, this, &OverlayLayer::refresh);
     }
     rebuild();
 }
@@ -126,27 +127,51 @@ QGraphicsItemGroup* OverlayLayer::freshGroup(OverlayKind kind, double zValue) {
 }
 
 void OverlayLayer::rebuild() {
-    for (int i = 0; i < kOverlayKindCount; ++i)
-        freshGroup(static_cast<OverlayKind>(i), z::Overlays + 0.1 * i);
+    cellsKey_ = QStringLiteral("(none)"); // no key matches it: everything is built again
+    refresh();
+}
+
+void OverlayLayer::refresh() {
+    // Cells and graph are built again only when they are not what is shown: a new path of
+    // the same floor (a changed query, the full plan after the draft) rebuilds only the
+    // path's layers, so the canvas renders only those again (its items keep their pixels).
+    const QString key = controller_ ? controller_->cellsKey() : QString();
+    const bool cellsChanged = key != cellsKey_;
+    cellsKey_ = key;
+    for (int i = 0; i < kOverlayKindCount; ++i) {
+        const auto kind = static_cast<OverlayKind>(i);
+        if (cellsChanged || isPathLayer(kind) || kind == OverlayKind::Unreachable)
+            freshGroup(kind, z::Overlays + 0.1 * i);
+    }
     if (!controller_)
         return;
     const auto result = controller_->result();
     const auto prepared = controller_->shownPlan();
     if (result && !result->parts.empty()) {
         // Per-room sweeps: each part's own cells and graph, at its own angle.
-        for (const PlanPart& part : result->parts) {
-            addCells(part.prepared, &part.rooms);
-            addGraph(part.prepared, &part.rooms);
-        }
+        if (cellsChanged)
+            for (const PlanPart& part : result->parts) {
+                addCells(part.prepared, &part.rooms);
+                addGraph(part.prepared, &part.rooms);
+            }
         addUnreachable(result->prepared);
     } else if (prepared) {
-        addCells(*prepared);
-        addCriticalSlices(*prepared);
-        addGraph(*prepared);
+        if (cellsChanged) {
+            addCells(*prepared);
+            addCriticalSlices(*prepared);
+            addGraph(*prepared);
+        }
         addUnreachable(*prepared);
     }
     if (result)
         addPath(*result);
+    else if (const auto stale = controller_->staleResult())
+        addPath(*stale, true);
+}
+
+bool OverlayLayer::isPathLayer(OverlayKind kind) {
+    return kind == OverlayKind::Path || kind == OverlayKind::Overlaps ||
+           kind == OverlayKind::CoverageGaps;
 }
 
 namespace {
@@ -246,7 +271,7 @@ void OverlayLayer::addUnreachable(const PreparedPlan& prepared) {
     }
 }
 
-void OverlayLayer::addPath(const PlanResult& result) {
+void OverlayLayer::addPath(const PlanResult& result, bool stale) {
     const CoveragePath& path = result.path;
     if (path.empty())
         return;
@@ -269,12 +294,19 @@ void OverlayLayer::addPath(const PlanResult& result) {
             sinceArrow = 0;
         }
     }
-    const QPen pathPen = overlayStyle(OverlayKind::Path).pen;
+    // The path before the last edits: grey, under the new overlays, until a newer one comes.
+    const QColor staleColour(150, 150, 150, 160);
+    QPen pathPen = overlayStyle(OverlayKind::Path).pen;
+    if (stale)
+        pathPen.setColor(staleColour);
     addPathItem(group, sweeping, pathPen);
     QPen transitPen = pathPen; // travel between cells: dashed
     transitPen.setStyle(Qt::DashLine);
     addPathItem(group, travelling, transitPen);
-    addPathItem(group, arrows, Qt::NoPen, overlayStyle(OverlayKind::Path).brush);
+    addPathItem(group, arrows, Qt::NoPen,
+                stale ? QBrush(staleColour) : overlayStyle(OverlayKind::Path).brush);
+    if (stale)
+        return; // its overlaps and gaps are of a floor or query that changed
 
     QPainterPath overlaps;
     for (const Segment& s : result.metrics.overlaps) {

@@ -60,21 +60,27 @@ public:
     int itemCount(OverlayKind kind) const;
 
 public slots:
+    // Builds every layer again (a new palette, a new controller).
     void rebuild();
+    // Builds again what the controller's change touched: the path's layers, and cells and
+    // graph only when others are shown (PlanningController::cellsKey).
+    void refresh();
 
 private:
     QGraphicsItemGroup* freshGroup(OverlayKind kind, double zValue);
+    static bool isPathLayer(OverlayKind kind);
     // rooms: only the cells of these rooms (one part of a per-room plan); null: all.
     void addCells(const PreparedPlan& prepared, const std::vector<std::string>* rooms = nullptr);
     void addCriticalSlices(const PreparedPlan& prepared);
     void addGraph(const PreparedPlan& prepared, const std::vector<std::string>* rooms = nullptr);
     void addUnreachable(const PreparedPlan& prepared);
-    void addPath(const PlanResult& result);
+    void addPath(const PlanResult& result, bool stale = false);
 
     PlanScene* scene_;
     QPointer<PlanningController> controller_;
     std::array<QGraphicsItemGroup*, kOverlayKindCount> groups_{};
     std::array<bool, kOverlayKindCount> visible_{};
+    QString cellsKey_; // of the cells and graph built
 };
 
 } // namespace fc::ui

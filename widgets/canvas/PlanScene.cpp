@@ -1,9 +1,9 @@
 #include "canvas/PlanScene.h"
 
-#include "document/Conversions.h"
 #include "canvas/OverlayLayer.h"
-#include "tasks/PlanningController.h"
 #include "canvas/SceneStyle.h"
+#include "document/Conversions.h"
+#include "tasks/PlanningController.h"
 
 #include <QBrush>
 #include <QGraphicsItemGroup>
@@ -77,6 +77,7 @@ void PlanScene::rebuildPolygons() {
         QPainterPath path;
         addRing(path, room.outline);
         auto* item = new QGraphicsPathItem(path, polygons_);
+        item->setCacheMode(QGraphicsItem::DeviceCoordinateCache); // redrawn only when edited
         item->setPen(style::cosmeticPen(style::roomOutline(palette), 1.0, Qt::DashLine));
         item->setBrush(selected ? QBrush(style::roomFill(palette, true))
                                 : QBrush(style::roomFill(palette, false), Qt::BDiagPattern));
@@ -90,6 +91,7 @@ void PlanScene::rebuildPolygons() {
         QPainterPath walls;
         addRing(walls, plan.boundary);
         auto* boundary = new QGraphicsPathItem(walls, polygons_);
+        boundary->setCacheMode(QGraphicsItem::DeviceCoordinateCache);
         boundary->setPen(style::cosmeticPen(palette.color(QPalette::Text), 2.0));
         boundary->setZValue(z::Walls);
     }
@@ -97,6 +99,7 @@ void PlanScene::rebuildPolygons() {
         QPainterPath path;
         addRing(path, obstacle);
         auto* item = new QGraphicsPathItem(path, polygons_);
+        item->setCacheMode(QGraphicsItem::DeviceCoordinateCache);
         item->setPen(style::cosmeticPen(palette.color(QPalette::Text), 1.5));
         item->setBrush(style::obstacleFill(palette));
         item->setZValue(z::Walls);

@@ -193,6 +193,8 @@ void PlanningDock::setPlanningController(PlanningController* controller) {
     if (controller_) {
         connect(controller_, &PlanningController::resultChanged, this,
                 &PlanningDock::refreshMetrics);
+        connect(controller_, &PlanningController::resultChanged, this,
+                &PlanningDock::refreshStatus);
         connect(controller_, &PlanningController::errorChanged, this, &PlanningDock::refreshStatus);
         connect(controller_, &PlanningController::busyChanged, this, &PlanningDock::refreshStatus);
     }
@@ -424,7 +426,10 @@ void PlanningDock::refreshStatus() {
         status_->setText(error);
     } else {
         status_->setStyleSheet(QString());
-        if (controller_->isBusy())
+        if (controller_->isDraft())
+            status_->setText(tr("A quick sketch of the path is shown; the planner is "
+                                "refining it…"));
+        else if (controller_->isBusy())
             status_->setText(tr("Planning…"));
         else if (document_ && document_->plan().boundary.empty())
             status_->setText(tr("Draw the boundary of the floor to see cells and plan a path."));

@@ -5,6 +5,7 @@
 #include <QComboBox>
 #include <QDir>
 #include <QDoubleSpinBox>
+#include <QFile>
 #include <QFileDialog>
 #include <QHBoxLayout>
 #include <QLabel>
@@ -15,6 +16,7 @@
 #include <QTimer>
 #include <QVBoxLayout>
 #include <cmath>
+#include <cstdio>
 #include <qcustomplot.h>
 
 namespace fc::ui {
@@ -327,7 +329,14 @@ bool TrainingDock::saveModel(const QString& path) {
         try {
             if (!session_->trainer)
                 throw InputError(tr("there is no trained model yet").toStdString());
-            session_->trainer->save(path.toStdString());
+            // Atomic, as projects are saved: a crash leaves the old model or the new one.
+            const QString partial = path + QStringLiteral(".part");
+            session_->trainer->save(partial.toStdString());
+            if (std::rename(QFile::encodeName(partial).constData(),
+                            QFile::encodeName(path).constData()) != 0) {
+                QFile::remove(partial);
+                throw InputError(tr("cannot replace the file").toStdString());
+            }
         } catch (const std::exception& e) {
             error = QString::fromStdString(e.what());
         }

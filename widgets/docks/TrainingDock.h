@@ -42,6 +42,8 @@ public:
 
     State state() const { return state_; }
     QString modelPath() const { return modelPath_; }
+    // Whether there is a model to save (trained here, paused or finished, or loaded).
+    bool hasModel() const { return state_ == State::Paused || state_ == State::Finished; }
     long episodes() const { return episodes_; }
     QCustomPlot* plot() const { return plot_; }
     int plottedPoints() const;

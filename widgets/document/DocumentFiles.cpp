@@ -6,6 +6,7 @@
 #include "model/Validation.h"
 
 #include <QCoreApplication>
+#include <QDir>
 #include <QFile>
 #include <QFileInfo>
 
@@ -63,6 +64,11 @@ std::unique_ptr<Document> loadDocument(const QString& path, QString* error) {
             *error = fromStd(e.what());
         return nullptr;
     }
+}
+
+QString modelFileFor(const QString& projectPath) {
+    const QFileInfo info(projectPath);
+    return info.dir().filePath(info.completeBaseName() + QStringLiteral(".fcdqn"));
 }
 
 bool saveDocument(Document& document, const QString& path, QString* error) {

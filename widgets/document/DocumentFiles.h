@@ -20,4 +20,9 @@ std::unique_ptr<Document> loadDocument(const QString& path, QString* error);
 // document saved under that name. Returns false and sets *error on failure.
 bool saveDocument(Document& document, const QString& path, QString* error);
 
+// The trained DQN model kept beside a project: "site.fcproj" has "site.fcdqn" in the same
+// folder. Saving the project writes it (when a model was trained or loaded), opening the
+// project loads it back, so a model outlives the session it was trained in.
+QString modelFileFor(const QString& projectPath);
+
 } // namespace fc::ui

@@ -4,6 +4,7 @@
 #include "document/Document.h"
 #include "document/PlannerMessages.h"
 #include "pipeline/PerRoomSweep.h"
+#include "pipeline/PreparedPlans.h"
 #include "tasks/Task.h"
 
 #include <QEventLoop>
@@ -14,10 +15,28 @@
 namespace fc::ui {
 
 PlanningController::PlanningController(TaskManager* tasks, QObject* parent)
-    : QObject(parent), tasks_(tasks), prepareTimer_(new QTimer(this)) {
+    : QObject(parent), tasks_(tasks), prepareTimer_(new QTimer(this)),
+      replanTimer_(new QTimer(this)) {
     prepareTimer_->setSingleShot(true);
-    prepareTimer_->setInterval(120);
+    prepareTimer_->setInterval(kLiveDelayMs);
     connect(prepareTimer_, &QTimer::timeout, this, &PlanningController::startPrepare);
+    replanTimer_->setSingleShot(true);
+    replanTimer_->setInterval(kLiveDelayMs);
+    connect(replanTimer_, &QTimer::timeout, this, &PlanningController::startDraft);
+}
+
+void PlanningController::setLiveReplanning(bool live) {
+    if (live_ == live)
+        return;
+    live_ = live;
+    if (!live_) {
+        replanTimer_->stop();
+        pendingReplan_ = false;
+        tasks_->cancelKind(QStringLiteral("draft"));
+    } else if (document_ && !result_) {
+        scheduleReplan(false);
+    }
+    updateBusy();
 }
 
 void PlanningController::setDocument(Document* document) {
@@ -25,7 +44,9 @@ void PlanningController::setDocument(Document* document) {
         disconnect(document_, nullptr, this, nullptr);
     document_ = document;
     prepared_.reset();
+    preparedPlans_.reset();
     invalidateResult();
+    stale_.reset(); // another document's path
     emit preparedChanged();
     if (!document_)
         return;
@@ -35,19 +56,66 @@ void PlanningController::setDocument(Document* document) {
         connect(document_, signal, this, &PlanningController::schedulePrepare);
     for (auto signal :
          {&Document::roomsChanged, &Document::endpointsChanged, &Document::solverChanged})
-        connect(document_, signal, this, &PlanningController::invalidateResult);
+        connect(document_, signal, this, &PlanningController::queryChanged);
     schedulePrepare();
 }
 
+QString PlanningController::cellsKey() const {
+    if (result_) {
+        QString key = QStringLiteral("plan of floor %1").arg(resultFloor_);
+        if (result_->parts.empty())
+            key += QStringLiteral(" at %1").arg(result_->stripeAngleDeg, 0, 'g', 17);
+        for (const PlanPart& part : result_->parts) {
+            key += QStringLiteral(" | %1:").arg(part.stripeAngleDeg, 0, 'g', 17);
+            for (const std::string& room : part.rooms)
+                key += QLatin1Char(' ') + fromStd(room);
+        }
+        return key;
+    }
+    return prepared_ ? QStringLiteral("preview of floor %1").arg(preparedFloor_) : QString();
+}
+
 void PlanningController::schedulePrepare() {
+    ++floorEdits_;
+    // Cells and graphs are of the old plan, robot or sweep (a sweep change keeps them valid,
+    // but every typed angle would otherwise stay cached).
+    preparedPlans_.reset();
     invalidateResult();
     tasks_->cancelKind(QStringLiteral("prepare")); // its overlays are for the old geometry
     pendingPrepare_ = true;
-    updateBusy();
     prepareTimer_->start();
+    scheduleReplan(false);
+    updateBusy();
+}
+
+void PlanningController::queryChanged() {
+    invalidateResult();
+    scheduleReplan(true);
+    updateBusy();
+}
+
+void PlanningController::scheduleReplan(bool queryOnly) {
+    ++edits_;
+    if (!live_)
+        return;
+    // A query edit is a click (a room ticked, a point placed): planned in the next turn of
+    // the event loop, which still joins edits made together. Floor edits come in bursts
+    // (a vertex dragged, a value typed) and wait for a pause; a floor edit pending keeps
+    // its delay.
+    const bool floorPending = pendingReplan_ && replanTimer_->interval() > 0;
+    pendingReplan_ = true;
+    replanTimer_->start(queryOnly && !floorPending ? 0 : kLiveDelayMs);
+}
+
+std::shared_ptr<const PreparedPlans> PlanningController::preparedPlans() {
+    if (!preparedPlans_ && document_)
+        preparedPlans_ = std::make_shared<const PreparedPlans>(document_->plan(),
+                                                               document_->project().robot, true);
+    return preparedPlans_;
 }
 
 void PlanningController::cancelPlanning() {
+    tasks_->cancelKind(QStringLiteral("draft"));
     tasks_->cancelKind(QStringLiteral("planning"));
 }
 
@@ -55,7 +123,9 @@ void PlanningController::invalidateResult() {
     cancelPlanning(); // the solvers stop when the document changes under them
     if (!result_)
         return;
+    stale_ = result_; // shown greyed until a newer path arrives
     result_.reset();
+    draft_ = false;
     emit resultChanged();
 }
 
@@ -78,6 +148,8 @@ void PlanningController::taskEnded(Task* task) {
         prepareTask_ = nullptr;
     if (task == planTask_)
         planTask_ = nullptr;
+    if (task == draftTask_)
+        draftTask_ = nullptr;
     updateBusy();
 }
 
@@ -109,17 +181,18 @@ void PlanningController::startPrepare() {
                     return x.second < y.second;
                 })->first;
     }
-    Task* task =
-        tasks_->run(tr("Preparing the overlays"),
-                    [project, angle](TaskFeedback& feedback) {
-                        feedback.throwIfCancelled(); // edited again while this waited for a thread
-                        project.robot.validate();
-                        return preparePlan(project.plan, project.robot, angle);
-                    },
-                    {QStringLiteral("prepare")});
+    Task* task = tasks_->run(tr("Preparing the overlays"),
+                             [plans = preparedPlans(), angle](TaskFeedback& feedback) {
+                                 // edited again while this waited for a thread
+                                 feedback.throwIfCancelled();
+                                 plans->robot().validate();
+                                 return plans->at(angle, false);
+                             },
+                             {QStringLiteral("prepare")});
     prepareTask_ = task;
-    connect(task, &Task::finished, this, [this, task] {
+    connect(task, &Task::finished, this, [this, task, floor = floorEdits_] {
         prepared_ = task->result<PreparedPlan>();
+        preparedFloor_ = floor;
         // Only a preparation's own error is cleared: a plan that failed (solver dqn without
         // a model) keeps saying why while the overlays are brought up to date.
         if (errorFromPrepare_)
@@ -137,25 +210,68 @@ void PlanningController::startPrepare() {
     updateBusy();
 }
 
+void PlanningController::startDraft() {
+    pendingReplan_ = false;
+    // Nothing to draw yet, or the full plan of this very state is already on its way.
+    if (!document_ || document_->plan().boundary.empty() || (planTask_ && plannedEdit_ == edits_)) {
+        updateBusy();
+        return;
+    }
+    PlanRequest request = planRequestFor(document_->project());
+    const quint64 edit = edits_;
+    Task* task = tasks_->run(tr("Sketching the path"),
+                             [request, plans = preparedPlans()](TaskFeedback& feedback) {
+                                 feedback.throwIfCancelled();
+                                 return draftCoverage(request, *plans, feedback.solveControl());
+                             },
+                             {QStringLiteral("draft")});
+    draftTask_ = task;
+    connect(task, &Task::finished, this, [this, task, edit, floor = floorEdits_] {
+        result_ = task->result<PlanResult>();
+        resultFloor_ = floor;
+        draft_ = true;
+        stale_.reset();
+        emit resultChanged();
+        if (!(planTask_ && plannedEdit_ == edit))
+            plan(); // the full plan replaces the draft
+    });
+    connect(task, &Task::failed, this, [this](const QString& message) {
+        // The query itself is wrong (a start the robot cannot leave, rooms it cannot reach):
+        // the full plan would say the same.
+        stale_.reset();
+        setError(plainMessage(message));
+        errorFromPrepare_ = false;
+        emit resultChanged();
+    });
+    connect(task, &Task::ended, this, [this, task] { taskEnded(task); });
+    updateBusy();
+}
+
 void PlanningController::plan() {
     if (!document_)
         return;
     PlanRequest request = planRequestFor(document_->project());
     request.modelPath = modelPath_;
+    plannedEdit_ = edits_;
     Task* task = tasks_->run(tr("Planning the path"),
-                             [request](TaskFeedback& feedback) {
-                                 return planCoverage(request, feedback.solveControl());
+                             [request, plans = preparedPlans()](TaskFeedback& feedback) {
+                                 return planCoverage(request, feedback.solveControl(), plans.get());
                              },
                              {QStringLiteral("planning")});
     planTask_ = task;
-    connect(task, &Task::finished, this, [this, task] {
+    connect(task, &Task::finished, this, [this, task, floor = floorEdits_] {
         result_ = task->result<PlanResult>();
+        resultFloor_ = floor;
+        draft_ = false;
+        stale_.reset();
         setError(QString());
         errorFromPrepare_ = false;
         emit resultChanged();
     });
     connect(task, &Task::failed, this, [this](const QString& message) {
         result_.reset();
+        stale_.reset();
+        draft_ = false;
         setError(plainMessage(message));
         errorFromPrepare_ = false;
         emit resultChanged();

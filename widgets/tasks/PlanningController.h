@@ -1,7 +1,14 @@
 // Runs the planner for the current document as tasks (tasks/Task.h): the decomposition and
 // corner graph (overlays, kind "prepare") whenever geometry, robot or sweep angle change,
-// and the full plan (kind "planning") when asked. A newer task of a kind supersedes the
-// older one, whose result is dropped, so a slow run never overwrites a newer one.
+// and the plan (kind "planning") when asked. A newer task of a kind supersedes the older
+// one, whose result is dropped, so a slow run never overwrites a newer one.
+//
+// Live replanning (on by default): every edit of the plan or the query replans in the
+// background, debounced. A quick draft (kind "draft": greedy, family angles, no search)
+// comes first, then the full plan replaces it; until the draft arrives the previous path
+// stays on screen greyed (staleResult). Cells and graphs are built once per plan and robot
+// (PreparedPlans) and shared by the overlays, the draft and the plan: a changed query
+// rebuilds nothing.
 #pragma once
 
 #include "pipeline/Planner.h"
@@ -13,6 +20,10 @@
 #include <memory>
 
 class QTimer;
+
+namespace fc {
+class PreparedPlans;
+}
 
 namespace fc::ui {
 
@@ -28,8 +39,20 @@ public:
 
     // The latest decomposition and graph of the document (null while none is valid).
     std::shared_ptr<const PreparedPlan> prepared() const { return prepared_; }
-    // The latest plan of the document as it is now (null after any relevant edit).
+    // The latest plan of the document as it is now (null after any relevant edit), the
+    // draft while the full plan is being computed.
     std::shared_ptr<const PlanResult> result() const { return result_; }
+    // Whether result() is the quick draft of live replanning (the full plan follows).
+    bool isDraft() const { return result_ && draft_; }
+    // The path of the document before its last edits, shown greyed while nothing newer is
+    // there (null once result() is set, or when there was none).
+    std::shared_ptr<const PlanResult> staleResult() const { return stale_; }
+    // Live replanning (see above); when off, an edit clears the path until plan().
+    bool liveReplanning() const { return live_; }
+    void setLiveReplanning(bool live);
+    // Milliseconds from the last edit of the floor, robot or sweep to the start of live
+    // replanning (query edits replan in the next turn of the event loop).
+    static constexpr int kLiveDelayMs = 30;
     // What the canvas shows: the plan's own decomposition when there is a path (with "auto"
     // its angle may differ from the preview's, and cells and path must agree), else the
     // preview's.
@@ -37,8 +60,15 @@ public:
         return result_ ? std::shared_ptr<const PreparedPlan>(result_, &result_->prepared)
                        : prepared_;
     }
+    // Names the cells and graph the canvas shows (the plan's parts, or the preview of the
+    // floor as it was when built): equal keys, equal cells, so a new path of the same floor
+    // leaves them as they are drawn.
+    QString cellsKey() const;
     QString errorMessage() const { return error_; }
-    bool isBusy() const { return prepareTask_ || planTask_ || pendingPrepare_; }
+    bool isBusy() const {
+        return prepareTask_ || planTask_ || draftTask_ || pendingPrepare_ ||
+               (live_ && pendingReplan_);
+    }
     // The running planning task (null when none): its progress, Cancel.
     Task* planningTask() const { return planTask_; }
     void cancelPlanning();
@@ -53,6 +83,9 @@ public slots:
     void plan();
     void setModelPath(const QString& path) { modelPath_ = path.toStdString(); }
     void schedulePrepare(); // debounced: several edits in a row run the planner once
+    // An edit of the query (rooms, start, end, solver): the path is stale; with live
+    // replanning a new one is scheduled.
+    void queryChanged();
 
 signals:
     void preparedChanged();
@@ -62,6 +95,10 @@ signals:
 
 private:
     void startPrepare();
+    void startDraft();
+    void scheduleReplan(bool queryOnly);
+    // The plans of the document's plan and robot, shared by every task until they change.
+    std::shared_ptr<const PreparedPlans> preparedPlans();
     void invalidateResult();
     void setError(const QString& message);
     void taskEnded(Task* task);
@@ -70,16 +107,27 @@ private:
     TaskManager* tasks_;
     QPointer<Document> document_;
     QTimer* prepareTimer_;
+    QTimer* replanTimer_;
     std::shared_ptr<const PreparedPlan> prepared_;
     std::shared_ptr<const PlanResult> result_;
+    std::shared_ptr<const PlanResult> stale_;
+    std::shared_ptr<const PreparedPlans> preparedPlans_;
+    bool draft_ = false;
+    bool live_ = true;
     QString error_;
     bool errorFromPrepare_ = false; // error_ came from the preparation, not from planning
     std::string modelPath_;
     // The current tasks (null when none); an edit cancels them.
     QPointer<Task> prepareTask_;
     QPointer<Task> planTask_;
+    QPointer<Task> draftTask_;
     bool pendingPrepare_ = false;
-    bool busy_ = false; // as last announced by busyChanged
+    bool pendingReplan_ = false;
+    quint64 edits_ = 0;                           // edits seen (query or plan)
+    quint64 floorEdits_ = 0;                      // edits of the plan, robot or sweep
+    quint64 preparedFloor_ = 0, resultFloor_ = 0; // floorEdits_ when prepared_/result_ began
+    quint64 plannedEdit_ = 0;                     // edits_ when the running plan() started
+    bool busy_ = false;                           // as last announced by busyChanged
 };
 
 } // namespace fc::ui

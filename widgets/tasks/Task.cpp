@@ -1,5 +1,11 @@
 #include "tasks/Task.h"
 
+#ifdef __linux__
+#include <sys/resource.h>
+#include <sys/syscall.h>
+#include <unistd.h>
+#endif
+
 #include <QThread>
 #include <QTimer>
 #include <algorithm>
@@ -126,6 +132,23 @@ TaskManager* TaskManager::forObject(QObject* object) {
     return manager ? manager : new TaskManager(object);
 }
 
+namespace {
+
+// Workers yield to the GUI thread: on a two-core machine a plan's threads would otherwise
+// take the cores from it while a new path is drawn. Threads the work starts (the per-room
+// search's) inherit the niceness. Linux only: elsewhere thread niceness does not exist.
+void lowerThisThreadsPriority() {
+#ifdef __linux__
+    static thread_local bool lowered = false;
+    if (!lowered) {
+        lowered = true;
+        setpriority(PRIO_PROCESS, static_cast<id_t>(syscall(SYS_gettid)), 8);
+    }
+#endif
+}
+
+} // namespace
+
 Task* TaskManager::start(const QString& description, const TaskOptions& options,
                          std::function<std::any(TaskFeedback&)> work) {
     if (!options.kind.isEmpty())
@@ -135,6 +158,7 @@ Task* TaskManager::start(const QString& description, const TaskOptions& options,
     connect(task, &Task::ended, this, [this, task] { finish(task); });
     std::shared_ptr<TaskFeedback> feedback = task->feedback_;
     pool_.start([task, feedback, work = std::move(work)] {
+        lowerThisThreadsPriority();
         std::any result;
         QString error;
         bool threw = false;

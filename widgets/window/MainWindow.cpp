@@ -34,6 +34,7 @@
 #include <QLocale>
 #include <QMenuBar>
 #include <QMessageBox>
+#include <QSettings>
 #include <QStatusBar>
 #include <QToolBar>
 #include <QUndoGroup>
@@ -60,8 +61,10 @@ MainWindow::MainWindow(QWidget* parent)
     trainingDock_ = new TrainingDock(this);
     addDockWidget(Qt::RightDockWidgetArea, trainingDock_);
     // Training follows the plan's graph; its model serves solver "dqn".
-    connect(planner_, &PlanningController::preparedChanged, this,
-            [this] { trainingDock_->setPreparedPlan(planner_->prepared()); });
+    connect(planner_, &PlanningController::preparedChanged, this, [this] {
+        trainingDock_->setPreparedPlan(planner_->prepared());
+        loadPendingModel();
+    });
     connect(trainingDock_, &TrainingDock::modelReady, planner_, &PlanningController::setModelPath);
     tilingMode_ = new TilingMode(this, scene_);
 
@@ -147,6 +150,18 @@ void MainWindow::createMenus() {
         dialog->start();
     });
     plan->setShortcut(Qt::Key_F5);
+    // Live replanning: remembered across sessions, on unless the user turned it off.
+    QAction* live = planMenu->addAction(tr("&Replan After Each Edit"));
+    live->setObjectName(QStringLiteral("liveReplanning"));
+    live->setCheckable(true);
+    live->setToolTip(tr("Plan the path again in the background whenever the floor, the rooms "
+                        "or the start and end change; the old path stays greyed until then."));
+    live->setChecked(QSettings().value(QStringLiteral("planning/live"), true).toBool());
+    planner_->setLiveReplanning(live->isChecked());
+    connect(live, &QAction::toggled, this, [this](bool on) {
+        planner_->setLiveReplanning(on);
+        QSettings().setValue(QStringLiteral("planning/live"), on);
+    });
     planMenu->addSeparator();
     planMenu->addAction(tilingMode_->action());
 
@@ -289,8 +304,10 @@ void MainWindow::closeEvent(QCloseEvent* event) {
 }
 
 void MainWindow::changeEvent(QEvent* event) {
-    if (event->type() == QEvent::PaletteChange)
+    if (event->type() == QEvent::PaletteChange) {
         scene_->restyle();
+        view_->resetCachedContent(); // the grid's colours
+    }
     QMainWindow::changeEvent(event);
 }
 
@@ -338,10 +355,26 @@ bool MainWindow::openFile(const QString& path) {
         return false;
     }
     setDocument(std::move(document));
+    pendingModel_.clear();
+    if (path.endsWith(QLatin1String(".fcproj"), Qt::CaseInsensitive) &&
+        QFileInfo::exists(modelFileFor(path)))
+        pendingModel_ = modelFileFor(path);
     if (!path.startsWith(QLatin1Char(':')))
         addRecentFile(path);
     statusBar()->showMessage(tr("Opened %1").arg(path), 5000);
     return true;
+}
+
+void MainWindow::loadPendingModel() {
+    if (pendingModel_.isEmpty() || !planner_->prepared())
+        return;
+    const QString path = pendingModel_;
+    pendingModel_.clear();
+    if (trainingDock_->loadModel(path))
+        statusBar()->showMessage(tr("Loaded the trained model %1").arg(path), 5000);
+    else // e.g. trained for another plan: the project opens without it
+        showProblem(tr("The trained model beside the project was not loaded (%1): %2")
+                        .arg(QFileInfo(path).fileName(), trainingDock_->lastError()));
 }
 
 void MainWindow::openSample() {

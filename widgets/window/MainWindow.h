@@ -113,6 +113,7 @@ private:
     void setDocument(std::unique_ptr<Document> document);
     void showError(const QString& message);
     void showProblem(const QString& message);
+    void loadPendingModel();
     bool maybeSave();
     bool save();
     bool saveAs();
@@ -144,6 +145,8 @@ private:
     std::array<QAction*, kOverlayKindCount> overlayActions_{};
     bool dialogsEnabled_ = true;
     QString lastError_;
+    // The model beside the project just opened, loaded once its plan is prepared.
+    QString pendingModel_;
 };
 
 } // namespace fc::ui

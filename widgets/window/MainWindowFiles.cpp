@@ -1,12 +1,13 @@
 // MainWindow: the File menu, recent files, saving, exports and the screenshot command.
 #include "canvas/CanvasView.h"
+#include "canvas/PlanScene.h"
+#include "docks/TrainingDock.h"
 #include "document/Conversions.h"
 #include "document/Document.h"
 #include "document/DocumentFiles.h"
+#include "tasks/PlanningController.h"
 #include "window/MainWindow.h"
 #include "window/PdfReport.h"
-#include "canvas/PlanScene.h"
-#include "tasks/PlanningController.h"
 
 #include <QAction>
 #include <QApplication>
@@ -137,6 +138,12 @@ bool MainWindow::saveFile(const QString& path) {
         return false;
     }
     addRecentFile(path);
+    // The trained model goes beside the project, so that it is there when it is opened.
+    if (trainingDock_->hasModel() && !trainingDock_->saveModel(modelFileFor(path))) {
+        showError(tr("The project was saved, but not its trained model: %1")
+                      .arg(trainingDock_->lastError()));
+        return true;
+    }
     statusBar()->showMessage(tr("Saved %1").arg(path), 5000);
     return true;
 }

@@ -1,9 +1,9 @@
 // MainWindow: File > Import (DXF drawings, ROS occupancy maps, WKT, GeoJSON, and 3D building
 // models through their own dialog: storey, cut height, door leaves).
 #include "dialogs/BuildingImportDialog.h"
+#include "dialogs/ImportDialog.h"
 #include "document/Conversions.h"
 #include "document/Document.h"
-#include "dialogs/ImportDialog.h"
 #include "window/MainWindow.h"
 
 #include <QFileDialog>
