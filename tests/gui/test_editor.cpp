@@ -209,10 +209,13 @@ void EditorTest::planShowsPathAndMetrics() {
     QVERIFY(planner->result() == nullptr);
     QCOMPARE(planner->staleResult(), before);
     QVERIFY(overlays->itemCount(OverlayKind::Path) > 0);
-    QCOMPARE(overlays->itemCount(OverlayKind::CoverageGaps), 0);
+    QVERIFY(overlays->opacity(OverlayKind::Path) < 0.5);
+    QCOMPARE(overlays->opacity(OverlayKind::CoverageGaps), 0.0);
     QTRY_VERIFY_WITH_TIMEOUT(planner->result() && !planner->isDraft(), 30000);
     QVERIFY(planner->staleResult() == nullptr);
     QCOMPARE(overlays->itemCount(OverlayKind::CoverageGaps), 1);
+    QCOMPARE(overlays->opacity(OverlayKind::Path), 1.0);
+    QCOMPARE(overlays->opacity(OverlayKind::CoverageGaps), 1.0);
 }
 
 void EditorTest::robotProfileUpdatesOverlays() {

@@ -107,8 +107,13 @@ void LiveReplanningTest::geometryEditReplansWithTheOldPathGreyed() {
     QVERIFY(!planner->result());
     QCOMPARE(planner->staleResult(), before);
     OverlayLayer* overlays = window->scene()->overlays();
-    QVERIFY(overlays->itemCount(OverlayKind::Path) > 0);         // greyed
-    QCOMPARE(overlays->itemCount(OverlayKind::CoverageGaps), 0); // of the old floor: hidden
+    QVERIFY(overlays->itemCount(OverlayKind::Path) > 0); // faded
+    QVERIFY(overlays->opacity(OverlayKind::Path) < 0.5);
+    QCOMPARE(overlays->opacity(OverlayKind::CoverageGaps), 0.0); // of the old floor: hidden
+    // Built again from scratch (a new palette), the stale path is drawn grey, gaps omitted.
+    overlays->rebuild();
+    QVERIFY(overlays->itemCount(OverlayKind::Path) > 0);
+    QCOMPARE(overlays->itemCount(OverlayKind::CoverageGaps), 0);
 
     QVERIFY2(waitForFullPlan(planner), qPrintable(planner->errorMessage()));
     QVERIFY(planner->result()->metrics.requiredArea < areaBefore - 3.0);

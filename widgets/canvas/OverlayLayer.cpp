@@ -128,7 +128,13 @@ QGraphicsItemGroup* OverlayLayer::freshGroup(OverlayKind kind, double zValue) {
 
 void OverlayLayer::rebuild() {
     cellsKey_ = QStringLiteral("(none)"); // no key matches it: everything is built again
+    pathShown_.reset();
     refresh();
+}
+
+double OverlayLayer::opacity(OverlayKind kind) const {
+    const QGraphicsItemGroup* group = groups_[static_cast<int>(kind)];
+    return group ? group->opacity() : 1.0;
 }
 
 void OverlayLayer::refresh() {
@@ -138,14 +144,21 @@ void OverlayLayer::refresh() {
     const QString key = controller_ ? controller_->cellsKey() : QString();
     const bool cellsChanged = key != cellsKey_;
     cellsKey_ = key;
+    const auto result = controller_ ? controller_->result() : nullptr;
+    const auto stale = controller_ ? controller_->staleResult() : nullptr;
+    // The path on screen just went stale: it fades where it is (its items keep their
+    // rendering, so this costs no drawing) rather than being drawn again in grey.
+    const bool fadeOnly = !result && stale && stale == pathShown_;
     for (int i = 0; i < kOverlayKindCount; ++i) {
         const auto kind = static_cast<OverlayKind>(i);
-        if (cellsChanged || isPathLayer(kind) || kind == OverlayKind::Unreachable)
+        const bool fresh =
+            isPathLayer(kind) ? !fadeOnly : cellsChanged || kind == OverlayKind::Unreachable;
+        if (fresh)
             freshGroup(kind, z::Overlays + 0.1 * i);
     }
+    pathShown_ = result ? result : stale;
     if (!controller_)
         return;
-    const auto result = controller_->result();
     const auto prepared = controller_->shownPlan();
     if (result && !result->parts.empty()) {
         // Per-room sweeps: each part's own cells and graph, at its own angle.
@@ -163,10 +176,16 @@ void OverlayLayer::refresh() {
         }
         addUnreachable(*prepared);
     }
-    if (result)
+    if (result) {
         addPath(*result);
-    else if (const auto stale = controller_->staleResult())
+    } else if (fadeOnly) {
+        // Its overlaps and gaps are of a floor or query that changed: hidden.
+        groups_[static_cast<int>(OverlayKind::Path)]->setOpacity(0.3);
+        groups_[static_cast<int>(OverlayKind::Overlaps)]->setOpacity(0.0);
+        groups_[static_cast<int>(OverlayKind::CoverageGaps)]->setOpacity(0.0);
+    } else if (stale) {
         addPath(*stale, true);
+    }
 }
 
 bool OverlayLayer::isPathLayer(OverlayKind kind) {

@@ -9,6 +9,7 @@
 #include <QPointer>
 #include <QString>
 #include <array>
+#include <memory>
 
 class QGraphicsItemGroup;
 
@@ -58,6 +59,8 @@ public:
     bool isVisible(OverlayKind kind) const { return visible_[static_cast<int>(kind)]; }
     // Number of items drawn for a kind (tests check that overlays appear).
     int itemCount(OverlayKind kind) const;
+    // 1 normally; below 1 for the path's layers while the path is stale (faded).
+    double opacity(OverlayKind kind) const;
 
 public slots:
     // Builds every layer again (a new palette, a new controller).
@@ -80,7 +83,8 @@ private:
     QPointer<PlanningController> controller_;
     std::array<QGraphicsItemGroup*, kOverlayKindCount> groups_{};
     std::array<bool, kOverlayKindCount> visible_{};
-    QString cellsKey_; // of the cells and graph built
+    QString cellsKey_;                            // of the cells and graph built
+    std::shared_ptr<const PlanResult> pathShown_; // whose path the path's layers draw
 };
 
 } // namespace fc::ui
