@@ -231,6 +231,10 @@ void PlanningController::startDraft() {
         resultFloor_ = floor;
         draft_ = true;
         stale_.reset();
+        // The message of an earlier query that failed no longer applies; a plan still
+        // failing (dqn without a model) says so again when it ends.
+        setError(QString());
+        errorFromPrepare_ = false;
         emit resultChanged();
         if (!(planTask_ && plannedEdit_ == edit))
             plan(); // the full plan replaces the draft
