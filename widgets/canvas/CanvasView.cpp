@@ -1,5 +1,6 @@
 #include "canvas/CanvasView.h"
 
+#include "canvas/PlanScene.h"
 #include "document/Document.h"
 #include "tools/AbstractTool.h"
 
@@ -84,6 +85,13 @@ void CanvasView::fitToPlan() {
     }
     const double margin = 0.05 * std::max(bounds.width(), bounds.height());
     fitInView(bounds.adjusted(-margin, -margin, margin, margin), Qt::KeepAspectRatio);
+    layoutLabels();
+}
+
+void CanvasView::layoutLabels() {
+    // Labels keep their screen size, so which of them fit changes with the zoom.
+    if (auto* planScene = qobject_cast<PlanScene*>(scene()))
+        planScene->layoutLabels(transform());
 }
 
 void CanvasView::zoomBy(double factor) {
@@ -91,6 +99,7 @@ void CanvasView::zoomBy(double factor) {
     if (next < 0.05 || next > 5000.0)
         return; // metres per pixel between 20 and 0.0002
     scale(factor, factor);
+    layoutLabels();
 }
 
 void CanvasView::scrollBy(QPoint pixels) {

@@ -49,6 +49,7 @@ protected:
 
 private:
     void zoomBy(double factor);
+    void layoutLabels();
     void scrollBy(QPoint pixels);
     ToolMouseEvent toolEvent(QMouseEvent* event) const;
     bool startsPan(QMouseEvent* event) const;

@@ -75,13 +75,29 @@ OverlayStyle overlayStyle(OverlayKind kind) {
     case OverlayKind::Path:
         return {style::cosmeticPen(QColor(210, 50, 30), 1.8), QColor(150, 20, 10)};
     case OverlayKind::Overlaps: // blue like the paper's figures, see-through over the path
-        return {style::cosmeticPen(QColor(30, 90, 255, 170), 4.0), Qt::NoBrush};
+        return {style::cosmeticPen(QColor(30, 90, 255, 140), 3.0), Qt::NoBrush};
     case OverlayKind::CoverageGaps:
         return {Qt::NoPen, QColor(230, 0, 200, 200)};
     case OverlayKind::Unreachable:
         break;
     }
     return {style::cosmeticPen(QColor(220, 30, 30), 2.5), Qt::NoBrush};
+}
+
+OverlayStyle transitStyle() {
+    return {style::cosmeticPen(QColor(235, 140, 0), 1.8, Qt::DashLine), Qt::NoBrush};
+}
+
+bool isGraphOverlay(OverlayKind kind) {
+    switch (kind) {
+    case OverlayKind::Path:
+    case OverlayKind::Overlaps:
+    case OverlayKind::Unreachable:
+    case OverlayKind::CoverageGaps:
+        return false;
+    default:
+        return true;
+    }
 }
 
 bool overlayVisibleByDefault(OverlayKind kind) {
@@ -108,7 +124,29 @@ void OverlayLayer::setPlanningController(PlanningController* controller) {
 void OverlayLayer::setVisible(OverlayKind kind, bool visible) {
     visible_[static_cast<int>(kind)] = visible;
     if (QGraphicsItemGroup* group = groups_[static_cast<int>(kind)])
-        group->setVisible(visible);
+        group->setVisible(isShown(kind));
+}
+
+bool OverlayLayer::isShown(OverlayKind kind) const {
+    return isVisible(kind) && (mode_ == ViewMode::Graph || !isGraphOverlay(kind));
+}
+
+void OverlayLayer::setViewMode(ViewMode mode) {
+    mode_ = mode;
+    for (int i = 0; i < kOverlayKindCount; ++i)
+        if (QGraphicsItemGroup* group = groups_[i])
+            group->setVisible(isShown(static_cast<OverlayKind>(i)));
+}
+
+QList<QGraphicsItem*> OverlayLayer::labelItems() const {
+    QList<QGraphicsItem*> labels;
+    const QGraphicsItemGroup* cells = groups_[static_cast<int>(OverlayKind::PrimaryCells)];
+    if (!cells || !isShown(OverlayKind::PrimaryCells))
+        return labels;
+    for (QGraphicsItem* item : cells->childItems())
+        if (item->data(style::kLabelPriorityKey).isValid())
+            labels.push_back(item);
+    return labels;
 }
 
 int OverlayLayer::itemCount(OverlayKind kind) const {
@@ -121,7 +159,7 @@ QGraphicsItemGroup* OverlayLayer::freshGroup(OverlayKind kind, double zValue) {
     delete group;
     group = new QGraphicsItemGroup;
     group->setZValue(zValue);
-    group->setVisible(isVisible(kind));
+    group->setVisible(isShown(kind));
     scene_->addItem(group);
     return group;
 }
@@ -301,13 +339,14 @@ void OverlayLayer::addPath(const PlanResult& result, bool stale) {
         target.moveTo(toQt(path.points[i]));
         target.lineTo(toQt(path.points[i + 1]));
     }
-    // Direction arrows every ~3 W along the path, at segment midpoints.
+    // Direction hints, sparse enough not to clutter the stripes: one arrow every ~16 W of
+    // path, on a segment long enough to carry it.
     const double width = result.prepared.robot.coverageWidth;
-    double sinceArrow = 1.5 * width;
+    double sinceArrow = 8.0 * width;
     for (size_t i = 0; i + 1 < path.points.size(); ++i) {
         const Vec2 a = path.points[i], b = path.points[i + 1];
         sinceArrow += distance(a, b);
-        if (sinceArrow >= 3.0 * width && distance(a, b) >= 0.4 * width) {
+        if (sinceArrow >= 16.0 * width && distance(a, b) >= 1.5 * width) {
             addArrowHead(arrows, (a + b) * 0.5 + (b - a) * (0.15 * width / distance(a, b)), b - a,
                          0.3 * width);
             sinceArrow = 0;
@@ -319,8 +358,9 @@ void OverlayLayer::addPath(const PlanResult& result, bool stale) {
     if (stale)
         pathPen.setColor(staleColour);
     addPathItem(group, sweeping, pathPen);
-    QPen transitPen = pathPen; // travel between cells: dashed
-    transitPen.setStyle(Qt::DashLine);
+    QPen transitPen = transitStyle().pen; // travel between cells: dashed, its own colour
+    if (stale)
+        transitPen.setColor(staleColour);
     addPathItem(group, travelling, transitPen);
     addPathItem(group, arrows, Qt::NoPen,
                 stale ? QBrush(staleColour) : overlayStyle(OverlayKind::Path).brush);

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <QBrush>
+#include <QList>
 #include <QObject>
 #include <QPen>
 #include <QPointer>
@@ -11,6 +12,7 @@
 #include <array>
 #include <memory>
 
+class QGraphicsItem;
 class QGraphicsItemGroup;
 
 namespace fc {
@@ -46,6 +48,15 @@ struct OverlayStyle {
     QBrush brush;
 };
 OverlayStyle overlayStyle(OverlayKind kind);
+
+// What the canvas is for: Path shows a supervisor the floor, the rooms and the path (its
+// coverage, transit and overlaps, start and end); Graph adds the planner's internals
+// (cells, slices, corners and the graph's edges) for whoever studies the method.
+enum class ViewMode { Path, Graph };
+// Overlays of the planner's internals, shown only in the Graph view.
+bool isGraphOverlay(OverlayKind kind);
+// How transit moves between cells are drawn (the path's other segments: the Path kind).
+OverlayStyle transitStyle();
 // Shown unless the user hides them; the graph's edges would hide the cells by default.
 bool overlayVisibleByDefault(OverlayKind kind);
 
@@ -56,7 +67,14 @@ public:
 
     void setPlanningController(PlanningController* controller);
     void setVisible(OverlayKind kind, bool visible);
+    // The user's choice (View > Overlays, legend), whatever the view mode.
     bool isVisible(OverlayKind kind) const { return visible_[static_cast<int>(kind)]; }
+    // Drawn now: chosen by the user and part of the view mode.
+    bool isShown(OverlayKind kind) const;
+    void setViewMode(ViewMode mode);
+    ViewMode viewMode() const { return mode_; }
+    // The labels of shown overlays (cell ids), for PlanScene's label placement.
+    QList<QGraphicsItem*> labelItems() const;
     // Number of items drawn for a kind (tests check that overlays appear).
     int itemCount(OverlayKind kind) const;
     // 1 normally; below 1 for the path's layers while the path is stale (faded).
@@ -83,6 +101,7 @@ private:
     QPointer<PlanningController> controller_;
     std::array<QGraphicsItemGroup*, kOverlayKindCount> groups_{};
     std::array<bool, kOverlayKindCount> visible_{};
+    ViewMode mode_ = ViewMode::Path;
     QString cellsKey_;                            // of the cells and graph built
     std::shared_ptr<const PlanResult> pathShown_; // whose path the path's layers draw
 };

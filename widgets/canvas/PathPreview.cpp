@@ -1,9 +1,9 @@
 #include "canvas/PathPreview.h"
 
-#include "document/Conversions.h"
 #include "canvas/PlanScene.h"
-#include "tasks/PlanningController.h"
 #include "canvas/SceneStyle.h"
+#include "document/Conversions.h"
+#include "tasks/PlanningController.h"
 
 #include <QGraphicsEllipseItem>
 #include <QGraphicsItemGroup>

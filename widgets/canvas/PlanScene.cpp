@@ -1,5 +1,6 @@
 #include "canvas/PlanScene.h"
 
+#include "canvas/LabelPlacement.h"
 #include "canvas/OverlayLayer.h"
 #include "canvas/SceneStyle.h"
 #include "document/Conversions.h"
@@ -9,6 +10,8 @@
 #include <QGraphicsItemGroup>
 #include <QGraphicsPathItem>
 #include <QGraphicsSimpleTextItem>
+#include <QGraphicsView>
+#include <QPainter>
 #include <QPen>
 
 namespace fc::ui {
@@ -41,6 +44,95 @@ void PlanScene::setPlanningController(PlanningController* controller) {
     // The markers show the corner the planner snaps them to, which needs the graph.
     connect(controller, &PlanningController::preparedChanged, this, &PlanScene::rebuildMarkers);
     connect(controller, &PlanningController::resultChanged, this, &PlanScene::rebuildMarkers);
+}
+
+void PlanScene::setViewMode(ViewMode mode) {
+    overlays_->setViewMode(mode);
+    rebuildMarkers();
+}
+
+ViewMode PlanScene::viewMode() const {
+    return overlays_->viewMode();
+}
+
+void PlanScene::layoutLabels() {
+    const QList<QGraphicsView*> shown = views();
+    if (!shown.isEmpty())
+        layoutLabels(shown.first()->transform());
+}
+
+void PlanScene::layoutLabels(const QTransform& viewTransform) {
+    QList<QGraphicsItem*> items;
+    for (QGraphicsItemGroup* group : {markers_, polygons_})
+        if (group)
+            items += group->childItems();
+    items += overlays_->labelItems();
+    std::vector<LabelRequest> requests;
+    std::vector<QGraphicsItem*> labels;
+    for (QGraphicsItem* item : items) {
+        const bool fixed = item->data(style::kFixedLabelKey).toBool();
+        const QVariant priority = item->data(style::kLabelPriorityKey);
+        if (!fixed && !priority.isValid())
+            continue;
+        const QPointF anchor = viewTransform.map(item->pos());
+        LabelRequest request;
+        request.fixed = fixed;
+        request.priority = priority.toDouble();
+        if (fixed) { // a marker: on its point, else beside it
+            const QRectF here = item->boundingRect().translated(anchor);
+            request.candidates = {here};
+            for (QPointF step : {QPointF(1, 0), QPointF(0, -1), QPointF(-1, 0), QPointF(0, 1)})
+                request.candidates.push_back(
+                    here.translated(step.x() * here.width(), step.y() * here.height()));
+        } else {
+            request.candidates = labelCandidates(anchor, item->boundingRect().size());
+        }
+        requests.push_back(std::move(request));
+        labels.push_back(item);
+    }
+    const std::vector<int> chosen = placeLabels(requests);
+    for (size_t i = 0; i < labels.size(); ++i) {
+        labels[i]->setVisible(chosen[i] >= 0);
+        if (chosen[i] < 0)
+            continue;
+        // The label's own transform is in screen pixels (it ignores the view's scale).
+        const QPointF offset = requests[i].candidates[chosen[i]].topLeft() -
+                               viewTransform.map(labels[i]->pos()) -
+                               labels[i]->boundingRect().topLeft();
+        labels[i]->setTransform(QTransform::fromTranslate(offset.x(), offset.y()));
+    }
+}
+
+QImage PlanScene::renderPathView(QSize size, double pixelRatio) {
+    QImage image(size * pixelRatio, QImage::Format_ARGB32_Premultiplied);
+    image.setDevicePixelRatio(pixelRatio);
+    image.fill(Qt::white);
+    if (!document_ || document_->plan().boundary.empty())
+        return image;
+    const ViewMode mode = viewMode();
+    if (mode != ViewMode::Path)
+        setViewMode(ViewMode::Path);
+    const BoundingBox box = document_->plan().bounds();
+    const double margin = 0.03 * std::max(box.width(), box.height());
+    const QRectF plan(QPointF(box.minX - margin, box.minY - margin),
+                      QPointF(box.maxX + margin, box.maxY + margin));
+    const double scale = std::min(size.width() / plan.width(), size.height() / plan.height());
+    const double x0 = 0.5 * (size.width() - scale * plan.width());
+    const double y0 = 0.5 * (size.height() - scale * plan.height());
+    // Scene (y up) to image (y down), the plan centred.
+    const QTransform toImage(scale, 0, 0, -scale, x0 - scale * plan.left(),
+                             y0 + scale * plan.bottom());
+    layoutLabels(toImage);
+    QPainter painter(&image);
+    painter.setRenderHint(QPainter::Antialiasing);
+    painter.setRenderHint(QPainter::TextAntialiasing);
+    painter.setTransform(toImage);
+    render(&painter, plan, plan);
+    painter.end();
+    if (mode != ViewMode::Path)
+        setViewMode(mode);
+    layoutLabels(); // back to the view's zoom
+    return image;
 }
 
 void PlanScene::restyle() {
@@ -84,8 +176,10 @@ void PlanScene::rebuildPolygons() {
         item->setZValue(z::Rooms);
         item->setToolTip(selected ? tr("%1 (planned)").arg(name)
                                   : tr("%1 (not planned)").arg(name));
+        // Room names before cell ids, bigger rooms first when names compete for space.
         style::addLabel(polygons_, name, toQt(style::labelPoint(room.outline)),
-                        style::roomOutline(palette), true);
+                        style::roomOutline(palette), true,
+                        1e6 + std::abs(signedArea(room.outline)));
     }
     if (!plan.boundary.empty()) {
         QPainterPath walls;
@@ -105,6 +199,7 @@ void PlanScene::rebuildPolygons() {
         item->setZValue(z::Walls);
     }
     setHighlight(highlight_);
+    layoutLabels();
 }
 
 void PlanScene::rebuildMarkers() {
@@ -116,8 +211,9 @@ void PlanScene::rebuildMarkers() {
         return;
     const Project& project = document_->project();
     const auto prepared = controller_ ? controller_->shownPlan() : nullptr;
+    // The corner a marker snaps to is graph detail: the Graph view only.
     const auto showSnap = [&](Vec2 point) {
-        if (!prepared || prepared->graph.nodes.empty())
+        if (!prepared || prepared->graph.nodes.empty() || viewMode() != ViewMode::Graph)
             return;
         const Frame& frame = prepared->decomposition.frame;
         const int node = nearestNode(prepared->graph, frame.toLocal(point));
@@ -139,6 +235,20 @@ void PlanScene::rebuildMarkers() {
         style::addMarker(markers_, toQt(project.start), tr("S"), QColor(0, 150, 60), tr("Start"));
     if (project.hasEnd)
         style::addMarker(markers_, toQt(project.end), tr("E"), QColor(200, 40, 40), tr("End"));
+    // Without a start or end of the user's, the path's own ends are marked: where the
+    // planner chose to start (where the robot reaches the most floor) and where it stops.
+    auto result = controller_ ? controller_->result() : nullptr;
+    if (!result && controller_)
+        result = controller_->staleResult();
+    if (result && !result->path.empty()) {
+        if (!project.hasStart)
+            style::addMarker(markers_, toQt(result->path.points.front()), tr("S"),
+                             QColor(0, 150, 60), tr("Start, chosen by the planner"));
+        if (!project.hasEnd)
+            style::addMarker(markers_, toQt(result->path.points.back()), tr("E"),
+                             QColor(200, 40, 40), tr("End of the path"));
+    }
+    layoutLabels();
 }
 
 void PlanScene::setHighlight(std::optional<PolygonRef> polygon) {

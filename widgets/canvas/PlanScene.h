@@ -3,9 +3,11 @@
 // are rebuilt from the document whenever it signals a change, so they always follow it.
 #pragma once
 
+#include "canvas/OverlayLayer.h"
 #include "document/Document.h"
 
 #include <QGraphicsScene>
+#include <QImage>
 #include <QPointer>
 #include <optional>
 
@@ -14,7 +16,6 @@ class QGraphicsItemGroup;
 
 namespace fc::ui {
 
-class OverlayLayer;
 class PlanningController;
 
 // Stacking order of the scene's layers (higher is drawn on top).
@@ -32,6 +33,22 @@ public:
     void setPlanningController(PlanningController* controller);
     Document* document() const { return document_; }
     OverlayLayer* overlays() const { return overlays_; }
+
+    // Path (default) or Graph: see ViewMode. Markers and overlays follow.
+    void setViewMode(ViewMode mode);
+    ViewMode viewMode() const;
+
+    // Places the room names, cell ids and markers so that none overlaps another at the
+    // zoom of `viewTransform` (labels keep their screen size); those that do not fit are
+    // hidden (their room's tooltip still names it). The no-argument form uses the first
+    // view's transform and is called after every rebuild; views call it when they zoom.
+    void layoutLabels(const QTransform& viewTransform);
+    void layoutLabels();
+
+    // The plan in the Path view, fitted into an image of `size` logical pixels (labels and
+    // markers keep their screen size, so a larger page shows more of them) at
+    // `pixelRatio` device pixels each; the view mode and labels are restored afterwards.
+    QImage renderPathView(QSize size, double pixelRatio);
 
     // Redraws everything in the colours of the current application palette (dark or light
     // theme switched while running).

@@ -5,6 +5,7 @@
 #include <QGraphicsEllipseItem>
 #include <QGraphicsSimpleTextItem>
 #include <QGuiApplication>
+#include <QPainter>
 
 namespace fc::ui::style {
 
@@ -66,9 +67,33 @@ Vec2 labelPoint(const Ring& ring) {
     return (v + mid) * 0.5;
 }
 
+namespace {
+
+// Text on a rounded plate: names stay legible where they cross the path or a hatch.
+class PlateTextItem : public QGraphicsSimpleTextItem {
+public:
+    PlateTextItem(const QString& text, QGraphicsItem* parent)
+        : QGraphicsSimpleTextItem(text, parent) {}
+    QRectF boundingRect() const override {
+        return QGraphicsSimpleTextItem::boundingRect().adjusted(-2, 0, 2, 0);
+    }
+    void paint(QPainter* painter, const QStyleOptionGraphicsItem* option,
+               QWidget* widget) override {
+        QColor plate = style::palette().color(QPalette::Base);
+        plate.setAlpha(190);
+        painter->setPen(Qt::NoPen);
+        painter->setBrush(plate);
+        painter->drawRoundedRect(boundingRect(), 3, 3);
+        QGraphicsSimpleTextItem::paint(painter, option, widget);
+    }
+};
+
+} // namespace
+
 QGraphicsItem* addLabel(QGraphicsItem* parent, const QString& text, QPointF position,
-                        const QColor& color, bool bold) {
-    auto* label = new QGraphicsSimpleTextItem(text, parent);
+                        const QColor& color, bool bold, double priority) {
+    auto* label = new PlateTextItem(text, parent);
+    label->setData(kLabelPriorityKey, priority);
     QFont font = label->font();
     font.setPointSizeF(bold ? 9.0 : 7.5);
     font.setBold(bold);
@@ -91,6 +116,7 @@ QGraphicsItem* addMarker(QGraphicsItem* parent, QPointF position, const QString&
     disc->setPos(position);
     disc->setFlag(QGraphicsItem::ItemIgnoresTransformations);
     disc->setToolTip(toolTip);
+    disc->setData(kFixedLabelKey, true);
     auto* text = new QGraphicsSimpleTextItem(letter, disc);
     QFont font = text->font();
     font.setBold(true);

@@ -26,9 +26,15 @@ QColor roomHue(int room, int alpha);
 // A point inside the ring for its label: the area centroid when inside, else a vertex
 // average nudged inside.
 Vec2 labelPoint(const Ring& ring);
-// A text label of constant screen size centred on `position`.
+// Item data keys of the labels and markers that PlanScene::layoutLabels places.
+constexpr int kLabelPriorityKey = 1; // double: higher is placed first
+constexpr int kFixedLabelKey = 2;    // bool: markers, never moved or hidden
+
+// A text label of constant screen size centred on `position`, on a see-through plate of
+// the base colour so that it stays readable over the path; `priority` orders the label
+// placement (room names before cell ids).
 QGraphicsItem* addLabel(QGraphicsItem* parent, const QString& text, QPointF position,
-                        const QColor& color, bool bold = false);
+                        const QColor& color, bool bold = false, double priority = 0);
 // A round marker of constant screen size with a letter (start and end points).
 QGraphicsItem* addMarker(QGraphicsItem* parent, QPointF position, const QString& letter,
                          const QColor& color, const QString& toolTip);

@@ -25,6 +25,7 @@
 #include "window/WheelGuard.h"
 
 #include <QAction>
+#include <QActionGroup>
 #include <QApplication>
 #include <QCloseEvent>
 #include <QDir>
@@ -196,6 +197,28 @@ void MainWindow::createViewMenu() {
     connect(snapVertices, &QAction::toggled, this,
             [this](bool on) { view_->snapper().snapToVertices = on; });
 
+    viewMenu->addSeparator();
+    // Path for the people who clean, Graph for whoever studies the planner's internals.
+    auto* modes = new QActionGroup(this);
+    const auto addMode = [&](const QString& text, ViewMode mode, const QKeySequence& keys,
+                             const QString& name, const QString& tip) {
+        QAction* action = viewMenu->addAction(text);
+        action->setObjectName(name);
+        action->setCheckable(true);
+        action->setShortcut(keys);
+        action->setStatusTip(tip);
+        action->setToolTip(tip);
+        modes->addAction(action);
+        connect(action, &QAction::triggered, this, [this, mode]() { setViewMode(mode); });
+        return action;
+    };
+    pathViewAction_ = addMode(tr("&Path View"), ViewMode::Path, QKeySequence(Qt::CTRL | Qt::Key_1),
+                              QStringLiteral("pathView"),
+                              tr("The floor, the rooms and the path with its start and end"));
+    graphViewAction_ = addMode(tr("&Graph View"), ViewMode::Graph,
+                               QKeySequence(Qt::CTRL | Qt::Key_2), QStringLiteral("graphView"),
+                               tr("Adds the planner's cells, corners and graph edges"));
+
     QMenu* overlays = viewMenu->addMenu(tr("&Overlays"));
     for (int i = 0; i < kOverlayKindCount; ++i) {
         const auto kind = static_cast<OverlayKind>(i);
@@ -222,6 +245,21 @@ void MainWindow::createViewMenu() {
     viewMenu->addAction(legendDock_->toggleViewAction());
     viewMenu->addAction(history->toggleViewAction());
     viewMenu->addAction(trainingDock_->toggleViewAction());
+    const bool graph =
+        QSettings().value(QStringLiteral("view/mode")).toString() == QLatin1String("graph");
+    setViewMode(graph ? ViewMode::Graph : ViewMode::Path);
+}
+
+void MainWindow::setViewMode(ViewMode mode) {
+    scene_->setViewMode(mode);
+    (mode == ViewMode::Path ? pathViewAction_ : graphViewAction_)->setChecked(true);
+    for (int i = 0; i < kOverlayKindCount; ++i)
+        overlayActions_[i]->setEnabled(mode == ViewMode::Graph ||
+                                       !isGraphOverlay(static_cast<OverlayKind>(i)));
+    legendDock_->setViewMode(mode);
+    QSettings().setValue(QStringLiteral("view/mode"), mode == ViewMode::Graph
+                                                          ? QStringLiteral("graph")
+                                                          : QStringLiteral("path"));
 }
 
 void MainWindow::createStatusBar() {

@@ -8,6 +8,7 @@
 #include "importers/Import.h"
 
 #include <QMainWindow>
+#include <QPageSize>
 #include <array>
 #include <memory>
 
@@ -50,6 +51,8 @@ public:
     TrainingDock* trainingDock() const { return trainingDock_; }
     TilingMode* tilingMode() const { return tilingMode_; }
     LegendDock* legendDock() const { return legendDock_; }
+    // Path or Graph view (View menu, Ctrl+1 and Ctrl+2; remembered).
+    void setViewMode(ViewMode mode);
     PathPreview* pathPreview() const { return preview_; }
     QAction* overlayAction(OverlayKind kind) const {
         return overlayActions_[static_cast<int>(kind)];
@@ -79,7 +82,7 @@ public:
     // The visible canvas as .png or .svg.
     bool exportView(const QString& path);
     // One-page PDF report of the plan, path, metrics and robot profile.
-    bool exportReport(const QString& path);
+    bool exportReport(const QString& path, const QPageSize& pageSize = QPageSize(QPageSize::A4));
     // Opens PLAN (or the sample), plans, and saves the whole window as a PNG.
     bool renderScreenshot(const QString& path, const QString& planPath, QString* error);
 
@@ -135,6 +138,8 @@ private:
     PlanningDock* planningDock_;
     TrainingDock* trainingDock_ = nullptr;
     LegendDock* legendDock_ = nullptr;
+    QAction* pathViewAction_ = nullptr;
+    QAction* graphViewAction_ = nullptr;
     PathPreview* preview_ = nullptr;
     TilingMode* tilingMode_ = nullptr;
     Autosaver* autosaver_;

@@ -11,6 +11,7 @@
 
 #include <QAction>
 #include <QApplication>
+#include <QDir>
 #include <QDragEnterEvent>
 #include <QDropEvent>
 #include <QFileDialog>
@@ -19,6 +20,7 @@
 #include <QMenu>
 #include <QMenuBar>
 #include <QMimeData>
+#include <QPageSize>
 #include <QPainter>
 #include <QSettings>
 #include <QStatusBar>
@@ -68,11 +70,28 @@ void MainWindow::createFileMenu() {
     file->addAction(tr("Export View as S&VG…"), this,
                     [this]() { exportViewWithDialog(QStringLiteral("svg")); });
     file->addAction(tr("Export &Report as PDF…"), this, [this]() {
+        // The page size is chosen with the file type and remembered like the other exports.
+        const QString a4 = tr("PDF report, A4 (*.pdf)"), a3 = tr("PDF report, A3 (*.pdf)");
+        QSettings settings;
+        QString filter =
+            settings.value(QStringLiteral("export/report/page")).toString() == QLatin1String("A3")
+                ? a3
+                : a4;
+        QString folder = settings.value(QStringLiteral("export/folder")).toString();
+        if (folder.isEmpty() || !QFileInfo(folder).isDir())
+            folder = QDir::homePath();
         const QString path = QFileDialog::getSaveFileName(
-            this, tr("Export Report"), document_->displayName() + QStringLiteral("-report.pdf"),
-            tr("PDF documents (*.pdf)"));
-        if (!path.isEmpty())
-            exportReport(withSuffix(path, QStringLiteral("pdf")));
+            this, tr("Export Report"),
+            QDir(folder).filePath(document_->displayName() + QStringLiteral("-report.pdf")),
+            a4 + QStringLiteral(";;") + a3, &filter);
+        if (path.isEmpty())
+            return;
+        const bool large = filter == a3;
+        settings.setValue(QStringLiteral("export/report/page"),
+                          large ? QStringLiteral("A3") : QStringLiteral("A4"));
+        settings.setValue(QStringLiteral("export/folder"), QFileInfo(path).absolutePath());
+        exportReport(withSuffix(path, QStringLiteral("pdf")),
+                     QPageSize(large ? QPageSize::A3 : QPageSize::A4));
     });
     file->addSeparator();
     file->addAction(tr("&Quit"), QKeySequence::Quit, this, &QWidget::close);
@@ -216,14 +235,14 @@ void MainWindow::exportViewWithDialog(const QString& suffix) {
         exportView(withSuffix(path, suffix));
 }
 
-bool MainWindow::exportReport(const QString& path) {
+bool MainWindow::exportReport(const QString& path, const QPageSize& pageSize) {
     const auto result = planner_->result();
     if (!result) {
         showError(tr("There is no plan to report: plan the current document first."));
         return false;
     }
     QString error;
-    if (!writePdfReport(path, *document_, *result, *scene_, &error)) {
+    if (!writePdfReport(path, *document_, *result, *scene_, pageSize, &error)) {
         showError(error);
         return false;
     }
