@@ -53,7 +53,9 @@ commands:
                 building model (.ifc .obj .gltf .glb .stl, cut at --height above --storey):
                 --out PLAN.geojson|PLAN.fcproj [--boundary-layers A,B] [--obstacle-layers C]
                 [--room-layers D] [--ignore-layers E] [--units M_PER_UNIT] [--gap M]
-                [--simplify M] [--epsg N] [--storey S] [--height H]; warnings on stderr,
+                [--simplify M] [--epsg N] [--storey S] [--height H] [--repair: a plan
+                with self-intersections, obstacles across the wall or overlapping rooms
+                is made valid (GEOS) instead of refused; what changed on stderr]; warnings on stderr,
                 one JSON line (areas, obstacles, rooms, warnings, start) on stdout;
                 occupancy maps are cleaned (what was removed under "cleaning"):
                 [--unknown wall|free] [--unknown-gap M2 (0.15): smaller unknown patches inside
@@ -302,9 +304,9 @@ int run(int argc, char** argv) {
     }
     const std::string command = argv[1];
     try {
-        const Arguments args(
-            argc, argv, 2,
-            {"--json", "--no-transition-cells", "--help", "--resume", "--strict", "--no-cleaning"});
+        const Arguments args(argc, argv, 2,
+                             {"--json", "--no-transition-cells", "--help", "--resume", "--strict",
+                              "--no-cleaning", "--repair"});
         if (args.has("--help")) {
             std::cout << kUsage;
             return 0;

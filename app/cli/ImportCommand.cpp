@@ -3,6 +3,7 @@
 #include "CliCommon.h"
 #include "formats/FileIO.h"
 #include "importers/Import.h"
+#include "model/Validation.h"
 
 #include <cstdio>
 #include <filesystem>
@@ -149,7 +150,7 @@ int commandImport(const Arguments& args) {
                     "--opening",       "--closing",         "--robot-diameter",
                     "--segment-rooms", "--min-room",        "--max-door",
                     "--straighten",    "--wall-band",       "--notch",
-                    "--unknown-gap"});
+                    "--unknown-gap",   "--repair"});
     if (args.positional().size() != 1)
         throw InputError("import needs exactly one FILE (see floorcover-cli --help)");
     const std::string& path = args.positional()[0];
@@ -159,11 +160,19 @@ int commandImport(const Arguments& args) {
     const std::string extension = std::filesystem::path(*out).extension().string();
     if (extension != ".geojson" && extension != ".fcproj")
         throw InputError("--out " + *out + ": expected a .geojson plan or a .fcproj project");
-    const ImportOptions options = optionsFrom(args);
+    ImportOptions options = optionsFrom(args);
+    options.keepInvalid = args.has("--repair");
     const ImportPreview preview = previewImport(path);
-    const ImportResult result = importPlanFile(path, options);
+    ImportResult result = importPlanFile(path, options);
     for (const std::string& w : result.warnings)
         std::cerr << "floorcover-cli: warning: " << path << ": " << w << "\n";
+    if (options.keepInvalid && !planProblems(result.project.plan, result.project.robot).empty()) {
+        std::vector<std::string> notes;
+        result.project.plan = normalizedPlan(repairPlan(result.project.plan, notes));
+        validatePlan(result.project.plan, result.project.robot); // still broken: refused
+        for (const std::string& note : notes)
+            std::cerr << "floorcover-cli: repaired: " << path << ": " << note << "\n";
+    }
     if (extension == ".geojson") {
         if (result.robotStartPose)
             std::cerr << "floorcover-cli: note: " << path

@@ -106,7 +106,13 @@ ImportResult importPlanFile(const std::string& path, const ImportOptions& option
         if (options.epsg)
             plan.epsg = options.epsg;
         plan = normalizedPlan(plan);
-        validatePlan(plan, result.project.robot);
+        try {
+            validatePlan(plan, result.project.robot);
+        } catch (const InputError& e) {
+            if (!options.keepInvalid || plan.boundary.size() < 3)
+                throw;
+            result.warnings.push_back(std::string("the plan needs repair: ") + e.what());
+        }
         if (result.robotStartPose) {
             const Vec2 start = *result.robotStartPose;
             const bool free = pointInRing(plan.boundary, start) &&

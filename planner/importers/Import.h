@@ -95,6 +95,9 @@ struct ImportOptions {
     MapCleaningOptions cleaning;
     RoomSegmentationOptions roomSegmentation;
     double robotDiameter = 0.6; // m: ties the cleaning radii to the robot
+    // An editor opens a plan that validatePlan refuses for repair (repairPlan); the
+    // problem is then a warning, not an error. The CLI keeps refusing.
+    bool keepInvalid = false;
 };
 
 // What the source held, for an import dialog to offer before the final import.
@@ -118,6 +121,15 @@ ImportResult importPlanFile(const std::string& path, const ImportOptions& option
 ImportPreview previewImport(const std::string& path);
 // Boundary area minus the obstacles' (which do not overlap in a valid plan), m^2.
 double freeAreaOf(const Plan& plan);
+
+// A plan that validatePlan refuses, made valid with GEOS (through GDAL's OGR): rings that
+// cross or touch themselves are split at the crossings (MakeValid), the free space is the
+// boundary minus the union of the obstacles (so obstacles that overlap, touch, cross the
+// wall or lie outside are merged, clipped or dropped), and only its largest connected part
+// is kept; rooms are made valid, clipped to the free space and to the rooms before them,
+// renamed when unnamed or duplicated. `notes` says in plain words what changed and how much
+// area it moved. Throws InputError when nothing plannable is left.
+Plan repairPlan(const Plan& plan, std::vector<std::string>& notes);
 
 // The extensions importPlanFile accepts (lower case, without the dot).
 std::vector<std::string> importableExtensions();

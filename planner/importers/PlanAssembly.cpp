@@ -27,6 +27,12 @@ Ring fromOgrRing(const OGRLinearRing& ring) {
     return out;
 }
 
+GeometryPtr shellPolygon(const Ring& shell) {
+    auto polygon = std::make_unique<OGRPolygon>();
+    polygon->addRingDirectly(toOgrRing(shell));
+    return polygon;
+}
+
 // A valid polygonal geometry for a ring (self-intersecting rings repaired by MakeValid).
 GeometryPtr polygonOf(const Ring& ring) {
     auto polygon = std::make_unique<OGRPolygon>();
@@ -104,6 +110,23 @@ Plan planFromPolygons(std::vector<Polygon2> polygons, const std::string& what,
     return plan;
 }
 
+// The plan of `free` minus the union of `obstacles`: its largest part (the others dropped
+// with a warning), shell as boundary and holes as obstacles.
+Plan freeSpacePlan(GeometryPtr free, const OGRMultiPolygon& obstacles,
+                   std::vector<std::string>& warnings) {
+    if (!obstacles.IsEmpty()) {
+        GeometryPtr merged(obstacles.UnionCascaded());
+        if (!merged)
+            throw InputError("the obstacles could not be merged (invalid geometry)");
+        free.reset(free->Difference(merged.get()));
+        if (!free)
+            throw InputError("the obstacles could not be cut out of the boundary");
+    }
+    std::vector<Polygon2> parts;
+    collectPolygons(free.get(), parts);
+    return planFromPolygons(std::move(parts), "free area", warnings);
+}
+
 Plan assemblePlan(const std::vector<Outline>& outlines, const std::vector<Label>& labels,
                   const LayerMapping& mapping, std::vector<std::string>& warnings) {
     std::vector<const Outline*> boundaryCandidates, rest, rooms;
@@ -148,26 +171,13 @@ Plan assemblePlan(const std::vector<Outline>& outlines, const std::vector<Label>
         }
         std::vector<Polygon2> parts;
         collectPolygons(p.get(), parts);
-        for (const Polygon2& part : parts) {
-            auto polygon = std::make_unique<OGRPolygon>();
-            polygon->addRingDirectly(toOgrRing(part.shell));
-            obstacles->addGeometryDirectly(polygon.release());
-        }
+        for (const Polygon2& part : parts)
+            obstacles->addGeometryDirectly(shellPolygon(part.shell).release());
     }
     if (outside > 0)
         warnings.push_back(std::to_string(outside) +
                            " closed outlines outside the boundary ignored");
-    if (!obstacles->IsEmpty()) {
-        GeometryPtr merged(obstacles->UnionCascaded());
-        if (!merged)
-            throw InputError("the obstacles could not be merged (invalid geometry)");
-        free.reset(free->Difference(merged.get()));
-        if (!free)
-            throw InputError("the obstacles could not be cut out of the boundary");
-    }
-    std::vector<Polygon2> parts;
-    collectPolygons(free.get(), parts);
-    Plan plan = planFromPolygons(std::move(parts), "free area", warnings);
+    Plan plan = freeSpacePlan(std::move(free), *obstacles, warnings);
 
     std::set<std::string> taken;
     size_t roomsOutside = 0;
@@ -183,6 +193,111 @@ Plan assemblePlan(const std::vector<Outline>& outlines, const std::vector<Label>
     if (roomsOutside > 0)
         warnings.push_back(std::to_string(roomsOutside) + " room outlines outside the boundary "
                                                           "ignored");
+    return plan;
+}
+
+namespace {
+
+std::string squareMetres(double area) {
+    std::ostringstream text;
+    text.precision(area < 10 ? 2 : 3);
+    text << area << " m2";
+    return text.str();
+}
+
+// The largest polygon of a geometry, or an empty one.
+Polygon2 largestPart(const OGRGeometry* g, size_t* partCount = nullptr) {
+    std::vector<Polygon2> parts;
+    collectPolygons(g, parts);
+    if (partCount)
+        *partCount = parts.size();
+    if (parts.empty())
+        return {};
+    return *std::max_element(parts.begin(), parts.end(), [](const Polygon2& a, const Polygon2& b) {
+        return areaOf(a) < areaOf(b);
+    });
+}
+
+} // namespace
+
+Plan repairBrokenPlan(const Plan& broken, std::vector<std::string>& notes) {
+    ensureGdal();
+    if (broken.boundary.size() < 3)
+        throw InputError("the plan has no boundary to repair");
+    GeometryPtr free = polygonOf(broken.boundary);
+    if (!free || free->IsEmpty())
+        throw InputError("the boundary encloses no area");
+    if (!shellPolygon(broken.boundary)->IsValid())
+        notes.push_back("the boundary crossed or touched itself: split where it does");
+    auto obstacles = std::make_unique<OGRMultiPolygon>();
+    size_t dropped = 0, selfCrossing = 0;
+    for (const Ring& ring : broken.obstacles) {
+        if (ring.size() < 3) {
+            ++dropped;
+            continue;
+        }
+        std::vector<Polygon2> parts;
+        GeometryPtr p = polygonOf(ring);
+        collectPolygons(p.get(), parts);
+        if (parts.empty())
+            ++dropped;
+        else if (!shellPolygon(ring)->IsValid())
+            ++selfCrossing;
+        for (const Polygon2& part : parts)
+            obstacles->addGeometryDirectly(shellPolygon(part.shell).release());
+    }
+    if (dropped > 0)
+        notes.push_back(std::to_string(dropped) + " obstacle(s) without area removed");
+    if (selfCrossing > 0)
+        notes.push_back(std::to_string(selfCrossing) +
+                        " obstacle(s) crossed themselves: split where they cross");
+    std::vector<std::string> warnings;
+    Plan plan = freeSpacePlan(std::move(free), *obstacles, warnings);
+    for (const std::string& w : warnings)
+        notes.push_back(w);
+    if (plan.obstacles.size() != broken.obstacles.size())
+        notes.push_back("obstacles merged, clipped to the boundary or joined to the wall: " +
+                        std::to_string(broken.obstacles.size()) + " before, " +
+                        std::to_string(plan.obstacles.size()) + " after");
+    plan.name = broken.name;
+    plan.epsg = broken.epsg;
+
+    // Rooms: valid, inside the free space, not over the rooms before them.
+    GeometryPtr freeArea = polygonOf(plan.boundary);
+    std::unique_ptr<OGRGeometry> claimed;
+    std::set<std::string> taken;
+    for (const Room& room : broken.rooms) {
+        const std::string label = room.name.find_first_not_of(" \t") == std::string::npos
+                                      ? "an unnamed room"
+                                      : "room \"" + room.name + "\"";
+        GeometryPtr p = room.outline.size() >= 3 ? polygonOf(room.outline) : nullptr;
+        if (p && !p->IsEmpty())
+            p.reset(p->Intersection(freeArea.get()));
+        if (p && claimed && !p->IsEmpty())
+            p.reset(p->Difference(claimed.get()));
+        size_t count = 0;
+        const Polygon2 part = p ? largestPart(p.get(), &count) : Polygon2{};
+        if (part.shell.size() < 3 || ringArea(part.shell) < 1e-6) {
+            notes.push_back(label + " lies outside the floor or under other rooms: removed");
+            continue;
+        }
+        const double before = ringArea(room.outline), after = ringArea(part.shell);
+        if (count > 1 || std::abs(after - before) > 1e-6 * std::max(1.0, before))
+            notes.push_back(label + " reshaped to fit the floor (" + squareMetres(before) +
+                            " before, " + squareMetres(after) + " after)");
+        std::string name = room.name.find_first_not_of(" \t") == std::string::npos
+                               ? "Room " + std::to_string(plan.rooms.size() + 1)
+                               : room.name;
+        const std::string base = name;
+        for (int n = 2; taken.count(name); ++n)
+            name = base + " " + std::to_string(n);
+        if (name != room.name)
+            notes.push_back(label + " renamed \"" + name + "\"");
+        taken.insert(name);
+        plan.rooms.push_back({name, part.shell});
+        GeometryPtr shell = shellPolygon(part.shell);
+        claimed.reset(claimed ? claimed->Union(shell.get()) : shell.release());
+    }
     return plan;
 }
 
@@ -244,3 +359,11 @@ ImportResult importWkt(const std::string& text, const ImportOptions& options) {
 }
 
 } // namespace fc::importing
+
+namespace fc {
+
+Plan repairPlan(const Plan& plan, std::vector<std::string>& notes) {
+    return importing::repairBrokenPlan(plan, notes);
+}
+
+} // namespace fc

@@ -9,6 +9,7 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/box_intersection_d.h>
 #include <algorithm>
+#include <cmath>
 #include <map>
 #include <tuple>
 
@@ -61,6 +62,7 @@ struct EdgeRef {
 struct Defect {
     std::tuple<int, int, int, int, int> key; // (ring a, ring b, kind, edge a, edge b)
     std::string message;
+    Vec2 where;
     bool operator<(const Defect& other) const { return key < other.key; }
 };
 
@@ -132,9 +134,11 @@ EdgeChecks checkEdges(const RingTable& table, double tolerance) {
                                        (pointSegmentDistance(after, shared, before) <= tolerance ||
                                         pointSegmentDistance(before, shared, after) <= tolerance);
                 if (foldsBack)
-                    result.selfIntersections.push_back(
-                        {spikeKey, table.name(e.ring) + " folds back on itself (a spike) at " +
-                                       formatPoint(shared)});
+                    result.selfIntersections.push_back({spikeKey,
+                                                        table.name(e.ring) +
+                                                            " folds back on itself (a spike) at " +
+                                                            formatPoint(shared),
+                                                        shared});
                 return;
             }
         } else if (!table.isFreeSpace(e.ring) || !table.isFreeSpace(f.ring)) {
@@ -149,21 +153,26 @@ EdgeChecks checkEdges(const RingTable& table, double tolerance) {
         const bool crossing = properlyCross(a, b, c, d);
         if (e.ring == f.ring) {
             result.selfIntersections.push_back(
-                {key, table.name(e.ring) +
-                          (crossing ? " intersects itself near " : " touches itself at ") +
-                          formatPoint(where)});
+                {key,
+                 table.name(e.ring) +
+                     (crossing ? " intersects itself near " : " touches itself at ") +
+                     formatPoint(where),
+                 where});
         } else if (e.ring == 0) {
             result.contacts.push_back(
                 {key,
                  table.name(f.ring) + (crossing ? " crosses the boundary near " + formatPoint(where)
                                                 : " touches the boundary at " + formatPoint(where) +
-                                                      "; obstacles must lie strictly inside it")});
+                                                      "; obstacles must lie strictly inside it"),
+                 where});
         } else {
-            result.contacts.push_back({key, "obstacles " + std::to_string(e.ring) + " and " +
-                                                std::to_string(f.ring) +
-                                                (crossing ? " overlap near " + formatPoint(where)
-                                                          : " touch at " + formatPoint(where) +
-                                                                "; merge them into one obstacle")});
+            result.contacts.push_back(
+                {key,
+                 "obstacles " + std::to_string(e.ring) + " and " + std::to_string(f.ring) +
+                     (crossing
+                          ? " overlap near " + formatPoint(where)
+                          : " touch at " + formatPoint(where) + "; merge them into one obstacle"),
+                 where});
         }
     };
     CGAL::box_self_intersection_d(boxes.begin(), boxes.end(), onPair);
@@ -366,6 +375,50 @@ void checkRooms(const Plan& plan, const RobotProfile& robot, double tolerance) {
 }
 
 } // namespace
+
+std::vector<PlanProblem> planProblems(const Plan& plan, const RobotProfile& robot, size_t limit) {
+    std::vector<PlanProblem> problems;
+    const auto add = [&](const std::string& message, const Vec2* where) {
+        if (problems.size() >= limit)
+            return;
+        PlanProblem problem;
+        problem.message = message;
+        if (where && std::isfinite(where->x) && std::isfinite(where->y)) {
+            problem.hasLocation = true;
+            problem.location = *where;
+        }
+        problems.push_back(std::move(problem));
+    };
+    const RingTable table(plan);
+    const int ringCount = static_cast<int>(table.rings.size());
+    const double tolerance = validation::planTolerance(plan);
+    bool shapesOk = true;
+    for (int r = 0; r < ringCount; ++r) {
+        try {
+            checkRingShape(*table.rings[r], table.name(r), tolerance);
+        } catch (const InputError& e) {
+            shapesOk = false;
+            const Ring& ring = *table.rings[r];
+            add(e.what(), ring.empty() ? nullptr : &ring.front());
+        }
+    }
+    if (shapesOk) {
+        EdgeChecks checks = checkEdges(table, tolerance);
+        for (auto* defects : {&checks.selfIntersections, &checks.contacts}) {
+            std::sort(defects->begin(), defects->end());
+            for (const Defect& defect : *defects)
+                add(defect.message, &defect.where);
+        }
+    }
+    if (problems.empty()) {
+        try {
+            validatePlan(plan, robot);
+        } catch (const InputError& e) {
+            add(e.what(), nullptr);
+        }
+    }
+    return problems;
+}
 
 void validatePlan(const Plan& plan, const RobotProfile& robot) {
     robot.validate();

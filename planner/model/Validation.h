@@ -3,6 +3,9 @@
 
 #include "model/Plan.h"
 
+#include <string>
+#include <vector>
+
 namespace fc {
 
 // Throws InputError with one line naming the problem, e.g.
@@ -12,6 +15,20 @@ namespace fc {
 // (no self-intersection), obstacles inside the boundary and not overlapping each other,
 // rooms simple and overlapping the free space, free area larger than the robot.
 void validatePlan(const Plan& plan, const RobotProfile& robot);
+
+// One defect of a plan, for an editor that lists and highlights them.
+struct PlanProblem {
+    std::string message; // as validatePlan would say it
+    bool hasLocation = false;
+    Vec2 location; // where to look (a crossing, a spike, the ring's first vertex)
+};
+
+// Every geometric defect validatePlan would stop at (ring shapes, self-intersections and
+// spikes, obstacles crossing, touching or overlapping the boundary or each other), at most
+// `limit` of them, in a stable order; when there are none, the first remaining problem
+// validatePlan reports (placement, free area, rooms), if any. Empty for a valid plan.
+std::vector<PlanProblem> planProblems(const Plan& plan, const RobotProfile& robot,
+                                      size_t limit = 200);
 
 // Light clean-up done before validation: drops repeated consecutive vertices and
 // vertices on a straight line between their neighbours. Returns the cleaned plan.

@@ -102,5 +102,14 @@ bad "3D model" "$work/house.ifc" --out "$work/x.fcproj"
 "$cli" import "$fixtures/office.dxf" --units -1 --out "$work/x.geojson" >/dev/null 2>&1
 [ $? -eq 2 ] || fail "--units -1 accepted"
 
+# A plan the planner refuses: refused as it is, made valid with --repair (issue 16, item 4).
+cat >"$work/crossing.wkt" <<'WKT'
+POLYGON ((0 0, 10 0, 10 8, 0 8, 0 0), (8 2, 12 2, 12 4, 8 4, 8 2))
+WKT
+bad "obstacle across the wall" "$work/crossing.wkt" --out "$work/x.geojson"
+"$cli" import "$work/crossing.wkt" --repair --out "$work/repaired.geojson" >"$work/out" 2>"$work/err" &&
+  grep -q "repaired:" "$work/err" && "$cli" plan "$work/repaired.geojson" >/dev/null 2>&1 ||
+  fail "--repair: $(cat "$work/err")"
+
 [ "$failed" -eq 0 ] && echo "import CLI: all checks passed"
 exit "$failed"

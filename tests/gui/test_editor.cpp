@@ -291,7 +291,8 @@ void EditorTest::brokenFileKeepsDocument() {
     window->openSample();
     Document* before = window->document();
     const size_t rooms = before->plan().rooms.size();
-    for (const char* name : {"selfintersecting.geojson", "truncated.geojson", "bad-robot.fcproj"}) {
+    // (A plan that parses but is invalid opens for repair: gui_repair.)
+    for (const char* name : {"truncated.geojson", "nan.geojson", "bad-robot.fcproj"}) {
         const QString path = QStringLiteral(FC_TEST_DATA_DIR "/") + QLatin1String(name);
         QVERIFY2(!window->openFile(path), name);
         QCOMPARE(window->document(), before);

@@ -7,6 +7,7 @@
 #include "tasks/PlanningController.h"
 
 #include <QBrush>
+#include <QGraphicsEllipseItem>
 #include <QGraphicsItemGroup>
 #include <QGraphicsPathItem>
 #include <QGraphicsSimpleTextItem>
@@ -199,7 +200,35 @@ void PlanScene::rebuildPolygons() {
         item->setZValue(z::Walls);
     }
     setHighlight(highlight_);
+    rebuildProblems();
     layoutLabels();
+}
+
+void PlanScene::setProblemFocus(std::optional<QPointF> point) {
+    problemFocus_ = point;
+    rebuildProblems();
+}
+
+void PlanScene::rebuildProblems() {
+    delete problems_;
+    problems_ = new QGraphicsItemGroup;
+    problems_->setZValue(z::Markers - 1);
+    addItem(problems_);
+    if (!document_ || !document_->needsRepair())
+        return;
+    for (const PlanProblem& problem : document_->problems()) {
+        if (!problem.hasLocation)
+            continue;
+        const QPointF at = toQt(problem.location);
+        const bool focused = problemFocus_ && QLineF(*problemFocus_, at).length() < 1e-9;
+        const double radius = focused ? 16.0 : 10.0; // pixels
+        auto* ring = new QGraphicsEllipseItem(-radius, -radius, 2 * radius, 2 * radius, problems_);
+        ring->setPen(QPen(QColor(220, 20, 20), focused ? 4.0 : 2.5));
+        ring->setBrush(QColor(220, 20, 20, 40));
+        ring->setPos(at);
+        ring->setFlag(QGraphicsItem::ItemIgnoresTransformations);
+        ring->setToolTip(fromStd(problem.message));
+    }
 }
 
 void PlanScene::rebuildMarkers() {

@@ -50,6 +50,10 @@ public:
     // `pixelRatio` device pixels each; the view mode and labels are restored afterwards.
     QImage renderPathView(QSize size, double pixelRatio);
 
+    // A plan that needs repair: its problems are circled in red; the focused one (clicked
+    // in the Problems panel) is drawn larger.
+    void setProblemFocus(std::optional<QPointF> point);
+
     // Redraws everything in the colours of the current application palette (dark or light
     // theme switched while running).
     void restyle();
@@ -63,6 +67,7 @@ public:
 private:
     void rebuildPolygons();
     void rebuildMarkers();
+    void rebuildProblems();
     void updateSceneRect();
 
     QPointer<Document> document_;
@@ -70,6 +75,8 @@ private:
     OverlayLayer* overlays_;
     QGraphicsItemGroup* polygons_ = nullptr;
     QGraphicsItemGroup* markers_ = nullptr;
+    QGraphicsItemGroup* problems_ = nullptr;
+    std::optional<QPointF> problemFocus_;
     QGraphicsItem* highlightItem_ = nullptr;
     std::optional<PolygonRef> highlight_;
 };

@@ -252,6 +252,7 @@ bool ImportDialog::openAsNewDocument() const {
 
 ImportOptions ImportDialog::options() const {
     ImportOptions options;
+    options.keepInvalid = true; // opened for repair in the editor
     if (units_->isEnabled())
         options.metresPerUnit = units_->value();
     options.gapTolerance = gap_->value();

@@ -2,6 +2,7 @@
 
 #include "document/Conversions.h"
 #include "document/ProjectChangeCommand.h"
+#include "importers/Import.h"
 #include "model/Validation.h"
 
 #include <QFileInfo>
@@ -28,6 +29,52 @@ Document::Document(Project project, QObject* parent)
     : QObject(parent), project_(std::move(project)), undoStack_(new QUndoStack(this)) {
     connect(undoStack_, &QUndoStack::cleanChanged, this,
             [this](bool clean) { emit modifiedChanged(!clean); });
+    updateProblems();
+}
+
+void Document::updateProblems() {
+    problems_.clear();
+    if (!project_.plan.boundary.empty())
+        // The plan's own defects: a robot too large for the floor is the robot's problem
+        // (the planner says so), not a reason to lock the plan.
+        problems_ = planProblems(normalizedPlan(project_.plan), RobotProfile{});
+}
+
+bool Document::repair(QStringList* notes) {
+    if (!needsRepair())
+        return true;
+    Project changed = project_;
+    std::vector<std::string> changes;
+    try {
+        changed.plan = normalizedPlan(repairPlan(project_.plan, changes));
+    } catch (const InputError& e) {
+        return reject(tr("The plan cannot be repaired automatically: %1").arg(fromStd(e.what())));
+    }
+    const QString problem = validationMessage(changed.plan);
+    if (!problem.isEmpty())
+        return reject(tr("The automatic repair left a problem: %1").arg(problem));
+    // Rooms renamed or removed by the repair leave the selection.
+    std::vector<std::string> selected;
+    for (const std::string& name : changed.selectedRooms)
+        for (const Room& room : changed.plan.rooms)
+            if (room.name == name)
+                selected.push_back(name);
+    changed.selectedRooms = selected;
+    const auto inFree = [&](Vec2 p) {
+        return pointInRing(changed.plan.boundary, p) &&
+               std::none_of(changed.plan.obstacles.begin(), changed.plan.obstacles.end(),
+                            [&](const Ring& o) { return pointInRing(o, p); });
+    };
+    if (changed.hasStart && !inFree(changed.start))
+        changed.hasStart = false;
+    if (changed.hasEnd && !inFree(changed.end))
+        changed.hasEnd = false;
+    if (notes) {
+        notes->clear();
+        for (const std::string& note : changes)
+            notes->push_back(fromStd(note));
+    }
+    return pushChange(changed, GeometryChange | RoomsChange | EndpointsChange, tr("Repair plan"));
 }
 
 Document::~Document() = default;
@@ -131,6 +178,9 @@ bool Document::reject(const QString& message) {
 
 bool Document::pushChange(const Project& changed, unsigned changes, const QString& text,
                           int mergeId) {
+    if (needsRepair() && !validationMessage(changed.plan).isEmpty())
+        return reject(tr("This plan has problems (see the Problems panel): repair it first "
+                         "with Plan > Repair Plan, or undo back to a valid plan."));
     if (changes & (GeometryChange | RoomsChange)) {
         const QString problem = validationMessage(changed.plan);
         if (!problem.isEmpty())
@@ -149,6 +199,8 @@ bool Document::replaceProject(const Project& project, const QString& commandText
 
 void Document::applyProject(const Project& project, unsigned changes) {
     project_ = project;
+    if (changes & (GeometryChange | RoomsChange))
+        updateProblems();
     if (changes & GeometryChange)
         emit geometryChanged();
     if (changes & RoomsChange)

@@ -4,6 +4,7 @@
 #pragma once
 
 #include "formats/PlanIO.h"
+#include "model/Validation.h"
 
 #include <QObject>
 #include <QString>
@@ -63,6 +64,15 @@ public:
     // The room under a point (the last drawn wins), or "Floor" inside a plan without rooms.
     std::optional<QString> roomAt(Vec2 point) const;
 
+    // A plan the planner refuses (opened or imported with self-intersections, obstacles
+    // across the wall...) is held read-only: its problems are listed and shown, and only an
+    // edit that makes it valid is accepted: repair() or a fix that removes every problem.
+    bool needsRepair() const { return !problems_.empty(); }
+    const std::vector<PlanProblem>& problems() const { return problems_; }
+    // Makes the plan valid (fc::repairPlan, GEOS) as one undoable edit; *notes says what
+    // changed. False (and editRejected) when the repair cannot make it valid.
+    bool repair(QStringList* notes = nullptr);
+
     // The planner's validation of a candidate plan; empty when it is acceptable. A plan
     // without a boundary is accepted only while it is still empty (a new drawing).
     QString validationMessage(const Plan& plan) const;
@@ -111,7 +121,10 @@ private:
     bool reject(const QString& message);
     QString uniqueRoomName() const;
 
+    void updateProblems();
+
     Project project_;
+    std::vector<PlanProblem> problems_;
     QUndoStack* undoStack_;
     QString fileName_;
 };

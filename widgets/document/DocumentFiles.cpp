@@ -3,7 +3,6 @@
 #include "document/Conversions.h"
 #include "document/Document.h"
 #include "formats/FileIO.h"
-#include "model/Validation.h"
 
 #include <QCoreApplication>
 #include <QDir>
@@ -47,10 +46,9 @@ std::unique_ptr<Document> loadDocument(const QString& path, QString* error) {
         Project project = path.startsWith(QLatin1Char(':')) ? loadResource(path)
                                                             : loadProjectFile(path.toStdString());
         try {
-            // A file that parses but cannot be planned is refused like a broken one: the
-            // editor only ever holds plans the planner accepts.
+            // A plan the planner refuses still opens, read-only with its problems listed
+            // (Document::needsRepair), so that it can be repaired rather than lost.
             project.robot.validate();
-            validatePlan(normalizedPlan(project.plan), project.robot);
         } catch (const InputError& e) {
             throw InputError(path.toStdString() + ": " + e.what());
         }

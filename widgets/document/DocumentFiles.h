@@ -12,7 +12,8 @@ class Document;
 extern const char* const kSamplePlanPath;
 
 // Reads a .fcproj project or a .geojson/.json plan (also from Qt resources, ":/..."),
-// validates plan and robot profile, and returns a new document. On failure returns null
+// validates the robot profile, and returns a new document (a plan with problems opens
+// needing repair, see Document::needsRepair). On failure returns null
 // and sets *error to a one-line message naming the file.
 std::unique_ptr<Document> loadDocument(const QString& path, QString* error);
 

@@ -160,10 +160,12 @@ void PlanningController::startPrepare() {
         return;
     }
     const Project project = document_->project();
-    if (project.plan.boundary.empty()) {
+    if (project.plan.boundary.empty() || document_->needsRepair()) {
         prepared_.reset();
         emit preparedChanged();
-        setError(QString()); // a new drawing, not a mistake: the dock shows a hint
+        // A new drawing is not a mistake (the dock shows a hint); a broken plan waits for
+        // its repair.
+        setError(document_->needsRepair() ? repairFirstMessage() : QString());
         updateBusy();
         return;
     }
@@ -213,7 +215,8 @@ void PlanningController::startPrepare() {
 void PlanningController::startDraft() {
     pendingReplan_ = false;
     // Nothing to draw yet, or the full plan of this very state is already on its way.
-    if (!document_ || document_->plan().boundary.empty() || (planTask_ && plannedEdit_ == edits_)) {
+    if (!document_ || document_->plan().boundary.empty() || document_->needsRepair() ||
+        (planTask_ && plannedEdit_ == edits_)) {
         updateBusy();
         return;
     }
@@ -251,9 +254,18 @@ void PlanningController::startDraft() {
     updateBusy();
 }
 
+QString PlanningController::repairFirstMessage() {
+    return tr("This plan has problems: repair it first (Plan > Repair Plan, or the button in "
+              "the Problems panel).");
+}
+
 void PlanningController::plan() {
     if (!document_)
         return;
+    if (document_->needsRepair()) {
+        setError(repairFirstMessage());
+        return;
+    }
     PlanRequest request = planRequestFor(document_->project());
     request.modelPath = modelPath_;
     plannedEdit_ = edits_;

@@ -94,6 +94,7 @@ signals:
     void busyChanged(bool busy);
 
 private:
+    static QString repairFirstMessage();
     void startPrepare();
     void startDraft();
     void scheduleReplan(bool queryOnly);

@@ -8,6 +8,7 @@
 #include "docks/LegendDock.h"
 #include "docks/PathPreviewBar.h"
 #include "docks/PlanningDock.h"
+#include "docks/ProblemsDock.h"
 #include "docks/TrainingDock.h"
 #include "document/Autosaver.h"
 #include "document/Document.h"
@@ -68,6 +69,13 @@ MainWindow::MainWindow(QWidget* parent)
     });
     connect(trainingDock_, &TrainingDock::modelReady, planner_, &PlanningController::setModelPath);
     tilingMode_ = new TilingMode(this, scene_);
+    problemsDock_ = new ProblemsDock(this);
+    addDockWidget(Qt::RightDockWidgetArea, problemsDock_);
+    problemsDock_->hide(); // shown when a plan needs repair
+    connect(problemsDock_, &ProblemsDock::locate, this, [this](QPointF at) {
+        view_->centerOn(at);
+        scene_->setProblemFocus(at);
+    });
 
     createTools();
     createMenus();
@@ -163,6 +171,7 @@ void MainWindow::createMenus() {
         planner_->setLiveReplanning(on);
         QSettings().setValue(QStringLiteral("planning/live"), on);
     });
+    planMenu->addAction(problemsDock_->repairAction());
     planMenu->addSeparator();
     planMenu->addAction(tilingMode_->action());
 
@@ -245,6 +254,7 @@ void MainWindow::createViewMenu() {
     viewMenu->addAction(legendDock_->toggleViewAction());
     viewMenu->addAction(history->toggleViewAction());
     viewMenu->addAction(trainingDock_->toggleViewAction());
+    viewMenu->addAction(problemsDock_->toggleViewAction());
     const bool graph =
         QSettings().value(QStringLiteral("view/mode")).toString() == QLatin1String("graph");
     setViewMode(graph ? ViewMode::Graph : ViewMode::Path);
@@ -287,6 +297,7 @@ void MainWindow::setDocument(std::unique_ptr<Document> document) {
     planner_->setDocument(doc);
     tilingMode_->setDocument(doc);
     planningDock_->setDocument(doc);
+    problemsDock_->setDocument(doc);
     tools_->setContext(doc, scene_);
     autosaver_->setDocument(doc);
     connect(doc, &Document::modifiedChanged, this, &MainWindow::updateTitle);

@@ -23,6 +23,7 @@ class CanvasView;
 class Autosaver;
 class Document;
 class LegendDock;
+class ProblemsDock;
 class PathPreview;
 class PlanScene;
 class PlanningController;
@@ -51,6 +52,7 @@ public:
     TrainingDock* trainingDock() const { return trainingDock_; }
     TilingMode* tilingMode() const { return tilingMode_; }
     LegendDock* legendDock() const { return legendDock_; }
+    ProblemsDock* problemsDock() const { return problemsDock_; }
     // Path or Graph view (View menu, Ctrl+1 and Ctrl+2; remembered).
     void setViewMode(ViewMode mode);
     PathPreview* pathPreview() const { return preview_; }
@@ -138,6 +140,7 @@ private:
     PlanningDock* planningDock_;
     TrainingDock* trainingDock_ = nullptr;
     LegendDock* legendDock_ = nullptr;
+    ProblemsDock* problemsDock_ = nullptr;
     QAction* pathViewAction_ = nullptr;
     QAction* graphViewAction_ = nullptr;
     PathPreview* preview_ = nullptr;

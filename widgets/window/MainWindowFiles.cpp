@@ -261,6 +261,10 @@ bool MainWindow::renderScreenshot(const QString& path, const QString& planPath, 
         *error = lastError_;
         return false;
     }
+    if (document_->needsRepair()) { // the editor would open it for repair; nothing to plan
+        *error = tr("%1: %2").arg(planPath, fromStd(document_->problems().front().message));
+        return false;
+    }
     if (!planner_->planAndWait()) {
         *error = tr("planning failed: %1").arg(planner_->errorMessage());
         return false;

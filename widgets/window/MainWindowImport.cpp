@@ -4,6 +4,7 @@
 #include "dialogs/ImportDialog.h"
 #include "document/Conversions.h"
 #include "document/Document.h"
+#include "model/Validation.h"
 #include "window/MainWindow.h"
 
 #include <QFileDialog>
@@ -50,6 +51,14 @@ void MainWindow::importWithDialog() {
 bool MainWindow::applyImport(const QString& path, const ImportResult& imported,
                              bool asNewDocument) {
     const QString name = QFileInfo(path).fileName();
+    // A plan with problems always comes as a new document, read-only until repaired: the
+    // current one stays as it is.
+    if (!asNewDocument &&
+        !planProblems(normalizedPlan(imported.project.plan), RobotProfile{}).empty()) {
+        if (!maybeSave())
+            return false;
+        asNewDocument = true;
+    }
     if (asNewDocument) {
         auto document = std::make_unique<Document>(imported.project);
         document->markModified(); // nothing saved yet: closing asks
