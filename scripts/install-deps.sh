@@ -14,6 +14,8 @@ packages=(
   gdal-bin python3 python3-yaml libxml2-utils qpdf
   # the editor tested on a real X server with a window manager (tests/gui/run_under_x11.sh)
   xvfb openbox
+  # Qt's own dialogs in the user's language (widgets/window/Translations.cpp)
+  qt6-translations-l10n
   # import/export fixtures and validators (issue 5): a CAD library writing DXF, third-party
   # DXF edge cases and 3D models, a JSON-schema validator, clang for the libFuzzer targets
   python3-ezdxf openscad-testing-data assimp-testmodels python3-jsonschema clang

@@ -72,7 +72,9 @@ int main(int argc, char** argv) {
     // A plan named on the command line, else what a crashed session left, else the sample.
     if (!planPath.isEmpty() && window.openFile(planPath))
         return QApplication::exec();
-    if (!window.recoverAutosave())
+    if (!window.recoverAutosave()) {
         window.openSample();
+        window.showWelcomeAtStart(); // a first start: the samples and the ways to begin
+    }
     return QApplication::exec();
 }

@@ -90,7 +90,7 @@ void EditorTest::invalidGeometryIsRefusedWithMessage() {
     // Crosses the boundary: the planner's validation refuses it.
     drag(*window, {18, 10}, {23, 12});
     QCOMPARE(window->document()->plan().obstacles.size(), size_t(1));
-    QVERIFY2(window->lastError().contains(QLatin1String("obstacle")),
+    QVERIFY2(window->lastError().contains(QLatin1String("Obstacle")),
              qPrintable(window->lastError()));
     auto* tool = qobject_cast<DrawPolygonTool*>(window->toolManager()->activeTool());
     QVERIFY(tool);

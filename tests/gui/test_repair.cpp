@@ -46,7 +46,9 @@ private slots:
         ProblemsDock* dock = window->problemsDock();
         QVERIFY(dock->isVisible());
         QVERIFY(dock->list()->count() >= 1);
-        QVERIFY(dock->list()->item(0)->text().contains(QStringLiteral("boundary")));
+        // In the editor's words ("the outer wall"), not the planner's ("the boundary").
+    QVERIFY2(dock->list()->item(0)->text().contains(QStringLiteral("outer wall")),
+             qPrintable(dock->list()->item(0)->text()));
         QVERIFY(problemRings(*window) >= 1);
         QVERIFY(dock->repairAction()->isEnabled());
 

@@ -14,6 +14,7 @@
 #include "modes/tiling/TilingMode.h"
 #include "tasks/PlanningController.h"
 #include "tiling/ppo/PpoOrdering.h"
+#include "window/WelcomeDialog.h"
 
 #include <QAction>
 #include <QDir>
@@ -141,6 +142,15 @@ private slots:
         window_ = makeWindow();
         window_->showMaximized();
         QVERIFY(QTest::qWaitForWindowExposed(window_.get()));
+    }
+
+    void welcomesAFirstStart() {
+        window_->showWelcome();
+        auto* welcome = window_->findChild<WelcomeDialog*>();
+        QVERIFY(welcome);
+        QVERIFY(QTest::qWaitForWindowExposed(welcome));
+        screenshot(QStringLiteral("00-welcome"));
+        welcome->close();
     }
 
     void opensTheSampleAndPlansIt() {

@@ -55,6 +55,35 @@ QString overlayName(OverlayKind kind) {
     return QCoreApplication::translate("fc::ui::OverlayLayer", names[static_cast<int>(kind)]);
 }
 
+QString overlayDescription(OverlayKind kind) {
+    const char* texts[kOverlayKindCount] = {
+        QT_TRANSLATE_NOOP("fc::ui::OverlayLayer",
+                          "The cells the floor is split into, one colour per room, with their "
+                          "numbers"),
+        QT_TRANSLATE_NOOP("fc::ui::OverlayLayer",
+                          "Narrow strips between cells the robot passes through (hatched)"),
+        QT_TRANSLATE_NOOP("fc::ui::OverlayLayer",
+                          "Where the floor's shape changes and one cell ends (dashed)"),
+        QT_TRANSLATE_NOOP("fc::ui::OverlayLayer",
+                          "The cells' corners, where the path may enter or leave a cell"),
+        QT_TRANSLATE_NOOP("fc::ui::OverlayLayer",
+                          "Which corners a cell's stripes join (entry and exit pairs)"),
+        QT_TRANSLATE_NOOP("fc::ui::OverlayLayer", "Moves along a cell's edge between its corners"),
+        QT_TRANSLATE_NOOP("fc::ui::OverlayLayer", "Moves from one cell to the next"),
+        QT_TRANSLATE_NOOP("fc::ui::OverlayLayer",
+                          "The robot's path: cleaning stripes in red, transit moves dashed, "
+                          "arrows for the direction"),
+        QT_TRANSLATE_NOOP("fc::ui::OverlayLayer",
+                          "Where the path passes over floor it has already cleaned (blue)"),
+        QT_TRANSLATE_NOOP("fc::ui::OverlayLayer",
+                          "Floor the robot cannot reach: gaps narrower than the robot, corners "
+                          "beyond its head"),
+        QT_TRANSLATE_NOOP("fc::ui::OverlayLayer",
+                          "Spots the robot could clean but the path misses"),
+    };
+    return QCoreApplication::translate("fc::ui::OverlayLayer", texts[static_cast<int>(kind)]);
+}
+
 OverlayStyle overlayStyle(OverlayKind kind) {
     switch (kind) {
     case OverlayKind::PrimaryCells: // each room has its own hue; this is the first one

@@ -42,6 +42,8 @@ constexpr int kOverlayKindCount = 11;
 
 // Menu text of an overlay kind (translated).
 QString overlayName(OverlayKind kind);
+// What an overlay kind shows, in a sentence (translated; the legend's tooltips).
+QString overlayDescription(OverlayKind kind);
 // How an overlay kind is drawn (also the legend's swatches).
 struct OverlayStyle {
     QPen pen;

@@ -97,6 +97,9 @@ CompareDialog::CompareDialog(PlanRequest request, QWidget* parent)
     stop_ = buttons->addButton(tr("Stop"), QDialogButtonBox::ActionRole);
     stop_->setToolTip(tr("Stop comparing; solvers that answered stay in the table"));
     stop_->setEnabled(false);
+    if (QPushButton* close = buttons->button(QDialogButtonBox::Close))
+        close->setToolTip(tr("Close; a comparison still running is cancelled at once"));
+    table_->setToolTip(tr("One row per solver; hover a column's title for what it means."));
     connect(stop_, &QPushButton::clicked, this, &CompareDialog::cancel);
     connect(buttons, &QDialogButtonBox::rejected, this, &QDialog::reject);
     layout->addWidget(buttons);

@@ -66,6 +66,14 @@ ImportDialog::ImportDialog(const QString& path, QWidget* parent)
     view_->setMinimumSize(360, 260);
     view_->scale(1, -1); // y up, as on the canvas
     summary_->setWordWrap(true);
+    layerTable_->setToolTip(tr("The drawing's layers: choose what each holds (walls, obstacles, "
+                               "rooms, or nothing to import)."));
+    units_->setToolTip(tr("How many metres one drawing unit is (0.001 for a drawing in mm)."));
+    gap_->setToolTip(tr("Lines whose ends are at most this far apart are joined into closed "
+                        "outlines."));
+    warnings_->setToolTip(tr("What the import left out or guessed, and why."));
+    newDocument_->setToolTip(tr("Open the import as its own document instead of replacing the "
+                                "plan of the current one."));
 
     auto* form = new QFormLayout;
     form->addRow(tr("Units:"), units_);
@@ -115,6 +123,8 @@ QGroupBox* ImportDialog::buildMapGroup() {
     unknown_ = new QComboBox(mapGroup_);
     unknown_->addItem(tr("Walls"), false);
     unknown_->addItem(tr("Floor"), true);
+    unknown_->setToolTip(tr("What the map's unknown (grey) cells are: walls, or floor the robot "
+                            "may clean."));
     auto spin = [this](double value, double max, const QString& suffix, const QString& tip) {
         auto* box = new QDoubleSpinBox(mapGroup_);
         box->setDecimals(3);
@@ -147,6 +157,8 @@ QGroupBox* ImportDialog::buildMapGroup() {
     rooms_->addItem(tr("At doorways (morphological)"),
                     static_cast<int>(RoomSegmentationMethod::Morphological));
     rooms_->addItem(tr("One room"), static_cast<int>(RoomSegmentationMethod::None));
+    rooms_->setToolTip(tr("How the map's free space is split into rooms: at doorways (two "
+                          "methods), or kept as one room."));
     minRoom_ = spin(defaults.roomSegmentation.minRoomArea, 1000, tr(" m²"),
                     tr("Smaller rooms (alcoves, door recesses) join a neighbour"));
     auto* form = new QFormLayout(mapGroup_);
@@ -197,6 +209,7 @@ void ImportDialog::buildLayerTable(const ImportPreview& preview) {
         name->setFlags(name->flags() & ~Qt::ItemIsEditable);
         layerTable_->setItem(row, 0, name);
         auto* combo = new QComboBox(layerTable_);
+        combo->setToolTip(tr("What layer %1 holds").arg(layer));
         for (const QString& role : kRoles)
             combo->addItem(roleLabel(role), role);
         const QString guess = fromStd(guessLayerRole(layer.toStdString()));

@@ -15,6 +15,7 @@ PreferencesDialog::PreferencesDialog(QWidget* parent) : QDialog(parent) {
     for (const auto& [code, name] : availableLanguages())
         language_->addItem(name, code);
     language_->setCurrentIndex(std::max(0, language_->findData(languageSetting())));
+    language_->setToolTip(tr("The language of the editor, its messages and Qt's dialogs"));
     auto* note = new QLabel(tr("The language changes at the next start of FloorCover."));
     note->setWordWrap(true);
     auto* buttons = new QDialogButtonBox(QDialogButtonBox::Ok | QDialogButtonBox::Cancel);

@@ -82,6 +82,7 @@ LegendDock::LegendDock(const std::array<QAction*, kOverlayKindCount>& actions, Q
         auto* picture = new QLabel;
         picture->setPixmap(swatch(kind));
         auto* box = new QCheckBox(overlayName(kind));
+        box->setToolTip(overlayDescription(kind));
         QAction* action = actions[i];
         box->setChecked(action->isChecked());
         connect(box, &QCheckBox::toggled, action, &QAction::setChecked);

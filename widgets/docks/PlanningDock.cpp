@@ -2,6 +2,7 @@
 
 #include "document/Conversions.h"
 #include "document/Document.h"
+#include "document/PlannerMessages.h"
 #include "pipeline/PerRoomSweep.h"
 #include "tasks/PlanningController.h"
 
@@ -97,6 +98,13 @@ QWidget* PlanningDock::createRobotGroup() {
     width_ = spinBox(0.05, 10, 0.05, tr(" m"));
     speed_ = spinBox(0.01, 10, 0.05, tr(" m/s"));
     turnTime_ = spinBox(0, 60, 0.5, tr(" s"), 1);
+    robotDiameter_->setToolTip(tr("The robot's body, L: its centre keeps L/2 from walls, and "
+                                  "doors narrower than L are not passed."));
+    cleaningDiameter_->setToolTip(tr("The width the cleaning head reaches, D (at least W)."));
+    width_->setToolTip(tr("Distance between neighbouring stripes, W (between L and D): smaller "
+                          "overlaps more, larger risks gaps."));
+    speed_->setToolTip(tr("Driving speed, for the estimated time."));
+    turnTime_->setToolTip(tr("Seconds the robot needs to turn by 90°, for the estimated time."));
     form->addRow(tr("Robot diameter L"), robotDiameter_);
     form->addRow(tr("Cleaning diameter D"), cleaningDiameter_);
     form->addRow(tr("Coverage width W"), width_);
@@ -130,6 +138,12 @@ QWidget* PlanningDock::createSweepGroup() {
     solver_ = new QComboBox;
     for (const std::string& name : solverNames())
         solver_->addItem(fromStd(name));
+    solver_->setToolTip(tr("How the order of the cells is chosen: heuristic is fast and close "
+                           "to the best; exact proves the best order on small floors; greedy "
+                           "is the quickest sketch; dqn uses the model trained in the Training "
+                           "panel."));
+    angle_->setToolTip(tr("The stripes' direction in degrees (90 = vertical), for One angle "
+                          "for the floor."));
     form->addRow(tr("Sweep"), sweepMode_);
     form->addRow(tr("Stripe angle"), angle_);
     form->addRow(roomAngles_);
@@ -439,7 +453,7 @@ void PlanningDock::refreshStatus() {
     if (const auto result = controller_->result(); result && !result->warnings.empty()) {
         QStringList lines;
         for (const std::string& warning : result->warnings)
-            lines << fromStd(warning);
+            lines << plainMessage(fromStd(warning));
         status_->setStyleSheet(QStringLiteral("color: #d03030"));
         status_->setText(lines.join(QLatin1Char('\n')));
     }

@@ -2,6 +2,7 @@
 
 #include "document/Conversions.h"
 #include "document/Document.h"
+#include "document/PlannerMessages.h"
 
 #include <QAction>
 #include <QLabel>
@@ -87,7 +88,7 @@ void ProblemsDock::refresh() {
                "nothing is lost; repair it to plan.",
                nullptr, static_cast<int>(problems.size())));
         for (const PlanProblem& problem : problems) {
-            auto* item = new QListWidgetItem(fromStd(problem.message), list_);
+            auto* item = new QListWidgetItem(plainMessage(fromStd(problem.message)), list_);
             if (problem.hasLocation)
                 item->setData(kLocationRole, toQt(problem.location));
         }

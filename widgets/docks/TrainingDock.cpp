@@ -68,6 +68,10 @@ void TrainingDock::buildUi() {
     startButton_ = new QPushButton(tr("Start"), body);
     pauseButton_ = new QPushButton(tr("Pause"), body);
     stopButton_ = new QPushButton(tr("Stop"), body);
+    startButton_->setToolTip(tr("Train the learnt planner (solver dqn) for this plan in the "
+                                "background; the curve shows its reward per episode."));
+    pauseButton_->setToolTip(tr("Pause training and keep the model so far; Resume goes on."));
+    stopButton_->setToolTip(tr("End training; the model so far is kept for solver dqn."));
     controls->addWidget(setting_);
     controls->addWidget(budget_);
     controls->addWidget(startButton_);
@@ -110,6 +114,9 @@ void TrainingDock::buildUi() {
     auto* files = new QHBoxLayout;
     saveButton_ = new QPushButton(tr("Save Model…"), body);
     loadButton_ = new QPushButton(tr("Load Model…"), body);
+    saveButton_->setToolTip(tr("Save the trained model to a .fcdqn file (saving the project "
+                               "also saves it beside the project)."));
+    loadButton_->setToolTip(tr("Load a model trained for this plan from a .fcdqn file."));
     evaluateButton_ = new QPushButton(tr("Evaluate"), body);
     evaluateButton_->setToolTip(tr("Plan the model's test queries with it and compare with the "
                                    "exact or heuristic solver"));

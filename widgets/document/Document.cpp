@@ -1,6 +1,7 @@
 #include "document/Document.h"
 
 #include "document/Conversions.h"
+#include "document/PlannerMessages.h"
 #include "document/ProjectChangeCommand.h"
 #include "importers/Import.h"
 #include "model/Validation.h"
@@ -166,7 +167,7 @@ QString Document::validationMessage(const Plan& plan) const {
     try {
         validatePlan(normalizedPlan(plan), project_.robot);
     } catch (const InputError& e) {
-        return fromStd(e.what());
+        return plainMessage(fromStd(e.what())); // in the editor's words and language
     }
     return {};
 }

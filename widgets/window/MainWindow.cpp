@@ -175,13 +175,7 @@ void MainWindow::createMenus() {
     planMenu->addSeparator();
     planMenu->addAction(tilingMode_->action());
 
-    QMenu* help = menuBar()->addMenu(tr("&Help"));
-    help->addAction(tr("&About FloorCover"), this, [this]() {
-        QMessageBox::about(this, tr("About FloorCover"),
-                           tr("FloorCover %1\nCoverage path planning for cleaning and "
-                              "disinfection robots.")
-                               .arg(QApplication::applicationVersion()));
-    });
+    createHelpMenu();
 }
 
 void MainWindow::createViewMenu() {
@@ -426,8 +420,8 @@ void MainWindow::loadPendingModel() {
                         .arg(QFileInfo(path).fileName(), trainingDock_->lastError()));
 }
 
-void MainWindow::openSample() {
-    openFile(QString::fromLatin1(kSamplePlanPath));
+void MainWindow::openSample(const QString& path) {
+    openFile(path.isEmpty() ? QString::fromLatin1(kSamplePlanPath) : path);
 }
 
 } // namespace fc::ui

@@ -66,7 +66,13 @@ public:
     // File > Import without the dialog: the imported plan replaces the current document's
     // (one undoable edit, robot settings kept) or opens as a new, unsaved document.
     bool applyImport(const QString& path, const ImportResult& imported, bool asNewDocument);
-    void openSample();
+    // One of samplePlans() by its resource path; the office when empty.
+    void openSample(const QString& path = QString());
+    // Help > Welcome Page and Getting Started (MainWindowHelp.cpp). The welcome page is
+    // shown at start unless the user turned it off; never while dialogs are disabled.
+    void showWelcome();
+    void showWelcomeAtStart();
+    void showHelp();
     void newDocument();
     bool saveFile(const QString& path);
     // Path in the format its extension implies (.geojson .csv .json .yaml .svg .pdf .wkt).
@@ -114,6 +120,7 @@ private:
     void createMenus();
     void createFileMenu();
     void createViewMenu();
+    void createHelpMenu();
     void createStatusBar();
     void setDocument(std::unique_ptr<Document> document);
     void showError(const QString& message);

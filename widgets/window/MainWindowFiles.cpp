@@ -8,6 +8,7 @@
 #include "tasks/PlanningController.h"
 #include "window/MainWindow.h"
 #include "window/PdfReport.h"
+#include "window/SamplePlans.h"
 
 #include <QAction>
 #include <QApplication>
@@ -47,10 +48,15 @@ void MainWindow::createFileMenu() {
             newDocument();
     });
     file->addAction(tr("&Open…"), QKeySequence::Open, this, &MainWindow::openWithDialog);
-    file->addAction(tr("Open &Sample Plan"), this, [this]() {
-        if (maybeSave())
-            openSample();
-    });
+    QMenu* samples = file->addMenu(tr("Open &Sample"));
+    for (const SamplePlan& sample : samplePlans()) {
+        QAction* action = samples->addAction(sample.title, this, [this, path = sample.path]() {
+            if (maybeSave())
+                openSample(path);
+        });
+        action->setStatusTip(sample.description);
+        action->setToolTip(sample.description);
+    }
     file->addAction(tr("&Import…"), QKeySequence(Qt::CTRL | Qt::Key_I), this,
                     &MainWindow::importWithDialog);
     recentFilesMenu_ = file->addMenu(tr("Open &Recent"));

@@ -33,6 +33,11 @@ bool loadEditorTranslation(QTranslator& translator, const QLocale& locale) {
                            QStringLiteral(":/i18n"));
 }
 
+bool loadQtTranslation(QTranslator& translator, const QLocale& locale) {
+    return translator.load(locale, QStringLiteral("qtbase"), QStringLiteral("_"),
+                           QLibraryInfo::path(QLibraryInfo::TranslationsPath));
+}
+
 void installTranslations(QCoreApplication& application) {
     const QString code = languageSetting();
     const QLocale locale = code.isEmpty() ? QLocale::system() : QLocale(code);
@@ -43,8 +48,7 @@ void installTranslations(QCoreApplication& application) {
         QCoreApplication::installTranslator(editor);
     // Qt's own strings (standard buttons and dialogs), from the system's Qt translations.
     auto* qt = new QTranslator(&application);
-    if (qt->load(locale, QStringLiteral("qtbase"), QStringLiteral("_"),
-                 QLibraryInfo::path(QLibraryInfo::TranslationsPath)))
+    if (loadQtTranslation(*qt, locale))
         QCoreApplication::installTranslator(qt);
 }
 

@@ -20,6 +20,9 @@ void setLanguageSetting(const QString& code);
 // Loads the editor's translation for `locale` into `translator`; false for English (the
 // source language) or a language without a translation.
 bool loadEditorTranslation(QTranslator& translator, const QLocale& locale);
+// Qt's own strings (standard buttons, file dialogs) for the locale, from the system's Qt
+// translations (Debian: qt6-translations-l10n, installed by scripts/install-deps.sh).
+bool loadQtTranslation(QTranslator& translator, const QLocale& locale);
 // Installs the editor's and Qt's own translations for the chosen language.
 void installTranslations(QCoreApplication& application);
 

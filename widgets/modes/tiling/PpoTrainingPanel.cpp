@@ -25,6 +25,8 @@ PpoTrainingPanel::PpoTrainingPanel(QWidget* parent)
                             "one model serves every floor)"));
     train_ = new QPushButton(tr("Train ppo"));
     stop_ = new QPushButton(tr("Stop"));
+    train_->setToolTip(tr("Train the learnt ordering (ppo) in the background for the time set."));
+    stop_->setToolTip(tr("End training; what was learnt so far is kept."));
     controls->addWidget(seconds_);
     controls->addWidget(train_);
     controls->addWidget(stop_);

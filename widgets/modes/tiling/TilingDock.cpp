@@ -53,8 +53,11 @@ TilingDock::TilingDock(TilingController* controller, QWidget* parent)
     form->addRow(tr("Ordering:"), solver_);
     seed_ = new QSpinBox;
     seed_->setRange(0, 1000000);
+    seed_->setToolTip(tr("Random seed of the ordering methods that use chance (aco, ga, ppo): "
+                         "the same seed gives the same tour."));
     form->addRow(tr("Seed:"), seed_);
     blockLeg_ = spin(0.05, 2.0, 0.01, 3, tr(" m"));
+    blockLeg_->setToolTip(tr("Side of one block of the tiling robot in metres."));
     form->addRow(tr("Block leg:"), blockLeg_);
     auto* massRow = new QHBoxLayout;
     for (int b = 0; b < 4; ++b) {
@@ -68,12 +71,16 @@ TilingDock::TilingDock(TilingController* controller, QWidget* parent)
     layout->addWidget(run_);
     showTiles_ = new QCheckBox(tr("Show tiles on the canvas"));
     showTiles_->setChecked(true);
+    run_->setToolTip(tr("Tile the floor with the robot's shapes and order the tiles by energy."));
+    showTiles_->setToolTip(tr("Draw the tiles and their tour over the plan."));
     layout->addWidget(showTiles_);
     metrics_ = new QLabel;
     metrics_->setWordWrap(true);
     metrics_->setTextInteractionFlags(Qt::TextSelectableByMouse);
     layout->addWidget(metrics_);
     export_ = new QPushButton(tr("Export Waypoints…"));
+    export_->setToolTip(tr("Write the ordered waypoints (position, shape, heading) as CSV or "
+                           "JSON for the robot."));
     layout->addWidget(export_);
     auto* training = new QGroupBox(tr("Learnt ordering (ppo)"));
     auto* trainingLayout = new QVBoxLayout(training);
