@@ -4,16 +4,171 @@
 <context>
     <name>PlannerMessages</name>
     <message>
-        <source>The exact solver orders at most %1 cells, and these rooms have %2. Choose the heuristic solver in the Planning panel.</source>
-        <translation>Der exakte Löser ordnet höchstens %1 Zellen, diese Räume haben %2. Wählen Sie im Bereich Planung den heuristischen Löser.</translation>
-    </message>
-    <message>
         <source>The exact solver could not prove the best order of %1 cells within its budget (%2). Choose the heuristic solver in the Planning panel.</source>
         <translation>Der exakte Löser konnte die beste Reihenfolge von %1 Zellen in seinem Budget (%2) nicht beweisen. Wählen Sie im Bereich Planung den heuristischen Löser.</translation>
     </message>
     <message>
         <source>The dqn solver needs a trained model: train one in the Training panel (or load one there), or choose another solver.</source>
         <translation>Der Löser dqn braucht ein trainiertes Modell: trainieren Sie eines im Bereich Training (oder laden Sie es dort), oder wählen Sie einen anderen Löser.</translation>
+    </message>
+    <message>
+        <source>These rooms have %1 cells, and the exact solver orders at most %2. Choose the heuristic solver in the Planning panel.</source>
+        <translation>Diese Räume haben %1 Zellen, der exakte Löser ordnet aber höchstens %2. Wählen Sie im Bereich Planung den heuristischen Löser.</translation>
+    </message>
+    <message>
+        <source>Obstacle %1 crosses the outer wall near %2.</source>
+        <translation>Hindernis %1 kreuzt die Außenwand bei %2.</translation>
+    </message>
+    <message>
+        <source>Obstacle %1 touches the outer wall at %2; obstacles must lie inside the walls.</source>
+        <translation>Hindernis %1 berührt die Außenwand bei %2; Hindernisse müssen innerhalb der Wände liegen.</translation>
+    </message>
+    <message>
+        <source>Obstacles %1 and %2 overlap near %3.</source>
+        <translation>Die Hindernisse %1 und %2 überlappen sich bei %3.</translation>
+    </message>
+    <message>
+        <source>Obstacles %1 and %2 touch at %3; draw them as one obstacle.</source>
+        <translation>Die Hindernisse %1 und %2 berühren sich bei %3; zeichnen Sie sie als ein Hindernis.</translation>
+    </message>
+    <message>
+        <source>Obstacle %1 lies outside the walls, near %2.</source>
+        <translation>Hindernis %1 liegt außerhalb der Wände, bei %2.</translation>
+    </message>
+    <message>
+        <source>Obstacle %1 lies inside obstacle %2.</source>
+        <translation>Hindernis %1 liegt in Hindernis %2.</translation>
+    </message>
+    <message>
+        <source>%1 crosses itself near %2.</source>
+        <translation>%1 kreuzt sich selbst bei %2.</translation>
+    </message>
+    <message>
+        <source>%1 touches itself at %2.</source>
+        <translation>%1 berührt sich selbst bei %2.</translation>
+    </message>
+    <message>
+        <source>%1 folds back on itself (a spike) at %2.</source>
+        <translation>%1 knickt bei %2 auf sich selbst zurück (eine Spitze).</translation>
+    </message>
+    <message>
+        <source>Rooms “%1” and “%2” overlap by %3 m² near %4.</source>
+        <translation>Die Räume „%1“ und „%2“ überlappen sich um %3 m² bei %4.</translation>
+    </message>
+    <message>
+        <source>Rooms “%1” and “%2” overlap by %3 m².</source>
+        <translation>Die Räume „%1“ und „%2“ überlappen sich um %3 m².</translation>
+    </message>
+    <message>
+        <source>Room “%1” lies outside the walls.</source>
+        <translation>Raum „%1“ liegt außerhalb der Wände.</translation>
+    </message>
+    <message>
+        <source>Room “%1” lies inside obstacle %2.</source>
+        <translation>Raum „%1“ liegt in Hindernis %2.</translation>
+    </message>
+    <message>
+        <source>Two rooms are named “%1”: rename one.</source>
+        <translation>Zwei Räume heißen „%1“: Benennen Sie einen davon um.</translation>
+    </message>
+    <message>
+        <source>%1 cells (%2 m²) cannot be reached from the start and are left out.</source>
+        <translation>%1 Zellen (%2 m²) sind vom Start aus nicht erreichbar und werden ausgelassen.</translation>
+    </message>
+    <message>
+        <source>Room %1 cannot be reached from the start and is left out.</source>
+        <translation>Raum %1 ist vom Start aus nicht erreichbar und wird ausgelassen.</translation>
+    </message>
+    <message>
+        <source>%1 m² (%2 % of the selected floor) the robot could clean but the path misses.</source>
+        <translation>%1 m² (%2 % der ausgewählten Fläche) könnte der Roboter reinigen, aber der Pfad lässt sie aus.</translation>
+    </message>
+    <message>
+        <source>%1 m² (%2 % of the selected floor) the robot cannot reach (gaps narrower than the robot, corners beyond its head).</source>
+        <translation>%1 m² (%2 % der ausgewählten Fläche) kann der Roboter nicht erreichen (Durchgänge schmaler als der Roboter, Ecken außer Reichweite seines Reinigungskopfs).</translation>
+    </message>
+    <message>
+        <source>No selected room can be reached from the start: move the start (Place Start) or pick other rooms.</source>
+        <translation>Kein ausgewählter Raum ist vom Start aus erreichbar: Verschieben Sie den Start (Start setzen) oder wählen Sie andere Räume.</translation>
+    </message>
+    <message>
+        <source>The end cannot be reached from the start: move one of them.</source>
+        <translation>Das Ziel ist vom Start aus nicht erreichbar: Verschieben Sie eines von beiden.</translation>
+    </message>
+    <message>
+        <source>The selected rooms have no floor the robot can clean: pick other rooms or a smaller robot.</source>
+        <translation>Die ausgewählten Räume haben keinen Boden, den der Roboter reinigen kann: Wählen Sie andere Räume oder einen kleineren Roboter.</translation>
+    </message>
+    <message>
+        <source>The robot diameter L (%1 m) is larger than the coverage width W (%2 m): L ≤ W ≤ D.</source>
+        <translation>Der Roboterdurchmesser L (%1 m) ist größer als die Bahnbreite W (%2 m): L ≤ W ≤ D.</translation>
+    </message>
+    <message>
+        <source>The coverage width W (%1 m) is larger than the cleaning diameter D (%2 m): L ≤ W ≤ D.</source>
+        <translation>Die Bahnbreite W (%1 m) ist größer als der Reinigungsdurchmesser D (%2 m): L ≤ W ≤ D.</translation>
+    </message>
+    <message>
+        <source>The outer wall</source>
+        <translation>Die Außenwand</translation>
+    </message>
+    <message>
+        <source>Obstacle %1</source>
+        <translation>Hindernis %1</translation>
+    </message>
+    <message>
+        <source>Room “%1”</source>
+        <translation>Raum „%1“</translation>
+    </message>
+</context>
+<context>
+    <name>fc::ui</name>
+    <message>
+        <source>Office floor</source>
+        <translation>Büroetage</translation>
+    </message>
+    <message>
+        <source>Twelve offices along a corridor, 0.9 m doors</source>
+        <translation>Zwölf Büros an einem Flur, 0,9 m breite Türen</translation>
+    </message>
+    <message>
+        <source>Hospital ward</source>
+        <translation>Krankenhausstation</translation>
+    </message>
+    <message>
+        <source>Sixteen patient rooms with beds and a corridor</source>
+        <translation>Sechzehn Patientenzimmer mit Betten und ein Flur</translation>
+    </message>
+    <message>
+        <source>Room with a pillar</source>
+        <translation>Raum mit Säule</translation>
+    </message>
+    <message>
+        <source>One room with an obstacle in it</source>
+        <translation>Ein Raum mit einem Hindernis darin</translation>
+    </message>
+    <message>
+        <source>Room with notches</source>
+        <translation>Raum mit Nischen</translation>
+    </message>
+    <message>
+        <source>One room whose walls have recesses</source>
+        <translation>Ein Raum mit Nischen in den Wänden</translation>
+    </message>
+    <message>
+        <source>Slanted room</source>
+        <translation>Schräger Raum</translation>
+    </message>
+    <message>
+        <source>A room drawn at an angle, with an obstacle</source>
+        <translation>Ein schräg gezeichneter Raum mit einem Hindernis</translation>
+    </message>
+    <message>
+        <source>Simple room</source>
+        <translation>Einfacher Raum</translation>
+    </message>
+    <message>
+        <source>The smallest example: one room, one obstacle</source>
+        <translation>Das kleinste Beispiel: ein Raum, ein Hindernis</translation>
     </message>
 </context>
 <context>
@@ -200,6 +355,14 @@
         <source>%1 drives %3 % of the extra distance of %2 (a published method) and makes %4 % of its turns; below 100 % is better. The published comparison: %5.</source>
         <translation>%1 fährt %3 % der Zusatzstrecke von %2 (einem veröffentlichten Verfahren) und macht %4 % seiner Wendungen; unter 100 % ist besser. Der veröffentlichte Vergleich: %5.</translation>
     </message>
+    <message>
+        <source>Close; a comparison still running is cancelled at once</source>
+        <translation>Schließen; ein noch laufender Vergleich wird sofort abgebrochen</translation>
+    </message>
+    <message>
+        <source>One row per solver; hover a column&apos;s title for what it means.</source>
+        <translation>Eine Zeile je Löser; zeigen Sie auf eine Spaltenüberschrift, um zu sehen, was sie bedeutet.</translation>
+    </message>
 </context>
 <context>
     <name>fc::ui::Document</name>
@@ -355,6 +518,22 @@
         <source>Split room %1 (new room %2)</source>
         <translation>Raum %1 teilen (neuer Raum %2)</translation>
     </message>
+    <message>
+        <source>The plan cannot be repaired automatically: %1</source>
+        <translation>Der Plan lässt sich nicht automatisch reparieren: %1</translation>
+    </message>
+    <message>
+        <source>The automatic repair left a problem: %1</source>
+        <translation>Nach der automatischen Reparatur bleibt ein Problem: %1</translation>
+    </message>
+    <message>
+        <source>Repair plan</source>
+        <translation>Plan reparieren</translation>
+    </message>
+    <message>
+        <source>This plan has problems (see the Problems panel): repair it first with Plan &gt; Repair Plan, or undo back to a valid plan.</source>
+        <translation>Dieser Plan hat Probleme (siehe Bereich Probleme): Reparieren Sie ihn zuerst mit Planen &gt; Plan reparieren oder machen Sie Änderungen bis zu einem gültigen Plan rückgängig.</translation>
+    </message>
 </context>
 <context>
     <name>fc::ui::DocumentFiles</name>
@@ -407,6 +586,17 @@
     <message>
         <source>Edit Vertices: drag a vertex to move it, double-click an edge to add one, right-click a vertex to delete it; select a polygon and press Delete to delete it.</source>
         <translation>Eckpunkte bearbeiten: Eckpunkt ziehen zum Verschieben, Kante doppelklicken zum Einfügen, Rechtsklick auf einen Eckpunkt zum Löschen; ein Polygon auswählen und Entf drücken, um es zu löschen.</translation>
+    </message>
+</context>
+<context>
+    <name>fc::ui::HelpDialog</name>
+    <message>
+        <source>Getting Started with FloorCover</source>
+        <translation>Erste Schritte mit FloorCover</translation>
+    </message>
+    <message>
+        <source>Close the guide</source>
+        <translation>Anleitung schließen</translation>
     </message>
 </context>
 <context>
@@ -571,12 +761,76 @@
         <source>%1 walls straightened at %2°: %3 m² of floor gained, %4 m² lost (%5 notches filled); %6 unknown gaps became floor.</source>
         <translation>%1 Wände bei %2° begradigt: %3 m² Boden gewonnen, %4 m² verloren (%5 Nischen gefüllt); %6 unbekannte Lücken wurden Boden.</translation>
     </message>
+    <message>
+        <source>The drawing&apos;s layers: choose what each holds (walls, obstacles, rooms, or nothing to import).</source>
+        <translation>Die Layer der Zeichnung: Wählen Sie, was jeder enthält (Wände, Hindernisse, Räume oder nichts zum Importieren).</translation>
+    </message>
+    <message>
+        <source>How many metres one drawing unit is (0.001 for a drawing in mm).</source>
+        <translation>Wie viele Meter eine Zeichnungseinheit ist (0,001 für eine Zeichnung in mm).</translation>
+    </message>
+    <message>
+        <source>Lines whose ends are at most this far apart are joined into closed outlines.</source>
+        <translation>Linien, deren Enden höchstens so weit auseinanderliegen, werden zu geschlossenen Umrissen verbunden.</translation>
+    </message>
+    <message>
+        <source>What the import left out or guessed, and why.</source>
+        <translation>Was der Import ausgelassen oder geschätzt hat, und warum.</translation>
+    </message>
+    <message>
+        <source>Open the import as its own document instead of replacing the plan of the current one.</source>
+        <translation>Den Import als eigenes Dokument öffnen, statt den Plan des aktuellen Dokuments zu ersetzen.</translation>
+    </message>
+    <message>
+        <source>What the map&apos;s unknown (grey) cells are: walls, or floor the robot may clean.</source>
+        <translation>Was die unbekannten (grauen) Zellen der Karte sind: Wände oder Boden, den der Roboter reinigen darf.</translation>
+    </message>
+    <message>
+        <source>How the map&apos;s free space is split into rooms: at doorways (two methods), or kept as one room.</source>
+        <translation>Wie die freie Fläche der Karte in Räume geteilt wird: an Türen (zwei Verfahren) oder als ein einziger Raum.</translation>
+    </message>
+    <message>
+        <source>What layer %1 holds</source>
+        <translation>Was Layer %1 enthält</translation>
+    </message>
 </context>
 <context>
     <name>fc::ui::LegendDock</name>
     <message>
         <source>Legend</source>
         <translation>Legende</translation>
+    </message>
+    <message>
+        <source>Transit</source>
+        <translation>Leerfahrt</translation>
+    </message>
+    <message>
+        <source>Moves between cells and rooms without cleaning (part of the Path)</source>
+        <translation>Fahrten zwischen Zellen und Räumen ohne Reinigung (Teil des Pfads)</translation>
+    </message>
+    <message>
+        <source>S</source>
+        <translation>S</translation>
+    </message>
+    <message>
+        <source>Start</source>
+        <translation>Start</translation>
+    </message>
+    <message>
+        <source>Where the robot starts: yours, or the planner&apos;s choice when none is placed</source>
+        <translation>Wo der Roboter startet: Ihr gesetzter Start oder, wenn keiner gesetzt ist, die Wahl des Planers</translation>
+    </message>
+    <message>
+        <source>E</source>
+        <translation>Z</translation>
+    </message>
+    <message>
+        <source>End</source>
+        <translation>Ziel</translation>
+    </message>
+    <message>
+        <source>Where the path ends</source>
+        <translation>Wo der Pfad endet</translation>
     </message>
 </context>
 <context>
@@ -708,10 +962,6 @@ Abdeckungspfadplanung für Reinigungs- und Desinfektionsroboter.</translation>
         <translation>Ö&amp;ffnen…</translation>
     </message>
     <message>
-        <source>Open &amp;Sample Plan</source>
-        <translation>&amp;Beispielplan öffnen</translation>
-    </message>
-    <message>
         <source>Open &amp;Recent</source>
         <translation>&amp;Zuletzt geöffnet</translation>
     </message>
@@ -742,10 +992,6 @@ Abdeckungspfadplanung für Reinigungs- und Desinfektionsroboter.</translation>
     <message>
         <source>Export Report</source>
         <translation>Bericht exportieren</translation>
-    </message>
-    <message>
-        <source>PDF documents (*.pdf)</source>
-        <translation>PDF-Dokumente (*.pdf)</translation>
     </message>
     <message>
         <source>&amp;Quit</source>
@@ -924,6 +1170,54 @@ Abdeckungspfadplanung für Reinigungs- und Desinfektionsroboter.</translation>
         <source>The project was saved, but not its trained model: %1</source>
         <translation>Das Projekt wurde gespeichert, sein trainiertes Modell jedoch nicht: %1</translation>
     </message>
+    <message>
+        <source>&amp;Path View</source>
+        <translation>P&amp;fadansicht</translation>
+    </message>
+    <message>
+        <source>The floor, the rooms and the path with its start and end</source>
+        <translation>Der Boden, die Räume und der Pfad mit Start und Ziel</translation>
+    </message>
+    <message>
+        <source>&amp;Graph View</source>
+        <translation>Gr&amp;aphansicht</translation>
+    </message>
+    <message>
+        <source>Adds the planner&apos;s cells, corners and graph edges</source>
+        <translation>Zeigt zusätzlich die Zellen, Ecken und Graphkanten des Planers</translation>
+    </message>
+    <message>
+        <source>Open &amp;Sample</source>
+        <translation>Beispie&amp;l öffnen</translation>
+    </message>
+    <message>
+        <source>PDF report, A4 (*.pdf)</source>
+        <translation>PDF-Bericht, A4 (*.pdf)</translation>
+    </message>
+    <message>
+        <source>PDF report, A3 (*.pdf)</source>
+        <translation>PDF-Bericht, A3 (*.pdf)</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+    <message>
+        <source>&amp;Getting Started</source>
+        <translation>&amp;Erste Schritte</translation>
+    </message>
+    <message>
+        <source>A short guide through a first plan</source>
+        <translation>Eine kurze Anleitung durch einen ersten Plan</translation>
+    </message>
+    <message>
+        <source>&amp;Welcome Page</source>
+        <translation>&amp;Willkommensseite</translation>
+    </message>
+    <message>
+        <source>The sample plans and the ways to start</source>
+        <translation>Die Beispielpläne und die Wege zum Einstieg</translation>
+    </message>
 </context>
 <context>
     <name>fc::ui::OverlayLayer</name>
@@ -975,6 +1269,50 @@ Abdeckungspfadplanung für Reinigungs- und Desinfektionsroboter.</translation>
         <source>Coverage Gaps</source>
         <translation>Abdeckungslücken</translation>
     </message>
+    <message>
+        <source>The cells the floor is split into, one colour per room, with their numbers</source>
+        <translation>Die Zellen, in die der Boden geteilt wird, eine Farbe je Raum, mit ihren Nummern</translation>
+    </message>
+    <message>
+        <source>Narrow strips between cells the robot passes through (hatched)</source>
+        <translation>Schmale Streifen zwischen Zellen, durch die der Roboter fährt (schraffiert)</translation>
+    </message>
+    <message>
+        <source>Where the floor&apos;s shape changes and one cell ends (dashed)</source>
+        <translation>Wo sich die Form des Bodens ändert und eine Zelle endet (gestrichelt)</translation>
+    </message>
+    <message>
+        <source>The cells&apos; corners, where the path may enter or leave a cell</source>
+        <translation>Die Ecken der Zellen, an denen der Pfad in eine Zelle hinein- oder aus ihr herausführen kann</translation>
+    </message>
+    <message>
+        <source>Which corners a cell&apos;s stripes join (entry and exit pairs)</source>
+        <translation>Welche Ecken die Bahnen einer Zelle verbinden (Paare aus Ein- und Ausgang)</translation>
+    </message>
+    <message>
+        <source>Moves along a cell&apos;s edge between its corners</source>
+        <translation>Fahrten entlang des Rands einer Zelle zwischen ihren Ecken</translation>
+    </message>
+    <message>
+        <source>Moves from one cell to the next</source>
+        <translation>Fahrten von einer Zelle zur nächsten</translation>
+    </message>
+    <message>
+        <source>The robot&apos;s path: cleaning stripes in red, transit moves dashed, arrows for the direction</source>
+        <translation>Der Pfad des Roboters: Reinigungsbahnen rot, Leerfahrten gestrichelt, Pfeile zeigen die Richtung</translation>
+    </message>
+    <message>
+        <source>Where the path passes over floor it has already cleaned (blue)</source>
+        <translation>Wo der Pfad über bereits gereinigten Boden fährt (blau)</translation>
+    </message>
+    <message>
+        <source>Floor the robot cannot reach: gaps narrower than the robot, corners beyond its head</source>
+        <translation>Boden, den der Roboter nicht erreicht: Durchgänge schmaler als der Roboter, Ecken außer Reichweite seines Reinigungskopfs</translation>
+    </message>
+    <message>
+        <source>Spots the robot could clean but the path misses</source>
+        <translation>Stellen, die der Roboter reinigen könnte, die der Pfad aber auslässt</translation>
+    </message>
 </context>
 <context>
     <name>fc::ui::PathPreviewBar</name>
@@ -1018,28 +1356,52 @@ Abdeckungspfadplanung für Reinigungs- und Desinfektionsroboter.</translation>
         <translation>%1 m</translation>
     </message>
     <message>
-        <source>Solver</source>
-        <translation>Löser</translation>
+        <source>&lt; 1 min</source>
+        <translation>&lt; 1 min</translation>
     </message>
     <message>
-        <source>Stripe angle</source>
-        <translation>Bahnwinkel</translation>
+        <source>%1 min</source>
+        <translation>%1 min</translation>
+    </message>
+    <message>
+        <source>%1 h %2 min</source>
+        <translation>%1 h %2 min</translation>
+    </message>
+    <message>
+        <source>(%1, %2) m</source>
+        <translation>(%1; %2) m</translation>
+    </message>
+    <message>
+        <source>per room, along its walls</source>
+        <translation>je Raum, entlang seiner Wände</translation>
     </message>
     <message>
         <source>%1°</source>
         <translation>%1°</translation>
     </message>
     <message>
+        <source>Rooms planned</source>
+        <translation>Geplante Räume</translation>
+    </message>
+    <message>
+        <source>%1 of %2</source>
+        <translation>%1 von %2</translation>
+    </message>
+    <message>
+        <source>Estimated time</source>
+        <translation>Geschätzte Dauer</translation>
+    </message>
+    <message>
         <source>Path length</source>
         <translation>Pfadlänge</translation>
     </message>
     <message>
-        <source>Ideal length</source>
-        <translation>Ideale Länge</translation>
-    </message>
-    <message>
         <source>Extra distance</source>
         <translation>Zusätzliche Strecke</translation>
+    </message>
+    <message>
+        <source>%1 (%2 % over the ideal %3)</source>
+        <translation>%1 (%2 % über dem Idealwert %3)</translation>
     </message>
     <message>
         <source>Turns</source>
@@ -1050,20 +1412,40 @@ Abdeckungspfadplanung für Reinigungs- und Desinfektionsroboter.</translation>
         <translation>Abdeckung</translation>
     </message>
     <message>
-        <source>%1 %</source>
-        <translation>%1 %</translation>
+        <source>%1 % of the floor the robot can reach</source>
+        <translation>%1 % des für den Roboter erreichbaren Bodens</translation>
     </message>
     <message>
-        <source>Estimated time</source>
-        <translation>Geschätzte Dauer</translation>
+        <source>Missed</source>
+        <translation>Nicht abgedeckt</translation>
     </message>
     <message>
-        <source>%1 min</source>
-        <translation>%1 min</translation>
+        <source>%1 m²</source>
+        <translation>%1 m²</translation>
     </message>
     <message>
-        <source>Cells covered</source>
-        <translation>Abgedeckte Zellen</translation>
+        <source>Too narrow for the robot</source>
+        <translation>Zu eng für den Roboter</translation>
+    </message>
+    <message>
+        <source>Start</source>
+        <translation>Starten</translation>
+    </message>
+    <message>
+        <source>%1, chosen by the planner</source>
+        <translation>%1, vom Planer gewählt</translation>
+    </message>
+    <message>
+        <source>End</source>
+        <translation>Ziel</translation>
+    </message>
+    <message>
+        <source>Planner</source>
+        <translation>Planer</translation>
+    </message>
+    <message>
+        <source>%1, stripes %2</source>
+        <translation>%1, Bahnen %2</translation>
     </message>
     <message>
         <source>Robot diameter L</source>
@@ -1094,12 +1476,88 @@ Abdeckungspfadplanung für Reinigungs- und Desinfektionsroboter.</translation>
         <translation>%1 s</translation>
     </message>
     <message>
-        <source>Coverage plan: %1</source>
-        <translation>Abdeckungsplan: %1</translation>
+        <source>Order</source>
+        <translation>Reihenfolge</translation>
+    </message>
+    <message>
+        <source>Room</source>
+        <translation>Raum</translation>
+    </message>
+    <message>
+        <source>Area</source>
+        <translation>Fläche</translation>
+    </message>
+    <message>
+        <source>Path</source>
+        <translation>Pfad</translation>
+    </message>
+    <message>
+        <source>Time</source>
+        <translation>Zeit</translation>
+    </message>
+    <message>
+        <source>not planned</source>
+        <translation>nicht geplant</translation>
+    </message>
+    <message>
+        <source>Between rooms</source>
+        <translation>Zwischen Räumen</translation>
+    </message>
+    <message>
+        <source>Total</source>
+        <translation>Gesamt</translation>
+    </message>
+    <message>
+        <source>S</source>
+        <translation>S</translation>
+    </message>
+    <message>
+        <source>E</source>
+        <translation>Z</translation>
+    </message>
+    <message>
+        <source>Cleaning path</source>
+        <translation>Reinigungspfad</translation>
+    </message>
+    <message>
+        <source>Transit</source>
+        <translation>Leerfahrt</translation>
+    </message>
+    <message>
+        <source>Overlap</source>
+        <translation>Überlappung</translation>
+    </message>
+    <message>
+        <source>Missed spots</source>
+        <translation>Ausgelassene Stellen</translation>
+    </message>
+    <message>
+        <source>Too narrow</source>
+        <translation>Zu eng</translation>
+    </message>
+    <message>
+        <source>Rooms in cleaning order</source>
+        <translation>Räume in Reinigungsreihenfolge</translation>
+    </message>
+    <message>
+        <source>Cannot write %1: %2</source>
+        <translation>%1 kann nicht geschrieben werden: %2</translation>
+    </message>
+    <message>
+        <source>Cleaning plan: %1</source>
+        <translation>Reinigungsplan: %1</translation>
     </message>
     <message>
         <source>Cannot write %1.</source>
         <translation>%1 kann nicht geschrieben werden.</translation>
+    </message>
+    <message>
+        <source>Summary</source>
+        <translation>Zusammenfassung</translation>
+    </message>
+    <message>
+        <source>Robot profile</source>
+        <translation>Roboterprofil</translation>
     </message>
 </context>
 <context>
@@ -1190,6 +1648,14 @@ Abdeckungspfadplanung für Reinigungs- und Desinfektionsroboter.</translation>
         <source>The corner the planner starts or ends at</source>
         <translation>Die Ecke, an der der Planer beginnt oder endet</translation>
     </message>
+    <message>
+        <source>Start, chosen by the planner</source>
+        <translation>Start, vom Planer gewählt</translation>
+    </message>
+    <message>
+        <source>End of the path</source>
+        <translation>Ende des Pfads</translation>
+    </message>
 </context>
 <context>
     <name>fc::ui::PlanningController</name>
@@ -1204,6 +1670,10 @@ Abdeckungspfadplanung für Reinigungs- und Desinfektionsroboter.</translation>
     <message>
         <source>Sketching the path</source>
         <translation>Pfad wird skizziert</translation>
+    </message>
+    <message>
+        <source>This plan has problems: repair it first (Plan &gt; Repair Plan, or the button in the Problems panel).</source>
+        <translation>Dieser Plan hat Probleme: Reparieren Sie ihn zuerst (Planen &gt; Plan reparieren oder die Schaltfläche im Bereich Probleme).</translation>
     </message>
 </context>
 <context>
@@ -1400,6 +1870,34 @@ Abdeckungspfadplanung für Reinigungs- und Desinfektionsroboter.</translation>
         <source>A quick sketch of the path is shown; the planner is refining it…</source>
         <translation>Eine schnelle Skizze des Pfads wird angezeigt; der Planer verfeinert sie…</translation>
     </message>
+    <message>
+        <source>The robot&apos;s body, L: its centre keeps L/2 from walls, and doors narrower than L are not passed.</source>
+        <translation>Der Körper des Roboters, L: Seine Mitte hält L/2 Abstand zu Wänden, und durch Türen schmaler als L fährt er nicht.</translation>
+    </message>
+    <message>
+        <source>The width the cleaning head reaches, D (at least W).</source>
+        <translation>Die Breite, die der Reinigungskopf erreicht, D (mindestens W).</translation>
+    </message>
+    <message>
+        <source>Distance between neighbouring stripes, W (between L and D): smaller overlaps more, larger risks gaps.</source>
+        <translation>Abstand zwischen benachbarten Bahnen, W (zwischen L und D): kleiner überlappt mehr, größer riskiert Lücken.</translation>
+    </message>
+    <message>
+        <source>Driving speed, for the estimated time.</source>
+        <translation>Fahrgeschwindigkeit, für die geschätzte Dauer.</translation>
+    </message>
+    <message>
+        <source>Seconds the robot needs to turn by 90°, for the estimated time.</source>
+        <translation>Sekunden, die der Roboter für eine 90°-Drehung braucht, für die geschätzte Dauer.</translation>
+    </message>
+    <message>
+        <source>How the order of the cells is chosen: heuristic is fast and close to the best; exact proves the best order on small floors; greedy is the quickest sketch; dqn uses the model trained in the Training panel.</source>
+        <translation>Wie die Reihenfolge der Zellen gewählt wird: heuristic ist schnell und nahe am Optimum; exact beweist die beste Reihenfolge auf kleinen Flächen; greedy ist die schnellste Skizze; dqn nutzt das im Bereich Training trainierte Modell.</translation>
+    </message>
+    <message>
+        <source>The stripes&apos; direction in degrees (90 = vertical), for One angle for the floor.</source>
+        <translation>Die Richtung der Bahnen in Grad (90 = senkrecht), für „Ein Winkel für die ganze Etage“.</translation>
+    </message>
 </context>
 <context>
     <name>fc::ui::PpoTrainer</name>
@@ -1458,6 +1956,14 @@ Abdeckungspfadplanung für Reinigungs- und Desinfektionsroboter.</translation>
         <source>Training cancelled before its first update; no model.</source>
         <translation>Training vor der ersten Aktualisierung abgebrochen; kein Modell.</translation>
     </message>
+    <message>
+        <source>Train the learnt ordering (ppo) in the background for the time set.</source>
+        <translation>Die gelernte Reihenfolge (ppo) für die eingestellte Zeit im Hintergrund trainieren.</translation>
+    </message>
+    <message>
+        <source>End training; what was learnt so far is kept.</source>
+        <translation>Training beenden; das bisher Gelernte bleibt erhalten.</translation>
+    </message>
 </context>
 <context>
     <name>fc::ui::PreferencesDialog</name>
@@ -1472,6 +1978,48 @@ Abdeckungspfadplanung für Reinigungs- und Desinfektionsroboter.</translation>
     <message>
         <source>Language</source>
         <translation>Sprache</translation>
+    </message>
+    <message>
+        <source>The language of the editor, its messages and Qt&apos;s dialogs</source>
+        <translation>Die Sprache des Editors, seiner Meldungen und der Qt-Dialoge</translation>
+    </message>
+</context>
+<context>
+    <name>fc::ui::ProblemsDock</name>
+    <message>
+        <source>Problems</source>
+        <translation>Probleme</translation>
+    </message>
+    <message>
+        <source>Repair Plan</source>
+        <translation>Plan reparieren</translation>
+    </message>
+    <message>
+        <source>&amp;Repair Plan</source>
+        <translation>Plan &amp;reparieren</translation>
+    </message>
+    <message>
+        <source>Click a problem to see where it is on the plan.</source>
+        <translation>Klicken Sie auf ein Problem, um zu sehen, wo es im Plan liegt.</translation>
+    </message>
+    <message>
+        <source>Makes the plan valid: walls that cross themselves are split where they cross, obstacles that overlap or cross the wall are merged or clipped, rooms are fitted to the floor. Undo (Ctrl+Z) brings the plan back as it was.</source>
+        <translation>Macht den Plan gültig: Wände, die sich selbst kreuzen, werden an der Kreuzung geteilt; Hindernisse, die sich überlappen oder die Wand kreuzen, werden zusammengeführt oder beschnitten; Räume werden an den Boden angepasst. Rückgängig (Strg+Z) stellt den Plan wieder her, wie er war.</translation>
+    </message>
+    <message numerus="yes">
+        <source>This plan cannot be planned as it is: %n problem(s). It is open read-only and nothing is lost; repair it to plan.</source>
+        <translation>
+            <numerusform>Dieser Plan lässt sich so nicht planen: %n Problem. Er ist schreibgeschützt geöffnet, und nichts geht verloren; reparieren Sie ihn, um zu planen.</numerusform>
+            <numerusform>Dieser Plan lässt sich so nicht planen: %n Probleme. Er ist schreibgeschützt geöffnet, und nichts geht verloren; reparieren Sie ihn, um zu planen.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Repaired. What changed (Edit &gt; Undo brings the old plan back):</source>
+        <translation>Repariert. Was sich geändert hat (Bearbeiten &gt; Rückgängig holt den alten Plan zurück):</translation>
+    </message>
+    <message>
+        <source>No problems: the plan can be planned.</source>
+        <translation>Keine Probleme: Der Plan kann geplant werden.</translation>
     </message>
 </context>
 <context>
@@ -1608,6 +2156,26 @@ Abdeckungspfadplanung für Reinigungs- und Desinfektionsroboter.</translation>
     <message>
         <source>&lt;b&gt;Export failed:&lt;/b&gt; %1</source>
         <translation>&lt;b&gt;Export fehlgeschlagen:&lt;/b&gt; %1</translation>
+    </message>
+    <message>
+        <source>Random seed of the ordering methods that use chance (aco, ga, ppo): the same seed gives the same tour.</source>
+        <translation>Startwert für die Verfahren, die mit Zufall arbeiten (aco, ga, ppo): Derselbe Startwert ergibt dieselbe Route.</translation>
+    </message>
+    <message>
+        <source>Side of one block of the tiling robot in metres.</source>
+        <translation>Seitenlänge eines Blocks des Kachelroboters in Metern.</translation>
+    </message>
+    <message>
+        <source>Tile the floor with the robot&apos;s shapes and order the tiles by energy.</source>
+        <translation>Die Fläche mit den Formen des Roboters kacheln und die Kacheln nach Energie ordnen.</translation>
+    </message>
+    <message>
+        <source>Draw the tiles and their tour over the plan.</source>
+        <translation>Die Kacheln und ihre Route über dem Plan zeichnen.</translation>
+    </message>
+    <message>
+        <source>Write the ordered waypoints (position, shape, heading) as CSV or JSON for the robot.</source>
+        <translation>Die geordneten Wegpunkte (Position, Form, Ausrichtung) als CSV oder JSON für den Roboter schreiben.</translation>
     </message>
 </context>
 <context>
@@ -1822,12 +2390,103 @@ Abdeckungspfadplanung für Reinigungs- und Desinfektionsroboter.</translation>
         <source>cannot replace the file</source>
         <translation>die Datei kann nicht ersetzt werden</translation>
     </message>
+    <message>
+        <source>Train the learnt planner (solver dqn) for this plan in the background; the curve shows its reward per episode.</source>
+        <translation>Den gelernten Planer (Löser dqn) für diesen Plan im Hintergrund trainieren; die Kurve zeigt seine Belohnung je Episode.</translation>
+    </message>
+    <message>
+        <source>Pause training and keep the model so far; Resume goes on.</source>
+        <translation>Training pausieren und das bisherige Modell behalten; Fortsetzen macht weiter.</translation>
+    </message>
+    <message>
+        <source>End training; the model so far is kept for solver dqn.</source>
+        <translation>Training beenden; das bisherige Modell bleibt für den Löser dqn erhalten.</translation>
+    </message>
+    <message>
+        <source>Save the trained model to a .fcdqn file (saving the project also saves it beside the project).</source>
+        <translation>Das trainierte Modell in einer .fcdqn-Datei speichern (beim Speichern des Projekts wird es auch neben dem Projekt gespeichert).</translation>
+    </message>
+    <message>
+        <source>Load a model trained for this plan from a .fcdqn file.</source>
+        <translation>Ein für diesen Plan trainiertes Modell aus einer .fcdqn-Datei laden.</translation>
+    </message>
 </context>
 <context>
     <name>fc::ui::Translations</name>
     <message>
         <source>System language</source>
         <translation>Systemsprache</translation>
+    </message>
+</context>
+<context>
+    <name>fc::ui::WelcomeDialog</name>
+    <message>
+        <source>Show this page at start</source>
+        <translation>Diese Seite beim Start zeigen</translation>
+    </message>
+    <message>
+        <source>Welcome to FloorCover</source>
+        <translation>Willkommen bei FloorCover</translation>
+    </message>
+    <message>
+        <source>&lt;h2&gt;Welcome to FloorCover&lt;/h2&gt;&lt;p&gt;FloorCover plans the path a cleaning or disinfection robot drives to cover a floor:&lt;/p&gt;&lt;ol&gt;&lt;li&gt;&lt;b&gt;Bring a floor plan&lt;/b&gt;: draw it, import a CAD drawing or the robot&apos;s map, or try a sample below.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Choose the rooms&lt;/b&gt; to clean and where the robot starts.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Check the path&lt;/b&gt; and its time, then export it for the robot or print a report.&lt;/li&gt;&lt;/ol&gt;</source>
+        <translation>&lt;h2&gt;Willkommen bei FloorCover&lt;/h2&gt;&lt;p&gt;FloorCover plant den Pfad, den ein Reinigungs- oder Desinfektionsroboter fährt, um eine Fläche abzudecken:&lt;/p&gt;&lt;ol&gt;&lt;li&gt;&lt;b&gt;Grundriss bereitstellen&lt;/b&gt;: Zeichnen Sie ihn, importieren Sie eine CAD-Zeichnung oder die Karte des Roboters, oder probieren Sie unten ein Beispiel aus.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Räume wählen&lt;/b&gt;, die gereinigt werden sollen, und festlegen, wo der Roboter startet.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Pfad prüfen&lt;/b&gt; samt Dauer, dann für den Roboter exportieren oder einen Bericht drucken.&lt;/li&gt;&lt;/ol&gt;</translation>
+    </message>
+    <message>
+        <source>Double-click a sample to open it</source>
+        <translation>Doppelklicken Sie auf ein Beispiel, um es zu öffnen</translation>
+    </message>
+    <message>
+        <source>Open Sample</source>
+        <translation>Beispiel öffnen</translation>
+    </message>
+    <message>
+        <source>Open the selected sample plan</source>
+        <translation>Den ausgewählten Beispielplan öffnen</translation>
+    </message>
+    <message>
+        <source>Draw a New Floor</source>
+        <translation>Neuen Grundriss zeichnen</translation>
+    </message>
+    <message>
+        <source>Start an empty drawing with the Draw Boundary tool</source>
+        <translation>Eine leere Zeichnung mit dem Werkzeug „Außenwand zeichnen“ beginnen</translation>
+    </message>
+    <message>
+        <source>Import a Drawing or Map…</source>
+        <translation>Zeichnung oder Karte importieren…</translation>
+    </message>
+    <message>
+        <source>DXF drawings, the robot&apos;s occupancy map (.yaml), WKT, GeoJSON or 3D building models</source>
+        <translation>DXF-Zeichnungen, die Belegungskarte des Roboters (.yaml), WKT, GeoJSON oder 3D-Gebäudemodelle</translation>
+    </message>
+    <message>
+        <source>Open a Project…</source>
+        <translation>Projekt öffnen…</translation>
+    </message>
+    <message>
+        <source>Open a saved .fcproj or .geojson</source>
+        <translation>Eine gespeicherte .fcproj- oder .geojson-Datei öffnen</translation>
+    </message>
+    <message>
+        <source>Getting Started</source>
+        <translation>Erste Schritte</translation>
+    </message>
+    <message>
+        <source>A short guide through a first plan (F1)</source>
+        <translation>Eine kurze Anleitung durch einen ersten Plan (F1)</translation>
+    </message>
+    <message>
+        <source>Help &gt; Welcome Page shows it again at any time</source>
+        <translation>Hilfe &gt; Willkommensseite zeigt sie jederzeit wieder an</translation>
+    </message>
+    <message>
+        <source>Close this page</source>
+        <translation>Diese Seite schließen</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;Sample plans&lt;/b&gt;</source>
+        <translation>&lt;b&gt;Beispielpläne&lt;/b&gt;</translation>
     </message>
 </context>
 <context>

@@ -4,16 +4,171 @@
 <context>
     <name>PlannerMessages</name>
     <message>
-        <source>The exact solver orders at most %1 cells, and these rooms have %2. Choose the heuristic solver in the Planning panel.</source>
-        <translation>Le solveur exact ordonne au plus %1 cellules, et ces pièces en ont %2. Choisissez le solveur heuristique dans le panneau Planification.</translation>
-    </message>
-    <message>
         <source>The exact solver could not prove the best order of %1 cells within its budget (%2). Choose the heuristic solver in the Planning panel.</source>
         <translation>Le solveur exact n’a pas pu prouver le meilleur ordre de %1 cellules dans son budget (%2). Choisissez le solveur heuristique dans le panneau Planification.</translation>
     </message>
     <message>
         <source>The dqn solver needs a trained model: train one in the Training panel (or load one there), or choose another solver.</source>
         <translation>Le solveur dqn a besoin d’un modèle entraîné : entraînez-en un dans le panneau Entraînement (ou chargez-le là), ou choisissez un autre solveur.</translation>
+    </message>
+    <message>
+        <source>These rooms have %1 cells, and the exact solver orders at most %2. Choose the heuristic solver in the Planning panel.</source>
+        <translation>Ces pièces ont %1 cellules, et le solveur exact en ordonne au plus %2. Choisissez le solveur heuristique dans le panneau Planification.</translation>
+    </message>
+    <message>
+        <source>Obstacle %1 crosses the outer wall near %2.</source>
+        <translation>L’obstacle %1 traverse le mur extérieur près de %2.</translation>
+    </message>
+    <message>
+        <source>Obstacle %1 touches the outer wall at %2; obstacles must lie inside the walls.</source>
+        <translation>L’obstacle %1 touche le mur extérieur en %2 ; les obstacles doivent se trouver à l’intérieur des murs.</translation>
+    </message>
+    <message>
+        <source>Obstacles %1 and %2 overlap near %3.</source>
+        <translation>Les obstacles %1 et %2 se chevauchent près de %3.</translation>
+    </message>
+    <message>
+        <source>Obstacles %1 and %2 touch at %3; draw them as one obstacle.</source>
+        <translation>Les obstacles %1 et %2 se touchent en %3 ; dessinez-les comme un seul obstacle.</translation>
+    </message>
+    <message>
+        <source>Obstacle %1 lies outside the walls, near %2.</source>
+        <translation>L’obstacle %1 est en dehors des murs, près de %2.</translation>
+    </message>
+    <message>
+        <source>Obstacle %1 lies inside obstacle %2.</source>
+        <translation>L’obstacle %1 est à l’intérieur de l’obstacle %2.</translation>
+    </message>
+    <message>
+        <source>%1 crosses itself near %2.</source>
+        <translation>%1 se recoupe près de %2.</translation>
+    </message>
+    <message>
+        <source>%1 touches itself at %2.</source>
+        <translation>%1 touche son propre tracé en %2.</translation>
+    </message>
+    <message>
+        <source>%1 folds back on itself (a spike) at %2.</source>
+        <translation>%1 revient sur son propre tracé (une pointe) en %2.</translation>
+    </message>
+    <message>
+        <source>Rooms “%1” and “%2” overlap by %3 m² near %4.</source>
+        <translation>Les pièces « %1 » et « %2 » se chevauchent sur %3 m² près de %4.</translation>
+    </message>
+    <message>
+        <source>Rooms “%1” and “%2” overlap by %3 m².</source>
+        <translation>Les pièces « %1 » et « %2 » se chevauchent sur %3 m².</translation>
+    </message>
+    <message>
+        <source>Room “%1” lies outside the walls.</source>
+        <translation>La pièce « %1 » est en dehors des murs.</translation>
+    </message>
+    <message>
+        <source>Room “%1” lies inside obstacle %2.</source>
+        <translation>La pièce « %1 » est à l’intérieur de l’obstacle %2.</translation>
+    </message>
+    <message>
+        <source>Two rooms are named “%1”: rename one.</source>
+        <translation>Deux pièces s’appellent « %1 » : renommez-en une.</translation>
+    </message>
+    <message>
+        <source>%1 cells (%2 m²) cannot be reached from the start and are left out.</source>
+        <translation>%1 cellules (%2 m²) ne sont pas accessibles depuis le départ et sont laissées de côté.</translation>
+    </message>
+    <message>
+        <source>Room %1 cannot be reached from the start and is left out.</source>
+        <translation>La pièce %1 n’est pas accessible depuis le départ et est laissée de côté.</translation>
+    </message>
+    <message>
+        <source>%1 m² (%2 % of the selected floor) the robot could clean but the path misses.</source>
+        <translation>%1 m² (%2 % du sol sélectionné) que le robot pourrait nettoyer mais que le trajet ne couvre pas.</translation>
+    </message>
+    <message>
+        <source>%1 m² (%2 % of the selected floor) the robot cannot reach (gaps narrower than the robot, corners beyond its head).</source>
+        <translation>%1 m² (%2 % du sol sélectionné) que le robot ne peut pas atteindre (passages plus étroits que le robot, coins hors de portée de sa tête de nettoyage).</translation>
+    </message>
+    <message>
+        <source>No selected room can be reached from the start: move the start (Place Start) or pick other rooms.</source>
+        <translation>Aucune pièce sélectionnée n’est accessible depuis le départ : déplacez le départ (Placer le départ) ou choisissez d’autres pièces.</translation>
+    </message>
+    <message>
+        <source>The end cannot be reached from the start: move one of them.</source>
+        <translation>L’arrivée n’est pas accessible depuis le départ : déplacez l’un des deux.</translation>
+    </message>
+    <message>
+        <source>The selected rooms have no floor the robot can clean: pick other rooms or a smaller robot.</source>
+        <translation>Les pièces sélectionnées n’ont aucune surface que le robot puisse nettoyer : choisissez d’autres pièces ou un robot plus petit.</translation>
+    </message>
+    <message>
+        <source>The robot diameter L (%1 m) is larger than the coverage width W (%2 m): L ≤ W ≤ D.</source>
+        <translation>Le diamètre du robot L (%1 m) est plus grand que la largeur de couverture W (%2 m) : il faut L ≤ W ≤ D.</translation>
+    </message>
+    <message>
+        <source>The coverage width W (%1 m) is larger than the cleaning diameter D (%2 m): L ≤ W ≤ D.</source>
+        <translation>La largeur de couverture W (%1 m) est plus grande que le diamètre de nettoyage D (%2 m) : il faut L ≤ W ≤ D.</translation>
+    </message>
+    <message>
+        <source>The outer wall</source>
+        <translation>Le mur extérieur</translation>
+    </message>
+    <message>
+        <source>Obstacle %1</source>
+        <translation>L’obstacle %1</translation>
+    </message>
+    <message>
+        <source>Room “%1”</source>
+        <translation>La pièce « %1 »</translation>
+    </message>
+</context>
+<context>
+    <name>fc::ui</name>
+    <message>
+        <source>Office floor</source>
+        <translation>Étage de bureaux</translation>
+    </message>
+    <message>
+        <source>Twelve offices along a corridor, 0.9 m doors</source>
+        <translation>Douze bureaux le long d’un couloir, portes de 0,9 m</translation>
+    </message>
+    <message>
+        <source>Hospital ward</source>
+        <translation>Service hospitalier</translation>
+    </message>
+    <message>
+        <source>Sixteen patient rooms with beds and a corridor</source>
+        <translation>Seize chambres de patients avec lits et un couloir</translation>
+    </message>
+    <message>
+        <source>Room with a pillar</source>
+        <translation>Pièce avec un pilier</translation>
+    </message>
+    <message>
+        <source>One room with an obstacle in it</source>
+        <translation>Une pièce avec un obstacle à l’intérieur</translation>
+    </message>
+    <message>
+        <source>Room with notches</source>
+        <translation>Pièce avec renfoncements</translation>
+    </message>
+    <message>
+        <source>One room whose walls have recesses</source>
+        <translation>Une pièce dont les murs ont des renfoncements</translation>
+    </message>
+    <message>
+        <source>Slanted room</source>
+        <translation>Pièce en biais</translation>
+    </message>
+    <message>
+        <source>A room drawn at an angle, with an obstacle</source>
+        <translation>Une pièce dessinée en biais, avec un obstacle</translation>
+    </message>
+    <message>
+        <source>Simple room</source>
+        <translation>Pièce simple</translation>
+    </message>
+    <message>
+        <source>The smallest example: one room, one obstacle</source>
+        <translation>Le plus petit exemple : une pièce, un obstacle</translation>
     </message>
 </context>
 <context>
@@ -200,6 +355,14 @@
         <source>%1 drives %3 % of the extra distance of %2 (a published method) and makes %4 % of its turns; below 100 % is better. The published comparison: %5.</source>
         <translation>%1 parcourt %3 % de la distance supplémentaire de %2 (une méthode publiée) et fait %4 % de ses virages ; moins de 100 %, c’est mieux. La comparaison publiée : %5.</translation>
     </message>
+    <message>
+        <source>Close; a comparison still running is cancelled at once</source>
+        <translation>Fermer ; une comparaison encore en cours est annulée aussitôt</translation>
+    </message>
+    <message>
+        <source>One row per solver; hover a column&apos;s title for what it means.</source>
+        <translation>Une ligne par solveur ; survolez le titre d’une colonne pour voir ce qu’il signifie.</translation>
+    </message>
 </context>
 <context>
     <name>fc::ui::Document</name>
@@ -355,6 +518,22 @@
         <source>Split room %1 (new room %2)</source>
         <translation>Diviser la pièce %1 (nouvelle pièce %2)</translation>
     </message>
+    <message>
+        <source>The plan cannot be repaired automatically: %1</source>
+        <translation>Le plan ne peut pas être réparé automatiquement : %1</translation>
+    </message>
+    <message>
+        <source>The automatic repair left a problem: %1</source>
+        <translation>La réparation automatique a laissé un problème : %1</translation>
+    </message>
+    <message>
+        <source>Repair plan</source>
+        <translation>Réparer le plan</translation>
+    </message>
+    <message>
+        <source>This plan has problems (see the Problems panel): repair it first with Plan &gt; Repair Plan, or undo back to a valid plan.</source>
+        <translation>Ce plan a des problèmes (voir le panneau Problèmes) : réparez-le d’abord avec Planifier &gt; Réparer le plan, ou annulez jusqu’à revenir à un plan valide.</translation>
+    </message>
 </context>
 <context>
     <name>fc::ui::DocumentFiles</name>
@@ -407,6 +586,17 @@
     <message>
         <source>Edit Vertices: drag a vertex to move it, double-click an edge to add one, right-click a vertex to delete it; select a polygon and press Delete to delete it.</source>
         <translation>Modifier les sommets : faites glisser un sommet pour le déplacer, double-cliquez une arête pour en ajouter un, clic droit sur un sommet pour le supprimer ; sélectionnez un polygone et appuyez sur Suppr pour le supprimer.</translation>
+    </message>
+</context>
+<context>
+    <name>fc::ui::HelpDialog</name>
+    <message>
+        <source>Getting Started with FloorCover</source>
+        <translation>Premiers pas avec FloorCover</translation>
+    </message>
+    <message>
+        <source>Close the guide</source>
+        <translation>Fermer le guide</translation>
     </message>
 </context>
 <context>
@@ -571,12 +761,76 @@
         <source>%1 walls straightened at %2°: %3 m² of floor gained, %4 m² lost (%5 notches filled); %6 unknown gaps became floor.</source>
         <translation>%1 murs redressés à %2° : %3 m² de sol gagnés, %4 m² perdus (%5 encoches comblées) ; %6 lacunes inconnues sont devenues du sol.</translation>
     </message>
+    <message>
+        <source>The drawing&apos;s layers: choose what each holds (walls, obstacles, rooms, or nothing to import).</source>
+        <translation>Les calques du dessin : choisissez ce que contient chacun (murs, obstacles, pièces, ou rien à importer).</translation>
+    </message>
+    <message>
+        <source>How many metres one drawing unit is (0.001 for a drawing in mm).</source>
+        <translation>Combien de mètres vaut une unité du dessin (0,001 pour un dessin en mm).</translation>
+    </message>
+    <message>
+        <source>Lines whose ends are at most this far apart are joined into closed outlines.</source>
+        <translation>Les lignes dont les extrémités sont au plus à cette distance sont reliées en contours fermés.</translation>
+    </message>
+    <message>
+        <source>What the import left out or guessed, and why.</source>
+        <translation>Ce que l’import a laissé de côté ou deviné, et pourquoi.</translation>
+    </message>
+    <message>
+        <source>Open the import as its own document instead of replacing the plan of the current one.</source>
+        <translation>Ouvrir l’import comme document séparé au lieu de remplacer le plan du document courant.</translation>
+    </message>
+    <message>
+        <source>What the map&apos;s unknown (grey) cells are: walls, or floor the robot may clean.</source>
+        <translation>Ce que sont les cellules inconnues (grises) de la carte : des murs, ou du sol que le robot peut nettoyer.</translation>
+    </message>
+    <message>
+        <source>How the map&apos;s free space is split into rooms: at doorways (two methods), or kept as one room.</source>
+        <translation>Comment l’espace libre de la carte est divisé en pièces : aux portes (deux méthodes), ou gardé en une seule pièce.</translation>
+    </message>
+    <message>
+        <source>What layer %1 holds</source>
+        <translation>Ce que contient le calque %1</translation>
+    </message>
 </context>
 <context>
     <name>fc::ui::LegendDock</name>
     <message>
         <source>Legend</source>
         <translation>Légende</translation>
+    </message>
+    <message>
+        <source>Transit</source>
+        <translation>Trajet à vide</translation>
+    </message>
+    <message>
+        <source>Moves between cells and rooms without cleaning (part of the Path)</source>
+        <translation>Déplacements entre cellules et pièces sans nettoyer (font partie du Trajet)</translation>
+    </message>
+    <message>
+        <source>S</source>
+        <translation>D</translation>
+    </message>
+    <message>
+        <source>Start</source>
+        <translation>Départ</translation>
+    </message>
+    <message>
+        <source>Where the robot starts: yours, or the planner&apos;s choice when none is placed</source>
+        <translation>Là où le robot part : votre départ, ou le choix du planificateur si aucun n’est placé</translation>
+    </message>
+    <message>
+        <source>E</source>
+        <translation>A</translation>
+    </message>
+    <message>
+        <source>End</source>
+        <translation>Arrivée</translation>
+    </message>
+    <message>
+        <source>Where the path ends</source>
+        <translation>Là où le trajet se termine</translation>
     </message>
 </context>
 <context>
@@ -708,10 +962,6 @@ Planification de trajets de couverture pour robots de nettoyage et de désinfect
         <translation>&amp;Ouvrir…</translation>
     </message>
     <message>
-        <source>Open &amp;Sample Plan</source>
-        <translation>Ouvrir le plan d’&amp;exemple</translation>
-    </message>
-    <message>
         <source>Open &amp;Recent</source>
         <translation>Fichiers &amp;récents</translation>
     </message>
@@ -742,10 +992,6 @@ Planification de trajets de couverture pour robots de nettoyage et de désinfect
     <message>
         <source>Export Report</source>
         <translation>Exporter le rapport</translation>
-    </message>
-    <message>
-        <source>PDF documents (*.pdf)</source>
-        <translation>Documents PDF (*.pdf)</translation>
     </message>
     <message>
         <source>&amp;Quit</source>
@@ -924,6 +1170,54 @@ Planification de trajets de couverture pour robots de nettoyage et de désinfect
         <source>The project was saved, but not its trained model: %1</source>
         <translation>Le projet a été enregistré, mais pas son modèle entraîné : %1</translation>
     </message>
+    <message>
+        <source>&amp;Path View</source>
+        <translation>Vue &amp;Trajet</translation>
+    </message>
+    <message>
+        <source>The floor, the rooms and the path with its start and end</source>
+        <translation>Le sol, les pièces et le trajet avec son départ et son arrivée</translation>
+    </message>
+    <message>
+        <source>&amp;Graph View</source>
+        <translation>Vue Gra&amp;phe</translation>
+    </message>
+    <message>
+        <source>Adds the planner&apos;s cells, corners and graph edges</source>
+        <translation>Ajoute les cellules, les coins et les arêtes du graphe du planificateur</translation>
+    </message>
+    <message>
+        <source>Open &amp;Sample</source>
+        <translation>Ouvrir un exe&amp;mple</translation>
+    </message>
+    <message>
+        <source>PDF report, A4 (*.pdf)</source>
+        <translation>Rapport PDF, A4 (*.pdf)</translation>
+    </message>
+    <message>
+        <source>PDF report, A3 (*.pdf)</source>
+        <translation>Rapport PDF, A3 (*.pdf)</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1 : %2</translation>
+    </message>
+    <message>
+        <source>&amp;Getting Started</source>
+        <translation>P&amp;remiers pas</translation>
+    </message>
+    <message>
+        <source>A short guide through a first plan</source>
+        <translation>Un court guide pour réaliser un premier plan</translation>
+    </message>
+    <message>
+        <source>&amp;Welcome Page</source>
+        <translation>Page d’&amp;accueil</translation>
+    </message>
+    <message>
+        <source>The sample plans and the ways to start</source>
+        <translation>Les plans d’exemple et les façons de commencer</translation>
+    </message>
 </context>
 <context>
     <name>fc::ui::OverlayLayer</name>
@@ -975,6 +1269,50 @@ Planification de trajets de couverture pour robots de nettoyage et de désinfect
         <source>Coverage Gaps</source>
         <translation>Zones non couvertes</translation>
     </message>
+    <message>
+        <source>The cells the floor is split into, one colour per room, with their numbers</source>
+        <translation>Les cellules qui découpent le sol, une couleur par pièce, avec leurs numéros</translation>
+    </message>
+    <message>
+        <source>Narrow strips between cells the robot passes through (hatched)</source>
+        <translation>Bandes étroites entre cellules que le robot traverse (hachurées)</translation>
+    </message>
+    <message>
+        <source>Where the floor&apos;s shape changes and one cell ends (dashed)</source>
+        <translation>Là où la forme du sol change et où une cellule se termine (en tirets)</translation>
+    </message>
+    <message>
+        <source>The cells&apos; corners, where the path may enter or leave a cell</source>
+        <translation>Les coins des cellules, où le trajet peut entrer dans une cellule ou en sortir</translation>
+    </message>
+    <message>
+        <source>Which corners a cell&apos;s stripes join (entry and exit pairs)</source>
+        <translation>Les coins que relient les bandes d’une cellule (paires entrée-sortie)</translation>
+    </message>
+    <message>
+        <source>Moves along a cell&apos;s edge between its corners</source>
+        <translation>Déplacements le long du bord d’une cellule, entre ses coins</translation>
+    </message>
+    <message>
+        <source>Moves from one cell to the next</source>
+        <translation>Déplacements d’une cellule à la suivante</translation>
+    </message>
+    <message>
+        <source>The robot&apos;s path: cleaning stripes in red, transit moves dashed, arrows for the direction</source>
+        <translation>Le trajet du robot : bandes de nettoyage en rouge, trajets à vide en tirets, flèches pour le sens</translation>
+    </message>
+    <message>
+        <source>Where the path passes over floor it has already cleaned (blue)</source>
+        <translation>Là où le trajet repasse sur du sol déjà nettoyé (bleu)</translation>
+    </message>
+    <message>
+        <source>Floor the robot cannot reach: gaps narrower than the robot, corners beyond its head</source>
+        <translation>Sol que le robot ne peut pas atteindre : passages plus étroits que le robot, coins hors de portée de sa tête de nettoyage</translation>
+    </message>
+    <message>
+        <source>Spots the robot could clean but the path misses</source>
+        <translation>Zones que le robot pourrait nettoyer mais que le trajet ne couvre pas</translation>
+    </message>
 </context>
 <context>
     <name>fc::ui::PathPreviewBar</name>
@@ -1018,28 +1356,52 @@ Planification de trajets de couverture pour robots de nettoyage et de désinfect
         <translation>%1 m</translation>
     </message>
     <message>
-        <source>Solver</source>
-        <translation>Solveur</translation>
+        <source>&lt; 1 min</source>
+        <translation>&lt; 1 min</translation>
     </message>
     <message>
-        <source>Stripe angle</source>
-        <translation>Angle des bandes</translation>
+        <source>%1 min</source>
+        <translation>%1 min</translation>
+    </message>
+    <message>
+        <source>%1 h %2 min</source>
+        <translation>%1 h %2 min</translation>
+    </message>
+    <message>
+        <source>(%1, %2) m</source>
+        <translation>(%1 ; %2) m</translation>
+    </message>
+    <message>
+        <source>per room, along its walls</source>
+        <translation>par pièce, le long de ses murs</translation>
     </message>
     <message>
         <source>%1°</source>
         <translation>%1°</translation>
     </message>
     <message>
+        <source>Rooms planned</source>
+        <translation>Pièces planifiées</translation>
+    </message>
+    <message>
+        <source>%1 of %2</source>
+        <translation>%1 sur %2</translation>
+    </message>
+    <message>
+        <source>Estimated time</source>
+        <translation>Durée estimée</translation>
+    </message>
+    <message>
         <source>Path length</source>
         <translation>Longueur du trajet</translation>
     </message>
     <message>
-        <source>Ideal length</source>
-        <translation>Longueur idéale</translation>
-    </message>
-    <message>
         <source>Extra distance</source>
         <translation>Distance supplémentaire</translation>
+    </message>
+    <message>
+        <source>%1 (%2 % over the ideal %3)</source>
+        <translation>%1 (%2 % de plus que l’idéal de %3)</translation>
     </message>
     <message>
         <source>Turns</source>
@@ -1050,20 +1412,40 @@ Planification de trajets de couverture pour robots de nettoyage et de désinfect
         <translation>Couverture</translation>
     </message>
     <message>
-        <source>%1 %</source>
-        <translation>%1 %</translation>
+        <source>%1 % of the floor the robot can reach</source>
+        <translation>%1 % du sol accessible au robot</translation>
     </message>
     <message>
-        <source>Estimated time</source>
-        <translation>Durée estimée</translation>
+        <source>Missed</source>
+        <translation>Non couvert</translation>
     </message>
     <message>
-        <source>%1 min</source>
-        <translation>%1 min</translation>
+        <source>%1 m²</source>
+        <translation>%1 m²</translation>
     </message>
     <message>
-        <source>Cells covered</source>
-        <translation>Cellules couvertes</translation>
+        <source>Too narrow for the robot</source>
+        <translation>Trop étroit pour le robot</translation>
+    </message>
+    <message>
+        <source>Start</source>
+        <translation>Démarrer</translation>
+    </message>
+    <message>
+        <source>%1, chosen by the planner</source>
+        <translation>%1, choisi par le planificateur</translation>
+    </message>
+    <message>
+        <source>End</source>
+        <translation>Arrivée</translation>
+    </message>
+    <message>
+        <source>Planner</source>
+        <translation>Planificateur</translation>
+    </message>
+    <message>
+        <source>%1, stripes %2</source>
+        <translation>%1, bandes %2</translation>
     </message>
     <message>
         <source>Robot diameter L</source>
@@ -1094,12 +1476,88 @@ Planification de trajets de couverture pour robots de nettoyage et de désinfect
         <translation>%1 s</translation>
     </message>
     <message>
-        <source>Coverage plan: %1</source>
-        <translation>Plan de couverture : %1</translation>
+        <source>Order</source>
+        <translation>Ordre</translation>
+    </message>
+    <message>
+        <source>Room</source>
+        <translation>Pièce</translation>
+    </message>
+    <message>
+        <source>Area</source>
+        <translation>Surface</translation>
+    </message>
+    <message>
+        <source>Path</source>
+        <translation>Trajet</translation>
+    </message>
+    <message>
+        <source>Time</source>
+        <translation>Durée</translation>
+    </message>
+    <message>
+        <source>not planned</source>
+        <translation>non planifiée</translation>
+    </message>
+    <message>
+        <source>Between rooms</source>
+        <translation>Entre les pièces</translation>
+    </message>
+    <message>
+        <source>Total</source>
+        <translation>Total</translation>
+    </message>
+    <message>
+        <source>S</source>
+        <translation>D</translation>
+    </message>
+    <message>
+        <source>E</source>
+        <translation>A</translation>
+    </message>
+    <message>
+        <source>Cleaning path</source>
+        <translation>Trajet de nettoyage</translation>
+    </message>
+    <message>
+        <source>Transit</source>
+        <translation>Trajet à vide</translation>
+    </message>
+    <message>
+        <source>Overlap</source>
+        <translation>Chevauchement</translation>
+    </message>
+    <message>
+        <source>Missed spots</source>
+        <translation>Zones non couvertes</translation>
+    </message>
+    <message>
+        <source>Too narrow</source>
+        <translation>Trop étroit</translation>
+    </message>
+    <message>
+        <source>Rooms in cleaning order</source>
+        <translation>Pièces dans l’ordre de nettoyage</translation>
+    </message>
+    <message>
+        <source>Cannot write %1: %2</source>
+        <translation>Impossible d’écrire %1 : %2</translation>
+    </message>
+    <message>
+        <source>Cleaning plan: %1</source>
+        <translation>Plan de nettoyage : %1</translation>
     </message>
     <message>
         <source>Cannot write %1.</source>
         <translation>Impossible d’écrire %1.</translation>
+    </message>
+    <message>
+        <source>Summary</source>
+        <translation>Résumé</translation>
+    </message>
+    <message>
+        <source>Robot profile</source>
+        <translation>Profil du robot</translation>
     </message>
 </context>
 <context>
@@ -1190,6 +1648,14 @@ Planification de trajets de couverture pour robots de nettoyage et de désinfect
         <source>The corner the planner starts or ends at</source>
         <translation>Le coin où le planificateur commence ou finit</translation>
     </message>
+    <message>
+        <source>Start, chosen by the planner</source>
+        <translation>Départ, choisi par le planificateur</translation>
+    </message>
+    <message>
+        <source>End of the path</source>
+        <translation>Fin du trajet</translation>
+    </message>
 </context>
 <context>
     <name>fc::ui::PlanningController</name>
@@ -1204,6 +1670,10 @@ Planification de trajets de couverture pour robots de nettoyage et de désinfect
     <message>
         <source>Sketching the path</source>
         <translation>Esquisse du trajet</translation>
+    </message>
+    <message>
+        <source>This plan has problems: repair it first (Plan &gt; Repair Plan, or the button in the Problems panel).</source>
+        <translation>Ce plan a des problèmes : réparez-le d’abord (Planifier &gt; Réparer le plan, ou le bouton du panneau Problèmes).</translation>
     </message>
 </context>
 <context>
@@ -1400,6 +1870,34 @@ Planification de trajets de couverture pour robots de nettoyage et de désinfect
         <source>A quick sketch of the path is shown; the planner is refining it…</source>
         <translation>Une esquisse rapide du trajet est affichée ; le planificateur l’affine…</translation>
     </message>
+    <message>
+        <source>The robot&apos;s body, L: its centre keeps L/2 from walls, and doors narrower than L are not passed.</source>
+        <translation>Le corps du robot, L : son centre reste à L/2 des murs, et il ne passe pas les portes plus étroites que L.</translation>
+    </message>
+    <message>
+        <source>The width the cleaning head reaches, D (at least W).</source>
+        <translation>La largeur couverte par la tête de nettoyage, D (au moins W).</translation>
+    </message>
+    <message>
+        <source>Distance between neighbouring stripes, W (between L and D): smaller overlaps more, larger risks gaps.</source>
+        <translation>Distance entre bandes voisines, W (entre L et D) : plus petite, plus de chevauchement ; plus grande, risque de zones oubliées.</translation>
+    </message>
+    <message>
+        <source>Driving speed, for the estimated time.</source>
+        <translation>Vitesse de déplacement, pour la durée estimée.</translation>
+    </message>
+    <message>
+        <source>Seconds the robot needs to turn by 90°, for the estimated time.</source>
+        <translation>Secondes nécessaires au robot pour tourner de 90°, pour la durée estimée.</translation>
+    </message>
+    <message>
+        <source>How the order of the cells is chosen: heuristic is fast and close to the best; exact proves the best order on small floors; greedy is the quickest sketch; dqn uses the model trained in the Training panel.</source>
+        <translation>Comment l’ordre des cellules est choisi : heuristic est rapide et proche du meilleur ; exact prouve le meilleur ordre sur les petites surfaces ; greedy donne l’esquisse la plus rapide ; dqn utilise le modèle entraîné dans le panneau Entraînement.</translation>
+    </message>
+    <message>
+        <source>The stripes&apos; direction in degrees (90 = vertical), for One angle for the floor.</source>
+        <translation>La direction des bandes en degrés (90 = verticale), pour « Un angle pour tout l’étage ».</translation>
+    </message>
 </context>
 <context>
     <name>fc::ui::PpoTrainer</name>
@@ -1458,6 +1956,14 @@ Planification de trajets de couverture pour robots de nettoyage et de désinfect
         <source>Training cancelled before its first update; no model.</source>
         <translation>Entraînement annulé avant sa première mise à jour ; aucun modèle.</translation>
     </message>
+    <message>
+        <source>Train the learnt ordering (ppo) in the background for the time set.</source>
+        <translation>Entraîner l’ordre appris (ppo) en arrière-plan pendant la durée choisie.</translation>
+    </message>
+    <message>
+        <source>End training; what was learnt so far is kept.</source>
+        <translation>Terminer l’entraînement ; ce qui a été appris jusqu’ici est conservé.</translation>
+    </message>
 </context>
 <context>
     <name>fc::ui::PreferencesDialog</name>
@@ -1472,6 +1978,48 @@ Planification de trajets de couverture pour robots de nettoyage et de désinfect
     <message>
         <source>Language</source>
         <translation>Langue</translation>
+    </message>
+    <message>
+        <source>The language of the editor, its messages and Qt&apos;s dialogs</source>
+        <translation>La langue de l’éditeur, de ses messages et des boîtes de dialogue de Qt</translation>
+    </message>
+</context>
+<context>
+    <name>fc::ui::ProblemsDock</name>
+    <message>
+        <source>Problems</source>
+        <translation>Problèmes</translation>
+    </message>
+    <message>
+        <source>Repair Plan</source>
+        <translation>Réparer le plan</translation>
+    </message>
+    <message>
+        <source>&amp;Repair Plan</source>
+        <translation>Réparer &amp;le plan</translation>
+    </message>
+    <message>
+        <source>Click a problem to see where it is on the plan.</source>
+        <translation>Cliquez sur un problème pour voir où il se trouve sur le plan.</translation>
+    </message>
+    <message>
+        <source>Makes the plan valid: walls that cross themselves are split where they cross, obstacles that overlap or cross the wall are merged or clipped, rooms are fitted to the floor. Undo (Ctrl+Z) brings the plan back as it was.</source>
+        <translation>Rend le plan valide : les murs qui se croisent sont coupés à leurs croisements, les obstacles qui se chevauchent ou traversent le mur sont fusionnés ou découpés, les pièces sont ajustées au sol. Annuler (Ctrl+Z) rétablit le plan tel qu’il était.</translation>
+    </message>
+    <message numerus="yes">
+        <source>This plan cannot be planned as it is: %n problem(s). It is open read-only and nothing is lost; repair it to plan.</source>
+        <translation>
+            <numerusform>Ce plan ne peut pas être planifié tel quel : %n problème. Il est ouvert en lecture seule et rien n’est perdu ; réparez-le pour planifier.</numerusform>
+            <numerusform>Ce plan ne peut pas être planifié tel quel : %n problèmes. Il est ouvert en lecture seule et rien n’est perdu ; réparez-le pour planifier.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Repaired. What changed (Edit &gt; Undo brings the old plan back):</source>
+        <translation>Réparé. Ce qui a changé (Édition &gt; Annuler rétablit l’ancien plan) :</translation>
+    </message>
+    <message>
+        <source>No problems: the plan can be planned.</source>
+        <translation>Aucun problème : le plan peut être planifié.</translation>
     </message>
 </context>
 <context>
@@ -1608,6 +2156,26 @@ Planification de trajets de couverture pour robots de nettoyage et de désinfect
     <message>
         <source>&lt;b&gt;Export failed:&lt;/b&gt; %1</source>
         <translation>&lt;b&gt;Échec de l’export :&lt;/b&gt; %1</translation>
+    </message>
+    <message>
+        <source>Random seed of the ordering methods that use chance (aco, ga, ppo): the same seed gives the same tour.</source>
+        <translation>Graine aléatoire des méthodes d’ordre qui utilisent le hasard (aco, ga, ppo) : la même graine donne le même parcours.</translation>
+    </message>
+    <message>
+        <source>Side of one block of the tiling robot in metres.</source>
+        <translation>Côté d’un bloc du robot à pavage, en mètres.</translation>
+    </message>
+    <message>
+        <source>Tile the floor with the robot&apos;s shapes and order the tiles by energy.</source>
+        <translation>Paver le sol avec les formes du robot et ordonner les tuiles selon l’énergie.</translation>
+    </message>
+    <message>
+        <source>Draw the tiles and their tour over the plan.</source>
+        <translation>Afficher les tuiles et leur parcours sur le plan.</translation>
+    </message>
+    <message>
+        <source>Write the ordered waypoints (position, shape, heading) as CSV or JSON for the robot.</source>
+        <translation>Écrire les points de passage ordonnés (position, forme, orientation) en CSV ou JSON pour le robot.</translation>
     </message>
 </context>
 <context>
@@ -1822,12 +2390,103 @@ Planification de trajets de couverture pour robots de nettoyage et de désinfect
         <source>cannot replace the file</source>
         <translation>impossible de remplacer le fichier</translation>
     </message>
+    <message>
+        <source>Train the learnt planner (solver dqn) for this plan in the background; the curve shows its reward per episode.</source>
+        <translation>Entraîner le planificateur appris (solveur dqn) pour ce plan en arrière-plan ; la courbe montre sa récompense par épisode.</translation>
+    </message>
+    <message>
+        <source>Pause training and keep the model so far; Resume goes on.</source>
+        <translation>Mettre l’entraînement en pause et garder le modèle obtenu ; Reprendre le poursuit.</translation>
+    </message>
+    <message>
+        <source>End training; the model so far is kept for solver dqn.</source>
+        <translation>Terminer l’entraînement ; le modèle obtenu est conservé pour le solveur dqn.</translation>
+    </message>
+    <message>
+        <source>Save the trained model to a .fcdqn file (saving the project also saves it beside the project).</source>
+        <translation>Enregistrer le modèle entraîné dans un fichier .fcdqn (l’enregistrement du projet l’enregistre aussi à côté du projet).</translation>
+    </message>
+    <message>
+        <source>Load a model trained for this plan from a .fcdqn file.</source>
+        <translation>Charger depuis un fichier .fcdqn un modèle entraîné pour ce plan.</translation>
+    </message>
 </context>
 <context>
     <name>fc::ui::Translations</name>
     <message>
         <source>System language</source>
         <translation>Langue du système</translation>
+    </message>
+</context>
+<context>
+    <name>fc::ui::WelcomeDialog</name>
+    <message>
+        <source>Show this page at start</source>
+        <translation>Afficher cette page au démarrage</translation>
+    </message>
+    <message>
+        <source>Welcome to FloorCover</source>
+        <translation>Bienvenue dans FloorCover</translation>
+    </message>
+    <message>
+        <source>&lt;h2&gt;Welcome to FloorCover&lt;/h2&gt;&lt;p&gt;FloorCover plans the path a cleaning or disinfection robot drives to cover a floor:&lt;/p&gt;&lt;ol&gt;&lt;li&gt;&lt;b&gt;Bring a floor plan&lt;/b&gt;: draw it, import a CAD drawing or the robot&apos;s map, or try a sample below.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Choose the rooms&lt;/b&gt; to clean and where the robot starts.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Check the path&lt;/b&gt; and its time, then export it for the robot or print a report.&lt;/li&gt;&lt;/ol&gt;</source>
+        <translation>&lt;h2&gt;Bienvenue dans FloorCover&lt;/h2&gt;&lt;p&gt;FloorCover planifie le trajet qu’un robot de nettoyage ou de désinfection parcourt pour couvrir un sol :&lt;/p&gt;&lt;ol&gt;&lt;li&gt;&lt;b&gt;Apportez un plan d’étage&lt;/b&gt; : dessinez-le, importez un dessin CAO ou la carte du robot, ou essayez un exemple ci-dessous.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Choisissez les pièces&lt;/b&gt; à nettoyer et le point de départ du robot.&lt;/li&gt;&lt;li&gt;&lt;b&gt;Vérifiez le trajet&lt;/b&gt; et sa durée, puis exportez-le pour le robot ou imprimez un rapport.&lt;/li&gt;&lt;/ol&gt;</translation>
+    </message>
+    <message>
+        <source>Double-click a sample to open it</source>
+        <translation>Double-cliquez sur un exemple pour l’ouvrir</translation>
+    </message>
+    <message>
+        <source>Open Sample</source>
+        <translation>Ouvrir un exemple</translation>
+    </message>
+    <message>
+        <source>Open the selected sample plan</source>
+        <translation>Ouvrir le plan d’exemple sélectionné</translation>
+    </message>
+    <message>
+        <source>Draw a New Floor</source>
+        <translation>Dessiner un nouveau plan</translation>
+    </message>
+    <message>
+        <source>Start an empty drawing with the Draw Boundary tool</source>
+        <translation>Commencer un dessin vide avec l’outil Dessiner le contour</translation>
+    </message>
+    <message>
+        <source>Import a Drawing or Map…</source>
+        <translation>Importer un dessin ou une carte…</translation>
+    </message>
+    <message>
+        <source>DXF drawings, the robot&apos;s occupancy map (.yaml), WKT, GeoJSON or 3D building models</source>
+        <translation>Dessins DXF, carte d’occupation du robot (.yaml), WKT, GeoJSON ou maquettes 3D de bâtiment</translation>
+    </message>
+    <message>
+        <source>Open a Project…</source>
+        <translation>Ouvrir un projet…</translation>
+    </message>
+    <message>
+        <source>Open a saved .fcproj or .geojson</source>
+        <translation>Ouvrir un fichier .fcproj ou .geojson enregistré</translation>
+    </message>
+    <message>
+        <source>Getting Started</source>
+        <translation>Premiers pas</translation>
+    </message>
+    <message>
+        <source>A short guide through a first plan (F1)</source>
+        <translation>Un court guide pour réaliser un premier plan (F1)</translation>
+    </message>
+    <message>
+        <source>Help &gt; Welcome Page shows it again at any time</source>
+        <translation>Aide &gt; Page d’accueil la réaffiche à tout moment</translation>
+    </message>
+    <message>
+        <source>Close this page</source>
+        <translation>Fermer cette page</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;Sample plans&lt;/b&gt;</source>
+        <translation>&lt;b&gt;Plans d’exemple&lt;/b&gt;</translation>
     </message>
 </context>
 <context>

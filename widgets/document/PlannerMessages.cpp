@@ -8,7 +8,9 @@ namespace fc::ui {
 
 namespace {
 
-QString tr(const char* text) {
+// Not named tr(): lupdate would file the strings under the enclosing namespace. The texts
+// are marked with QT_TRANSLATE_NOOP in the "PlannerMessages" context instead.
+QString translated(const char* text) {
     return QCoreApplication::translate("PlannerMessages", text);
 }
 
@@ -17,11 +19,11 @@ QString ringName(const QString& planner) {
     static const QRegularExpression obstacle(QStringLiteral("^obstacle (\\d+)$"));
     static const QRegularExpression room(QStringLiteral("^room \"(.*)\"$"));
     if (planner == QLatin1String("boundary"))
-        return tr("The outer wall");
+        return translated(QT_TRANSLATE_NOOP("PlannerMessages", "The outer wall"));
     if (const auto m = obstacle.match(planner); m.hasMatch())
-        return tr("Obstacle %1").arg(m.captured(1));
+        return translated(QT_TRANSLATE_NOOP("PlannerMessages", "Obstacle %1")).arg(m.captured(1));
     if (const auto m = room.match(planner); m.hasMatch())
-        return tr("Room “%1”").arg(m.captured(1));
+        return translated(QT_TRANSLATE_NOOP("PlannerMessages", "Room “%1”")).arg(m.captured(1));
     return planner;
 }
 
@@ -143,7 +145,7 @@ QString plainMessage(const QString& message) {
         const QRegularExpressionMatch m = form.pattern.match(message);
         if (!m.hasMatch())
             continue;
-        QString sentence = tr(form.sentence);
+        QString sentence = translated(form.sentence);
         const QStringList names = form.pattern.namedCaptureGroups();
         for (int i = 1; i <= form.pattern.captureCount(); ++i) {
             QString value = m.captured(i);

@@ -24,23 +24,24 @@ namespace {
 struct PdfReportText {
     Q_DECLARE_TR_FUNCTIONS(fc::ui::PdfReport)
 };
-using T = PdfReportText;
 
 QString metres(double v) {
-    return T::tr("%1 m").arg(QLocale().toString(v, 'f', 1));
+    return PdfReportText::tr("%1 m").arg(QLocale().toString(v, 'f', 1));
 }
 
 QString duration(double seconds) {
     const int minutes = static_cast<int>(std::lround(seconds / 60.0));
     if (seconds > 0 && minutes == 0)
-        return T::tr("< 1 min");
+        return PdfReportText::tr("< 1 min");
     if (minutes < 60)
-        return T::tr("%1 min").arg(minutes);
-    return T::tr("%1 h %2 min").arg(minutes / 60).arg(minutes % 60, 2, 10, QLatin1Char('0'));
+        return PdfReportText::tr("%1 min").arg(minutes);
+    return PdfReportText::tr("%1 h %2 min")
+        .arg(minutes / 60)
+        .arg(minutes % 60, 2, 10, QLatin1Char('0'));
 }
 
 QString point(Vec2 p) {
-    return T::tr("(%1, %2) m")
+    return PdfReportText::tr("(%1, %2) m")
         .arg(QLocale().toString(p.x, 'f', 2), QLocale().toString(p.y, 'f', 2));
 }
 
@@ -51,61 +52,70 @@ QList<QPair<QString, QString>> reportSummary(const Document& document, const Pla
     const Project& project = document.project();
     const QString solver =
         fromStd(result.solution.solver.empty() ? project.solver : result.solution.solver);
-    const QString angle = result.parts.size() > 1
-                              ? T::tr("per room, along its walls")
-                              : T::tr("%1°").arg(QLocale().toString(result.stripeAngleDeg, 'f', 0));
+    const QString angle =
+        result.parts.size() > 1
+            ? PdfReportText::tr("per room, along its walls")
+            : PdfReportText::tr("%1°").arg(QLocale().toString(result.stripeAngleDeg, 'f', 0));
     const int rooms = static_cast<int>(project.plan.rooms.size());
     const int planned =
         project.selectedRooms.empty() ? rooms : static_cast<int>(project.selectedRooms.size());
     QList<QPair<QString, QString>> rows = {
-        {T::tr("Rooms planned"), T::tr("%1 of %2").arg(planned).arg(rooms)},
-        {T::tr("Estimated time"), duration(m.time)},
-        {T::tr("Path length"), metres(m.length)},
-        {T::tr("Extra distance"),
-         T::tr("%1 (%2 % over the ideal %3)")
+        {PdfReportText::tr("Rooms planned"), PdfReportText::tr("%1 of %2").arg(planned).arg(rooms)},
+        {PdfReportText::tr("Estimated time"), duration(m.time)},
+        {PdfReportText::tr("Path length"), metres(m.length)},
+        {PdfReportText::tr("Extra distance"),
+         PdfReportText::tr("%1 (%2 % over the ideal %3)")
              .arg(metres(m.extra))
              .arg(m.ideal > 0 ? QLocale().toString(100.0 * m.extra / m.ideal, 'f', 0)
                               : QStringLiteral("–"))
              .arg(metres(m.ideal))},
-        {T::tr("Turns"), QString::number(m.turns)},
-        {T::tr("Coverage"), T::tr("%1 % of the floor the robot can reach")
-                                .arg(QLocale().toString(100.0 * m.coverage, 'f', 1))},
+        {PdfReportText::tr("Turns"), QString::number(m.turns)},
+        {PdfReportText::tr("Coverage"), PdfReportText::tr("%1 % of the floor the robot can reach")
+                                            .arg(QLocale().toString(100.0 * m.coverage, 'f', 1))},
     };
     if (m.uncoveredArea > 0.005)
-        rows.append(
-            {T::tr("Missed"), T::tr("%1 m²").arg(QLocale().toString(m.uncoveredArea, 'f', 2))});
+        rows.append({PdfReportText::tr("Missed"),
+                     PdfReportText::tr("%1 m²").arg(QLocale().toString(m.uncoveredArea, 'f', 2))});
     if (m.unreachableArea > 0.005)
-        rows.append({T::tr("Too narrow for the robot"),
-                     T::tr("%1 m²").arg(QLocale().toString(m.unreachableArea, 'f', 2))});
+        rows.append(
+            {PdfReportText::tr("Too narrow for the robot"),
+             PdfReportText::tr("%1 m²").arg(QLocale().toString(m.unreachableArea, 'f', 2))});
     const CoveragePath& path = result.path;
     if (!path.empty()) {
-        rows.append({T::tr("Start"),
-                     project.hasStart
-                         ? point(path.points.front())
-                         : T::tr("%1, chosen by the planner").arg(point(path.points.front()))});
-        rows.append({T::tr("End"), point(path.points.back())});
+        rows.append(
+            {PdfReportText::tr("Start"),
+             project.hasStart
+                 ? point(path.points.front())
+                 : PdfReportText::tr("%1, chosen by the planner").arg(point(path.points.front()))});
+        rows.append({PdfReportText::tr("End"), point(path.points.back())});
     }
-    rows.append({T::tr("Planner"), T::tr("%1, stripes %2").arg(solver, angle)});
+    rows.append(
+        {PdfReportText::tr("Planner"), PdfReportText::tr("%1, stripes %2").arg(solver, angle)});
     return rows;
 }
 
 QList<QPair<QString, QString>> reportRobot(const PlanResult& result) {
     const RobotProfile& robot = result.prepared.robot;
-    const auto m2 = [](double v) { return T::tr("%1 m").arg(QLocale().toString(v, 'f', 2)); };
+    const auto m2 = [](double v) {
+        return PdfReportText::tr("%1 m").arg(QLocale().toString(v, 'f', 2));
+    };
     return {
-        {T::tr("Robot diameter L"), m2(robot.robotDiameter)},
-        {T::tr("Cleaning diameter D"), m2(robot.cleaningDiameter)},
-        {T::tr("Coverage width W"), m2(robot.coverageWidth)},
-        {T::tr("Speed"), T::tr("%1 m/s").arg(QLocale().toString(robot.speed, 'f', 2))},
-        {T::tr("Time per 90° turn"), T::tr("%1 s").arg(QLocale().toString(robot.turnTime, 'f', 1))},
+        {PdfReportText::tr("Robot diameter L"), m2(robot.robotDiameter)},
+        {PdfReportText::tr("Cleaning diameter D"), m2(robot.cleaningDiameter)},
+        {PdfReportText::tr("Coverage width W"), m2(robot.coverageWidth)},
+        {PdfReportText::tr("Speed"),
+         PdfReportText::tr("%1 m/s").arg(QLocale().toString(robot.speed, 'f', 2))},
+        {PdfReportText::tr("Time per 90° turn"),
+         PdfReportText::tr("%1 s").arg(QLocale().toString(robot.turnTime, 'f', 1))},
     };
 }
 
 QList<QStringList> reportRoomTable(const Document& document, const PlanResult& result) {
     const auto visits = roomBreakdown(document.plan(), result.path, result.prepared.robot,
                                       &result.prepared.decomposition);
-    QList<QStringList> table = {{T::tr("Order"), T::tr("Room"), T::tr("Area"), T::tr("Path"),
-                                 T::tr("Turns"), T::tr("Time")}};
+    QList<QStringList> table = {{PdfReportText::tr("Order"), PdfReportText::tr("Room"),
+                                 PdfReportText::tr("Area"), PdfReportText::tr("Path"),
+                                 PdfReportText::tr("Turns"), PdfReportText::tr("Time")}};
     double area = 0, length = 0, time = 0;
     int turns = 0;
     for (const RoomVisit& visit : visits) {
@@ -113,18 +123,20 @@ QList<QStringList> reportRoomTable(const Document& document, const PlanResult& r
         const bool planned = outside || document.isRoomSelected(fromStd(visit.room));
         QString order = visit.order > 0 ? QString::number(visit.order) : QString();
         if (!outside && !planned)
-            order = T::tr("not planned");
-        table.append(
-            {order, outside ? T::tr("Between rooms") : fromStd(visit.room),
-             outside ? QString() : T::tr("%1 m²").arg(QLocale().toString(visit.area, 'f', 1)),
-             metres(visit.length), QString::number(visit.turns), duration(visit.time)});
+            order = PdfReportText::tr("not planned");
+        table.append({order, outside ? PdfReportText::tr("Between rooms") : fromStd(visit.room),
+                      outside
+                          ? QString()
+                          : PdfReportText::tr("%1 m²").arg(QLocale().toString(visit.area, 'f', 1)),
+                      metres(visit.length), QString::number(visit.turns), duration(visit.time)});
         area += visit.area;
         length += visit.length;
         time += visit.time;
         turns += visit.turns;
     }
-    table.append({QString(), T::tr("Total"), T::tr("%1 m²").arg(QLocale().toString(area, 'f', 1)),
-                  metres(length), QString::number(turns), duration(time)});
+    table.append({QString(), PdfReportText::tr("Total"),
+                  PdfReportText::tr("%1 m²").arg(QLocale().toString(area, 'f', 1)), metres(length),
+                  QString::number(turns), duration(time)});
     return table;
 }
 
@@ -213,7 +225,7 @@ double drawLegendEntry(QPainter& p, double x, double y, int kind, const QString&
         font.setPixelSize(7);
         p.setFont(font);
         p.drawText(QRectF(x + 5, y - 1, 12, 12), Qt::AlignCenter,
-                   kind == 5 ? T::tr("S") : T::tr("E"));
+                   kind == 5 ? PdfReportText::tr("S") : PdfReportText::tr("E"));
         break;
     }
     }
@@ -224,9 +236,13 @@ double drawLegendEntry(QPainter& p, double x, double y, int kind, const QString&
 
 double drawLegend(ReportPainter& r, double y) {
     r.setFont(8);
-    const QStringList names = {
-        T::tr("Cleaning path"), T::tr("Transit"), T::tr("Overlap"), T::tr("Missed spots"),
-        T::tr("Too narrow"),    T::tr("Start"),   T::tr("End")};
+    const QStringList names = {PdfReportText::tr("Cleaning path"),
+                               PdfReportText::tr("Transit"),
+                               PdfReportText::tr("Overlap"),
+                               PdfReportText::tr("Missed spots"),
+                               PdfReportText::tr("Too narrow"),
+                               PdfReportText::tr("Start"),
+                               PdfReportText::tr("End")};
     double x = 0;
     for (int i = 0; i < names.size(); ++i) {
         const double needed = 40 + r.painter().fontMetrics().horizontalAdvance(names[i]);
@@ -256,7 +272,7 @@ bool drawRoomTable(ReportPainter& r, QPdfWriter& writer, const QList<QStringList
     };
     r.setFont(10, true);
     p.drawText(QRectF(0, y, r.width(), r.lineHeight()), Qt::AlignLeft,
-               T::tr("Rooms in cleaning order"));
+               PdfReportText::tr("Rooms in cleaning order"));
     y += r.lineHeight() + 2;
     for (int i = 0; i < table.size(); ++i) {
         if (y + 2 * r.lineHeight() > r.height()) {
@@ -289,18 +305,18 @@ bool writePdfReport(const QString& path, const Document& document, const PlanRes
     };
     QSaveFile file(path);
     if (!file.open(QIODevice::WriteOnly))
-        return fail(T::tr("Cannot write %1: %2").arg(path, file.errorString()));
+        return fail(PdfReportText::tr("Cannot write %1: %2").arg(path, file.errorString()));
     QPdfWriter writer(&file);
     writer.setPageSize(pageSize);
     writer.setPageOrientation(QPageLayout::Portrait);
     writer.setPageMargins(QMarginsF(15, 15, 15, 15), QPageLayout::Millimeter);
     writer.setResolution(300);
-    const QString title = T::tr("Cleaning plan: %1").arg(document.displayName());
+    const QString title = PdfReportText::tr("Cleaning plan: %1").arg(document.displayName());
     writer.setTitle(title);
     writer.setCreator(QStringLiteral("FloorCover"));
     QPainter painter;
     if (!painter.begin(&writer))
-        return fail(T::tr("Cannot write %1.").arg(path));
+        return fail(PdfReportText::tr("Cannot write %1.").arg(path));
     painter.setRenderHint(QPainter::Antialiasing);
     const double toPoints = writer.resolution() / 72.0;
     painter.scale(toPoints, toPoints);
@@ -326,16 +342,16 @@ bool writePdfReport(const QString& path, const Document& document, const PlanRes
 
     double y = drawLegend(r, map.bottom() + 8);
     const double column = 0.5 * r.width() - 10;
-    const double left =
-        r.drawRows(reportSummary(document, result), 0, y, column, T::tr("Summary"), 0.34);
-    const double right =
-        r.drawRows(reportRobot(result), column + 20, y, column, T::tr("Robot profile"), 0.5);
+    const double left = r.drawRows(reportSummary(document, result), 0, y, column,
+                                   PdfReportText::tr("Summary"), 0.34);
+    const double right = r.drawRows(reportRobot(result), column + 20, y, column,
+                                    PdfReportText::tr("Robot profile"), 0.5);
     y = std::max(left, right) + 12;
     const bool tableDone = drawRoomTable(r, writer, reportRoomTable(document, result), y);
     if (!painter.end() || !tableDone)
-        return fail(T::tr("Cannot write %1.").arg(path));
+        return fail(PdfReportText::tr("Cannot write %1.").arg(path));
     if (!file.commit())
-        return fail(T::tr("Cannot write %1: %2").arg(path, file.errorString()));
+        return fail(PdfReportText::tr("Cannot write %1: %2").arg(path, file.errorString()));
     return true;
 }
 
