@@ -187,6 +187,7 @@ void EditorTest::planShowsPathAndMetrics() {
     PlanningController* planner = window->planningController();
     QTRY_VERIFY_WITH_TIMEOUT(planner->prepared() != nullptr, 20000);
     OverlayLayer* overlays = window->scene()->overlays();
+    window->setViewMode(ViewMode::Graph); // cells and graph are built for the Graph view
     QVERIFY(overlays->itemCount(OverlayKind::PrimaryCells) > 0);
     QVERIFY(overlays->itemCount(OverlayKind::TransitionCells) > 0);
     QVERIFY(overlays->itemCount(OverlayKind::CornerNodes) > 0);

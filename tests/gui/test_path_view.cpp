@@ -99,7 +99,8 @@ private slots:
         QVERIFY(window->planningController()->planAndWait());
         OverlayLayer* overlays = window->scene()->overlays();
         QCOMPARE(overlays->viewMode(), ViewMode::Path);              // the default for a supervisor
-        QVERIFY(overlays->itemCount(OverlayKind::PrimaryCells) > 0); // built, not shown
+        // Not even built: the Path view's new paths never wait for the graph's items.
+        QCOMPARE(overlays->itemCount(OverlayKind::PrimaryCells), 0);
         QVERIFY(!overlays->isShown(OverlayKind::PrimaryCells));
         QVERIFY(!overlays->isShown(OverlayKind::CornerNodes));
         QVERIFY(overlays->isShown(OverlayKind::Path));
@@ -121,6 +122,8 @@ private slots:
         QVERIFY(graphView);
         graphView->trigger();
         QVERIFY(overlays->isShown(OverlayKind::PrimaryCells));
+        QVERIFY(overlays->itemCount(OverlayKind::PrimaryCells) > 0); // built on the switch
+        QVERIFY(overlays->itemCount(OverlayKind::CornerNodes) > 0);
         QVERIFY(window->overlayAction(OverlayKind::PrimaryCells)->isEnabled());
         QCOMPARE(QSettings().value(QStringLiteral("view/mode")).toString(),
                  QStringLiteral("graph"));

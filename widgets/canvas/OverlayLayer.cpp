@@ -161,7 +161,10 @@ bool OverlayLayer::isShown(OverlayKind kind) const {
 }
 
 void OverlayLayer::setViewMode(ViewMode mode) {
+    const bool graphNeeded = mode == ViewMode::Graph && mode_ != ViewMode::Graph;
     mode_ = mode;
+    if (graphNeeded)
+        refresh(); // the cells and graph of what is shown, built now
     for (int i = 0; i < kOverlayKindCount; ++i)
         if (QGraphicsItemGroup* group = groups_[i])
             group->setVisible(isShown(static_cast<OverlayKind>(i)));
@@ -208,9 +211,13 @@ void OverlayLayer::refresh() {
     // Cells and graph are built again only when they are not what is shown: a new path of
     // the same floor (a changed query, the full plan after the draft) rebuilds only the
     // path's layers, so the canvas renders only those again (its items keep their pixels).
+    // The Path view shows none of them: they are built when the Graph view is chosen
+    // (setViewMode), which keeps every edit's new path from waiting on thousands of items.
     const QString key = controller_ ? controller_->cellsKey() : QString();
-    const bool cellsChanged = key != cellsKey_;
-    cellsKey_ = key;
+    const QString wanted = mode_ == ViewMode::Graph ? key : QStringLiteral("(not built)");
+    const bool cellsChanged = wanted != cellsKey_;
+    cellsKey_ = wanted;
+    const bool buildGraph = cellsChanged && mode_ == ViewMode::Graph;
     const auto result = controller_ ? controller_->result() : nullptr;
     const auto stale = controller_ ? controller_->staleResult() : nullptr;
     // The path on screen just went stale: it fades where it is (its items keep their
@@ -229,14 +236,14 @@ void OverlayLayer::refresh() {
     const auto prepared = controller_->shownPlan();
     if (result && !result->parts.empty()) {
         // Per-room sweeps: each part's own cells and graph, at its own angle.
-        if (cellsChanged)
+        if (buildGraph)
             for (const PlanPart& part : result->parts) {
                 addCells(part.prepared, &part.rooms);
                 addGraph(part.prepared, &part.rooms);
             }
         addUnreachable(result->prepared);
     } else if (prepared) {
-        if (cellsChanged) {
+        if (buildGraph) {
             addCells(*prepared);
             addCriticalSlices(*prepared);
             addGraph(*prepared);

@@ -83,8 +83,8 @@ void PlanningController::schedulePrepare() {
     invalidateResult();
     tasks_->cancelKind(QStringLiteral("prepare")); // its overlays are for the old geometry
     pendingPrepare_ = true;
-    prepareTimer_->start();
     scheduleReplan(false);
+    prepareTimer_->start(replanTimer_->interval());
     updateBusy();
 }
 
@@ -98,13 +98,17 @@ void PlanningController::scheduleReplan(bool queryOnly) {
     ++edits_;
     if (!live_)
         return;
-    // A query edit is a click (a room ticked, a point placed): planned in the next turn of
-    // the event loop, which still joins edits made together. Floor edits come in bursts
-    // (a vertex dragged, a value typed) and wait for a pause; a floor edit pending keeps
+    // An edit is planned in the next turn of the event loop, which still joins edits made
+    // together. Floor edits also come in bursts (a vertex dragged, a value typed): one that
+    // follows another within kLiveDelayMs waits for a pause, and a floor edit pending keeps
     // its delay.
     const bool floorPending = pendingReplan_ && replanTimer_->interval() > 0;
+    const bool burst =
+        !queryOnly && lastFloorEdit_.isValid() && lastFloorEdit_.elapsed() < kLiveDelayMs;
+    if (!queryOnly)
+        lastFloorEdit_.restart();
     pendingReplan_ = true;
-    replanTimer_->start(queryOnly && !floorPending ? 0 : kLiveDelayMs);
+    replanTimer_->start(floorPending || burst ? kLiveDelayMs : 0);
 }
 
 std::shared_ptr<const PreparedPlans> PlanningController::preparedPlans() {
@@ -154,6 +158,14 @@ void PlanningController::taskEnded(Task* task) {
 }
 
 void PlanningController::startPrepare() {
+    // A sketch of the same floor is on its way: the overlays wait for it, so that on a
+    // two-core machine it has a core of its own, and then mostly find their cells and graph
+    // already built by it (PreparedPlans).
+    if (live_ && (pendingReplan_ || draftTask_)) {
+        prepareAfterDraft_ = true;
+        return;
+    }
+    prepareAfterDraft_ = false;
     pendingPrepare_ = false;
     if (!document_) {
         updateBusy();
@@ -217,6 +229,8 @@ void PlanningController::startDraft() {
     // Nothing to draw yet, or the full plan of this very state is already on its way.
     if (!document_ || document_->plan().boundary.empty() || document_->needsRepair() ||
         (planTask_ && plannedEdit_ == edits_)) {
+        if (prepareAfterDraft_ && pendingPrepare_)
+            startPrepare(); // no sketch to wait for
         updateBusy();
         return;
     }
@@ -250,7 +264,11 @@ void PlanningController::startDraft() {
         errorFromPrepare_ = false;
         emit resultChanged();
     });
-    connect(task, &Task::ended, this, [this, task] { taskEnded(task); });
+    connect(task, &Task::ended, this, [this, task] {
+        taskEnded(task);
+        if (prepareAfterDraft_ && pendingPrepare_ && !draftTask_ && !pendingReplan_)
+            startPrepare();
+    });
     updateBusy();
 }
 

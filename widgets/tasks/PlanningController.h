@@ -14,6 +14,7 @@
 #include "pipeline/Planner.h"
 #include "tasks/Task.h"
 
+#include <QElapsedTimer>
 #include <QObject>
 #include <QPointer>
 #include <QString>
@@ -50,8 +51,9 @@ public:
     // Live replanning (see above); when off, an edit clears the path until plan().
     bool liveReplanning() const { return live_; }
     void setLiveReplanning(bool live);
-    // Milliseconds from the last edit of the floor, robot or sweep to the start of live
-    // replanning (query edits replan in the next turn of the event loop).
+    // Milliseconds a floor, robot or sweep edit that follows another this soon waits for a
+    // pause before live replanning starts (single edits replan in the next turn of the
+    // event loop).
     static constexpr int kLiveDelayMs = 30;
     // What the canvas shows: the plan's own decomposition when there is a path (with "auto"
     // its angle may differ from the preview's, and cells and path must agree), else the
@@ -123,6 +125,8 @@ private:
     QPointer<Task> planTask_;
     QPointer<Task> draftTask_;
     bool pendingPrepare_ = false;
+    bool prepareAfterDraft_ = false; // startPrepare deferred until the draft ends
+    QElapsedTimer lastFloorEdit_;    // a floor edit soon after another waits for a pause
     bool pendingReplan_ = false;
     quint64 edits_ = 0;                           // edits seen (query or plan)
     quint64 floorEdits_ = 0;                      // edits of the plan, robot or sweep
