@@ -127,8 +127,8 @@
         <translation>Büroetage</translation>
     </message>
     <message>
-        <source>Twelve offices along a corridor, 0.9 m doors</source>
-        <translation>Zwölf Büros an einem Flur, 0,9 m breite Türen</translation>
+        <source>Twelve offices along a corridor</source>
+        <translation>Zwölf Büros an einem Flur</translation>
     </message>
     <message>
         <source>Hospital ward</source>

@@ -127,8 +127,8 @@
         <translation>Étage de bureaux</translation>
     </message>
     <message>
-        <source>Twelve offices along a corridor, 0.9 m doors</source>
-        <translation>Douze bureaux le long d’un couloir, portes de 0,9 m</translation>
+        <source>Twelve offices along a corridor</source>
+        <translation>Douze bureaux le long d’un couloir</translation>
     </message>
     <message>
         <source>Hospital ward</source>

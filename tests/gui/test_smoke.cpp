@@ -145,6 +145,7 @@ private slots:
     }
 
     void welcomesAFirstStart() {
+        window_->openSample(); // as a first start does, behind the welcome page
         window_->showWelcome();
         auto* welcome = window_->findChild<WelcomeDialog*>();
         QVERIFY(welcome);

@@ -10,7 +10,7 @@ QList<SamplePlan> samplePlans() {
     };
     return {
         {QStringLiteral(":/plans/office.geojson"), tr("Office floor"),
-         tr("Twelve offices along a corridor, 0.9 m doors")},
+         tr("Twelve offices along a corridor")},
         {QStringLiteral(":/plans/ward.geojson"), tr("Hospital ward"),
          tr("Sixteen patient rooms with beds and a corridor")},
         {QStringLiteral(":/plans/room-obstacle.geojson"), tr("Room with a pillar"),
