@@ -119,6 +119,22 @@
         <source>Room “%1”</source>
         <translation>Raum „%1“</translation>
     </message>
+    <message>
+        <source>Obstacles %1 and %2 are the same: delete one of them.</source>
+        <translation>Die Hindernisse %1 und %2 sind gleich: Löschen Sie eines davon.</translation>
+    </message>
+    <message>
+        <source>Room “%1” covers only obstacles: there is no floor in it to clean.</source>
+        <translation>Raum „%1“ bedeckt nur Hindernisse: Darin gibt es keine Fläche zu reinigen.</translation>
+    </message>
+    <message>
+        <source>Room %1 has no name: give it one.</source>
+        <translation>Raum %1 hat keinen Namen: Geben Sie ihm einen.</translation>
+    </message>
+    <message>
+        <source>The free floor (%1 m²) is smaller than the robot (%2 m², L = %3 m).</source>
+        <translation>Die freie Fläche (%1 m²) ist kleiner als der Roboter (%2 m², L = %3 m).</translation>
+    </message>
 </context>
 <context>
     <name>fc::ui</name>

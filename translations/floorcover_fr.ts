@@ -119,6 +119,22 @@
         <source>Room “%1”</source>
         <translation>La pièce « %1 »</translation>
     </message>
+    <message>
+        <source>Obstacles %1 and %2 are the same: delete one of them.</source>
+        <translation>Les obstacles %1 et %2 sont identiques : supprimez l’un d’eux.</translation>
+    </message>
+    <message>
+        <source>Room “%1” covers only obstacles: there is no floor in it to clean.</source>
+        <translation>La pièce « %1 » ne couvre que des obstacles : il n’y a rien à nettoyer.</translation>
+    </message>
+    <message>
+        <source>Room %1 has no name: give it one.</source>
+        <translation>La pièce %1 n’a pas de nom : donnez-lui-en un.</translation>
+    </message>
+    <message>
+        <source>The free floor (%1 m²) is smaller than the robot (%2 m², L = %3 m).</source>
+        <translation>La surface libre (%1 m²) est plus petite que le robot (%2 m², L = %3 m).</translation>
+    </message>
 </context>
 <context>
     <name>fc::ui</name>

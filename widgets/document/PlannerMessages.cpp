@@ -88,6 +88,23 @@ const std::vector<MessageForm>& forms() {
          QT_TRANSLATE_NOOP("PlannerMessages", "Room “%1” lies outside the walls.")},
         {QRegularExpression(QStringLiteral("^room \"(.*)\" lies inside obstacle (\\d+)$")),
          QT_TRANSLATE_NOOP("PlannerMessages", "Room “%1” lies inside obstacle %2.")},
+        {QRegularExpression(
+             QStringLiteral("^obstacles (\\d+) and (\\d+) are identical \\(duplicate "
+                            "obstacle\\)$")),
+         QT_TRANSLATE_NOOP("PlannerMessages",
+                           "Obstacles %1 and %2 are the same: delete one of them.")},
+        {QRegularExpression(QStringLiteral("^room \"(.*)\" does not overlap the free space \\(it "
+                                           "covers only obstacles\\)$")),
+         QT_TRANSLATE_NOOP("PlannerMessages",
+                           "Room “%1” covers only obstacles: there is no floor in it to clean.")},
+        {QRegularExpression(QStringLiteral("^room (\\d+) has no name$")),
+         QT_TRANSLATE_NOOP("PlannerMessages", "Room %1 has no name: give it one.")},
+        {QRegularExpression(
+             QStringLiteral("^free area (.*) m\\^2 \\(boundary minus obstacles\\) is "
+                            "smaller than the robot footprint (.*) m\\^2 \\(L = (.*) "
+                            "m\\)$")),
+         QT_TRANSLATE_NOOP("PlannerMessages",
+                           "The free floor (%1 m²) is smaller than the robot (%2 m², L = %3 m).")},
         {QRegularExpression(QStringLiteral("^duplicate room name \"(.*)\"$")),
          QT_TRANSLATE_NOOP("PlannerMessages", "Two rooms are named “%1”: rename one.")},
         {QRegularExpression(QStringLiteral(
