@@ -6,6 +6,7 @@
 // FC_SCREENSHOT_DIR chooses where they are written; the editor-screenshots target writes
 // them into docs/images/editor for docs/editor.md.
 #include "EditorFixture.h"
+#include "SmallTraining.h"
 #include "canvas/PlanScene.h"
 #include "dialogs/CompareDialog.h"
 #include "docks/TrainingDock.h"
@@ -32,15 +33,6 @@ using namespace fc::ui;
 using namespace fc::ui::test;
 
 namespace {
-
-fc::TrainingOptions smallOptions() {
-    fc::TrainingOptions o = fc::TrainingOptions::improved(1);
-    o.agent.conv1Channels = o.agent.conv2Channels = o.agent.conv3Channels = 8;
-    o.agent.hiddenUnits = 32;
-    o.agent.learningStarts = 50;
-    o.agent.batchSize = 16;
-    return o;
-}
 
 // Pixels of the path's colour (a saturated red: coverage stripes).
 int pathPixels(const QImage& image) {
@@ -199,7 +191,7 @@ private slots:
         TrainingDock* dock = window_->trainingDock();
         dock->show();
         dock->raise();
-        dock->setTrainingOptions(smallOptions());
+        dock->setTrainingOptions(smallTrainingOptions());
         QPushButton *start = nullptr, *stop = nullptr;
         for (QPushButton* b : dock->findChildren<QPushButton*>()) {
             if (b->text() == QLatin1String("Start"))

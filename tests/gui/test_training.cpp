@@ -3,6 +3,7 @@
 // trainer runs as a task on the window's pool while this (GUI) thread keeps processing
 // events; Cancel in the status bar's task list pauses it and cancels an evaluation.
 #include "EditorFixture.h"
+#include "SmallTraining.h"
 #include "docks/TrainingDock.h"
 #include "formats/PlanIO.h"
 #include "learning/dqn/DqnModelFile.h"
@@ -33,12 +34,7 @@ std::shared_ptr<const PreparedPlan> preparedSample(const char* name, double angl
 }
 
 TrainingOptions smallOptions() {
-    TrainingOptions o = TrainingOptions::improved(1);
-    o.agent.conv1Channels = o.agent.conv2Channels = o.agent.conv3Channels = 8;
-    o.agent.hiddenUnits = 32;
-    o.agent.learningStarts = 50;
-    o.agent.batchSize = 16;
-    return o;
+    return fc::ui::test::smallTrainingOptions();
 }
 
 } // namespace

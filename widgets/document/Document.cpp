@@ -35,10 +35,17 @@ Document::Document(Project project, QObject* parent)
 
 void Document::updateProblems() {
     problems_.clear();
-    if (!project_.plan.boundary.empty())
-        // The plan's own defects: a robot too large for the floor is the robot's problem
-        // (the planner says so), not a reason to lock the plan.
-        problems_ = planProblems(normalizedPlan(project_.plan), RobotProfile{});
+    if (project_.plan.boundary.empty())
+        return;
+    // The plan's own defects: a robot too large for the floor is the robot's problem (the
+    // planner says so), not a reason to lock the plan. Nearly every plan is valid, and one
+    // validation says so; only a broken one pays for listing all its problems.
+    const Plan plan = normalizedPlan(project_.plan);
+    try {
+        validatePlan(plan, RobotProfile{});
+    } catch (const InputError&) {
+        problems_ = planProblems(plan, RobotProfile{});
+    }
 }
 
 bool Document::repair(QStringList* notes) {
