@@ -64,7 +64,7 @@ void PlanScene::layoutLabels() {
 
 void PlanScene::layoutLabels(const QTransform& viewTransform) {
     QList<QGraphicsItem*> items;
-    for (QGraphicsItemGroup* group : {markers_, polygons_})
+    for (QGraphicsItemGroup* group : {markers_, roomLabels_})
         if (group)
             items += group->childItems();
     items += overlays_->labelItems();
@@ -155,6 +155,11 @@ void PlanScene::updateSceneRect() {
 
 void PlanScene::rebuildPolygons() {
     delete polygons_;
+    delete roomLabels_;
+    // Room names above walls, obstacles and the path (on their plates), below the markers.
+    roomLabels_ = new QGraphicsItemGroup;
+    roomLabels_->setZValue(z::Markers - 0.5);
+    addItem(roomLabels_);
     highlightItem_ = nullptr;
     polygons_ = new QGraphicsItemGroup;
     addItem(polygons_);
@@ -178,7 +183,7 @@ void PlanScene::rebuildPolygons() {
         item->setToolTip(selected ? tr("%1 (planned)").arg(name)
                                   : tr("%1 (not planned)").arg(name));
         // Room names before cell ids, bigger rooms first when names compete for space.
-        style::addLabel(polygons_, name, toQt(style::labelPoint(room.outline)),
+        style::addLabel(roomLabels_, name, toQt(style::labelPoint(room.outline)),
                         style::roomOutline(palette), true,
                         1e6 + std::abs(signedArea(room.outline)));
     }

@@ -74,6 +74,7 @@ private:
     QPointer<PlanningController> controller_;
     OverlayLayer* overlays_;
     QGraphicsItemGroup* polygons_ = nullptr;
+    QGraphicsItemGroup* roomLabels_ = nullptr;
     QGraphicsItemGroup* markers_ = nullptr;
     QGraphicsItemGroup* problems_ = nullptr;
     std::optional<QPointF> problemFocus_;
