@@ -1,5 +1,6 @@
 #include "decomposition/ClearRanges.h"
 #include "decomposition/Decomposition.h"
+#include "decomposition/FloorCache.h"
 #include "decomposition/FunctionClip.h"
 #include "decomposition/SlabSweep.h"
 #include "decomposition/StripePlanner.h"
@@ -305,8 +306,16 @@ Decomposition decompose(const Plan& plan, const DecompositionOptions& options) {
 
     // Split where the clear region changes (narrow passages, spans stacked in y), cut
     // transition strips and create the final cells.
-    out.clearanceField = std::make_shared<const ClearanceField>(
-        out.freeSpace, out.clearanceRadius(), 0.5 * out.coverageWidth());
+    if (options.floorCache) {
+        FloorCache::Parts parts = options.floorCache->partsFor(out.freeSpace, out.clearanceRadius(),
+                                                               0.5 * out.coverageWidth());
+        out.clearanceField = std::move(parts.clearance);
+        out.derived = std::move(parts.derived);
+    } else {
+        out.clearanceField = std::make_shared<const ClearanceField>(
+            out.freeSpace, out.clearanceRadius(), 0.5 * out.coverageWidth());
+        out.derived = std::make_shared<DerivedCache>();
+    }
     const ClearanceField& field = out.clearance();
     std::vector<std::vector<Piece>> pieces(raw.size());
     // Where a cell meets another room along the sweep (a doorway), the slice connectivity

@@ -3,6 +3,7 @@
 // slice sweeps along +x, so a cell is an x-interval with a floor and a ceiling.
 #pragma once
 
+#include "decomposition/DerivedCache.h"
 #include "geometry/Clearance.h"
 #include "geometry/Geometry.h"
 #include "model/Plan.h"
@@ -85,7 +86,13 @@ struct Decomposition {
     const ClearanceField& clearance() const;
     // The field of freeSpace for robot (see clearance()); decompose sets it.
     std::shared_ptr<const ClearanceField> clearanceField;
+    // Values derived from the free space (DerivedCache.h), shared by its copies and by other
+    // decompositions of the same free space; decompose sets it. Whoever changes a
+    // decomposition's free space must reset it.
+    std::shared_ptr<DerivedCache> derived;
 };
+
+class FloorCache;
 
 struct DecompositionOptions {
     // W and L <= W (the robot centre keeps L/2 from walls; L = 0 is read as L = W); only
@@ -93,6 +100,9 @@ struct DecompositionOptions {
     RobotProfile robot = RobotProfile{1.0, 1.0, 1.0};
     double stripeAngleDeg = 90.0;
     bool transitionCells = true; // the paper's modification; off = classic BCD
+    // Where the clearance field and derived values of a free space decomposed before are
+    // taken from (FloorCache.h); null: made afresh.
+    std::shared_ptr<FloorCache> floorCache;
 };
 
 // Decomposes a validated plan. Throws InputError for geometry it cannot handle.

@@ -15,12 +15,20 @@ namespace fc {
 
 class OpenRegions {
 public:
+    // How grid nodes are found open: Pruned decides whole blocks far from the threshold with
+    // one distance query (what the planner uses); EveryNode tests each node (the reference
+    // the tests compare Pruned with).
+    enum class Classification { Pruned, EveryNode };
+
     // The grid over `extent` grown by r, cells of r/6 (coarser on very large floors).
-    OpenRegions(const SegmentIndex& walls, BoundingBox extent, double r);
+    OpenRegions(const SegmentIndex& walls, BoundingBox extent, double r,
+                Classification classification = Classification::Pruned);
 
     // The open region holding p; -1 outside the grid or in a closed cell (never for a
     // clear point inside the extent).
     int regionOf(Vec2 p) const;
+    // The grid's labels, row by row (-1: closed), for comparisons.
+    const std::vector<int>& labels() const { return label_; }
 
 private:
     size_t index(int i, int j) const { return static_cast<size_t>(j) * nx_ + i; }

@@ -3,11 +3,12 @@
 namespace fc {
 
 PlanStages buildPlanStages(const Plan& plan, const RobotProfile& robot, double stripeAngleDeg,
-                           bool transitionCells) {
+                           bool transitionCells, const std::shared_ptr<FloorCache>& floorCache) {
     DecompositionOptions options;
     options.robot = robot;
     options.stripeAngleDeg = stripeAngleDeg;
     options.transitionCells = transitionCells;
+    options.floorCache = floorCache;
     PlanStages stages;
     stages.decomposition = decompose(plan, options);
     stages.graph = buildCornerGraph(stages.decomposition);

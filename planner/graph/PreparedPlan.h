@@ -18,8 +18,10 @@ struct PlanStages {
 
 // Decomposes a normalized, validated plan for the robot's W and L at one sweep angle (with or
 // without transition cells) and builds its corner graph. Throws InputError as decompose.
+// floorCache (optional): see DecompositionOptions::floorCache.
 PlanStages buildPlanStages(const Plan& plan, const RobotProfile& robot, double stripeAngleDeg,
-                           bool transitionCells);
+                           bool transitionCells,
+                           const std::shared_ptr<FloorCache>& floorCache = nullptr);
 
 struct PreparedPlan {
     Plan plan; // normalized

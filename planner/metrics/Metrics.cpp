@@ -13,7 +13,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <limits>
+#include <memory>
 
 namespace fc {
 namespace {
@@ -230,6 +232,74 @@ bool roomRequired(const MetricsInput& input, int room) {
            input.requiredRooms[static_cast<size_t>(room)] != 0;
 }
 
+// The floor's part of the metrics, the same for every path of one decomposition and robot:
+// the grid, the free pixels and those a head of width W reaches from a centre position.
+struct FloorRaster {
+    std::vector<Ring> freeSpace; // what it was made of
+    Grid grid;
+    Mask free, headReach;
+};
+
+std::shared_ptr<const FloorRaster> makeFloorRaster(const MetricsInput& input) {
+    const Decomposition& decomposition = *input.decomposition;
+    const double width = input.robot.coverageWidth;
+    auto floor = std::make_shared<FloorRaster>();
+    floor->freeSpace = decomposition.freeSpace;
+    BoundingBox bounds;
+    for (const Ring& ring : decomposition.freeSpace)
+        for (const Vec2& p : ring)
+            bounds.add(p);
+    const double resolution = chooseResolution(input, bounds);
+    // The margin keeps a blocked border around the free space and holds the head's stroke.
+    const Grid& grid = floor->grid = Grid::covering(bounds, width + 2.0 * resolution, resolution);
+    ScanlineFill fill(grid);
+    Mask& free = floor->free;
+    free.assign(grid.size(), 0);
+    fill.paint(decomposition.freeSpace.data(), decomposition.freeSpace.size(), free);
+
+    // Centre positions of the robot disc (diameter L): the nearest blocked pixel centre
+    // lies up to half a pixel beyond the wall, so require L/2 plus half a pixel; otherwise
+    // gaps slightly narrower than L would count as passable.
+    const std::vector<float> distance2 = squaredDistanceToBlocked(free, grid.cols, grid.rows);
+    const double halfWidthPixels = 0.5 * width / resolution;
+    const double robotRadius = 0.5 * std::min(input.robot.robotDiameter, width);
+    const double minDistance = robotRadius / resolution + 0.5;
+    const float minDistance2 = static_cast<float>(minDistance * minDistance - 1e-6);
+    // Sweepable: what a head of width W reaches from any centre position (a disc of radius
+    // W/2 around it), whether or not the path's start can get there: a part of the floor
+    // that the start cannot reach is uncovered, never silently left out. The centre region
+    // is half a pixel conservative, so the reach gets that half back.
+    Mask notCentre(grid.size(), 1);
+    bool anyCentre = false;
+    for (size_t i = 0; i < grid.size(); ++i) {
+        const bool centre = free[i] && distance2[i] >= minDistance2;
+        notCentre[i] = centre ? 0 : 1;
+        anyCentre = anyCentre || centre;
+    }
+    const std::vector<float> toCentre2 = squaredDistanceToBlocked(notCentre, grid.cols, grid.rows);
+    const double reachPixels = halfWidthPixels + 0.5;
+    const float reach2 = static_cast<float>(reachPixels * reachPixels + 1e-6);
+    floor->headReach.assign(grid.size(), 0);
+    for (size_t i = 0; i < grid.size(); ++i)
+        floor->headReach[i] = free[i] && anyCentre && toCentre2[i] <= reach2;
+    return floor;
+}
+
+// The floor raster of the input's decomposition, made once per decomposition, robot and
+// resolution (DerivedCache) where the decomposition has a cache and is what it was made of.
+std::shared_ptr<const FloorRaster> floorRasterOf(const MetricsInput& input) {
+    const Decomposition& decomposition = *input.decomposition;
+    if (!decomposition.derived)
+        return makeFloorRaster(input);
+    char key[160];
+    std::snprintf(key, sizeof key, "metrics floor W=%.17g L=%.17g res=%.17g",
+                  input.robot.coverageWidth, input.robot.robotDiameter, input.resolution);
+    auto floor = decomposition.derived->get<FloorRaster>(
+        key, [&] { return std::shared_ptr<const FloorRaster>(makeFloorRaster(input)); });
+    // A copy whose free space was changed after decompose: measured afresh.
+    return floor->freeSpace == decomposition.freeSpace ? floor : makeFloorRaster(input);
+}
+
 } // namespace
 
 Metrics computeMetrics(const MetricsInput& input) {
@@ -247,18 +317,12 @@ Metrics computeMetrics(const MetricsInput& input) {
     for (const Cell& cell : decomposition->cells)
         metrics.cells += roomRequired(input, cell.room) ? 1 : 0;
 
-    BoundingBox bounds;
-    for (const Ring& ring : decomposition->freeSpace)
-        for (const Vec2& p : ring)
-            bounds.add(p);
-    const double resolution = chooseResolution(input, bounds);
-    // The margin keeps a blocked border around the free space and holds the head's stroke.
-    const Grid grid = Grid::covering(bounds, width + 2.0 * resolution, resolution);
-    ScanlineFill fill(grid);
-
-    Mask free(grid.size(), 0);
-    fill.paint(decomposition->freeSpace.data(), decomposition->freeSpace.size(), free);
+    const std::shared_ptr<const FloorRaster> floor = floorRasterOf(input);
+    const Grid& grid = floor->grid;
+    const double resolution = grid.resolution;
+    const Mask& free = floor->free;
     Mask required(grid.size(), 0);
+    ScanlineFill fill(grid);
     for (const Cell& cell : decomposition->cells) {
         if (roomRequired(input, cell.room)) {
             const Ring outline = cell.outline();
@@ -266,44 +330,19 @@ Metrics computeMetrics(const MetricsInput& input) {
         }
     }
 
-    // Centre positions of the robot disc (diameter L): the nearest blocked pixel centre
-    // lies up to half a pixel beyond the wall, so require L/2 plus half a pixel; otherwise
-    // gaps slightly narrower than L would count as passable.
-    const std::vector<float> distance2 = squaredDistanceToBlocked(free, grid.cols, grid.rows);
-    const double halfWidthPixels = 0.5 * width / resolution;
-    const double robotRadius = 0.5 * std::min(input.robot.robotDiameter, width);
-    const double minDistance = robotRadius / resolution + 0.5;
-    const float minDistance2 = static_cast<float>(minDistance * minDistance - 1e-6);
-    Mask centres(grid.size(), 0);
-    for (size_t i = 0; i < centres.size(); ++i)
-        centres[i] = free[i] && distance2[i] >= minDistance2;
-
     const std::vector<PathSegment> segments =
         sweepFrameSegments(input.path.points, decomposition->frame);
     SweptRaster swept(grid, width);
     swept.sweep(segments);
     const PathWalk walk = walkPath(segments, grid, swept.firstArc(), width);
 
-    // Sweepable: what a head of width W reaches from any centre position (a disc of radius
-    // W/2 around it), whether or not the path's start can get there: a part of the floor
-    // that the start cannot reach is uncovered, never silently left out. The centre region
-    // is half a pixel conservative, so the reach gets that half back.
-    Mask notCentre(grid.size(), 1);
-    for (size_t i = 0; i < grid.size(); ++i)
-        notCentre[i] = centres[i] ? 0 : 1;
-    const std::vector<float> toCentre2 = squaredDistanceToBlocked(notCentre, grid.cols, grid.rows);
-    const bool anyCentre = std::any_of(centres.begin(), centres.end(), [](auto c) { return c; });
-    const double reachPixels = halfWidthPixels + 0.5;
-    const float reach2 = static_cast<float>(reachPixels * reachPixels + 1e-6);
-
     double requiredPixels = 0.0, sweepablePixels = 0.0, coveredPixels = 0.0; // counts
     const std::vector<float>& firstArc = swept.firstArc();
-    Mask headReach(grid.size(), 0);
+    const Mask& headReach = floor->headReach;
     for (size_t i = 0; i < grid.size(); ++i) {
         if (!(free[i] && required[i]))
             continue;
         requiredPixels += 1.0;
-        headReach[i] = anyCentre && toCentre2[i] <= reach2;
         if (headReach[i]) {
             sweepablePixels += 1.0;
             coveredPixels += firstArc[i] != kNeverSwept ? 1.0 : 0.0;

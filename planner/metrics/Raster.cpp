@@ -18,16 +18,6 @@ Grid Grid::covering(const BoundingBox& bounds, double margin, double resolution)
     return grid;
 }
 
-bool Grid::pixelOf(Vec2 p, int& col, int& row) const {
-    const double fx = std::floor((p.x - originX) / resolution);
-    const double fy = std::floor((p.y - originY) / resolution);
-    if (!(fx >= 0.0 && fy >= 0.0 && fx < cols && fy < rows))
-        return false;
-    col = static_cast<int>(fx);
-    row = static_cast<int>(fy);
-    return true;
-}
-
 const std::vector<Span>& ScanlineFill::spans(const Ring* rings, size_t ringCount) {
     edges_.clear();
     spans_.clear();

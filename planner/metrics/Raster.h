@@ -5,6 +5,7 @@
 
 #include "geometry/Geometry.h"
 
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <vector>
@@ -29,7 +30,16 @@ struct Grid {
         return {originX + (col + 0.5) * resolution, originY + (row + 0.5) * resolution};
     }
     // Pixel containing p; false when p lies outside the grid.
-    bool pixelOf(Vec2 p, int& col, int& row) const;
+    // Inline: the metrics call it for every half pixel of path, W / resolution times.
+    bool pixelOf(Vec2 p, int& col, int& row) const {
+        const double fx = std::floor((p.x - originX) / resolution);
+        const double fy = std::floor((p.y - originY) / resolution);
+        if (!(fx >= 0.0 && fy >= 0.0 && fx < cols && fy < rows))
+            return false;
+        col = static_cast<int>(fx);
+        row = static_cast<int>(fy);
+        return true;
+    }
     double pixelArea() const { return resolution * resolution; }
 };
 

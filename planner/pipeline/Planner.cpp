@@ -21,27 +21,29 @@ namespace {
 
 // The classic stages exactly as the baselines made them for themselves: at the prepared
 // decomposition's angle, for its W and L.
-void addClassicStages(PreparedPlan& prepared) {
+void addClassicStages(PreparedPlan& prepared, const std::shared_ptr<FloorCache>& floorCache) {
     prepared.classic = std::make_shared<const PlanStages>(
         buildPlanStages(prepared.plan, prepared.decomposition.robot,
-                        prepared.decomposition.frame.stripeAngleDeg(), false));
+                        prepared.decomposition.frame.stripeAngleDeg(), false, floorCache));
 }
 
 } // namespace
 
 PreparedPlan preparePlan(const Plan& plan, const RobotProfile& robot, double stripeAngleDeg,
-                         bool transitionCells, bool classicStages) {
+                         bool transitionCells, bool classicStages,
+                         const std::shared_ptr<FloorCache>& floorCache) {
     PreparedPlan prepared;
     prepared.plan = normalizedPlan(plan);
     prepared.robot = robot;
     validatePlan(prepared.plan, robot);
     if (!std::isfinite(stripeAngleDeg))
         throw InputError("the sweep angle must be a finite number of degrees");
-    PlanStages stages = buildPlanStages(prepared.plan, robot, stripeAngleDeg, transitionCells);
+    PlanStages stages =
+        buildPlanStages(prepared.plan, robot, stripeAngleDeg, transitionCells, floorCache);
     prepared.decomposition = std::move(stages.decomposition);
     prepared.graph = std::move(stages.graph);
     if (classicStages)
-        addClassicStages(prepared);
+        addClassicStages(prepared, floorCache);
     return prepared;
 }
 
@@ -200,7 +202,7 @@ Solution runSolver(const std::string& name, const PreparedPlan& prepared, const 
     const std::optional<RegisteredSolver> solver = findRegisteredSolver(name);
     if (solver && solver->classicStages && !prepared.classic) {
         PreparedPlan withClassic = prepared;
-        addClassicStages(withClassic);
+        addClassicStages(withClassic, nullptr);
         return solver->solve(withClassic, query, modelPath, control);
     }
     if (solver)

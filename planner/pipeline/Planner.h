@@ -59,8 +59,11 @@ struct PlanResult {
 
 // Validates (throws InputError) and builds decomposition and graph for one sweep angle
 // (graph/PreparedPlan.h); with classicStages also PreparedPlan::classic.
+// floorCache (optional): what earlier preparations of the same free space built
+// (DecompositionOptions::floorCache).
 PreparedPlan preparePlan(const Plan& plan, const RobotProfile& robot, double stripeAngleDeg,
-                         bool transitionCells = true, bool classicStages = false);
+                         bool transitionCells = true, bool classicStages = false,
+                         const std::shared_ptr<FloorCache>& floorCache = nullptr);
 
 // Whether the named solver plans on PreparedPlan::classic (false for unknown names).
 bool solverNeedsClassicStages(const std::string& name);

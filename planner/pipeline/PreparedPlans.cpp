@@ -1,13 +1,16 @@
 #include "pipeline/PreparedPlans.h"
 
+#include "decomposition/FloorCache.h"
 #include "pipeline/Planner.h"
 
 #include <cmath>
 
 namespace fc {
 
-PreparedPlans::PreparedPlans(const Plan& plan, const RobotProfile& robot, bool transitionCells)
-    : plan_(plan), robot_(robot), transitionCells_(transitionCells) {}
+PreparedPlans::PreparedPlans(const Plan& plan, const RobotProfile& robot, bool transitionCells,
+                             std::shared_ptr<FloorCache> floorCache)
+    : plan_(plan), robot_(robot), transitionCells_(transitionCells),
+      floorCache_(floorCache ? std::move(floorCache) : std::make_shared<FloorCache>()) {}
 
 double PreparedPlans::roundedAngle(double angleDeg) {
     return std::isfinite(angleDeg) ? std::round(angleDeg * 1e9) / 1e9 : angleDeg;
@@ -35,7 +38,7 @@ PreparedPlan PreparedPlans::at(double angleDeg, bool classicStages) const {
     if (builder) {
         try {
             promise.set_value(std::make_shared<const PreparedPlan>(
-                preparePlan(plan_, robot_, angle, transitionCells_, classicStages)));
+                preparePlan(plan_, robot_, angle, transitionCells_, classicStages, floorCache_)));
         } catch (...) {
             promise.set_exception(std::current_exception());
         }

@@ -18,8 +18,11 @@ namespace fc {
 class PreparedPlans {
 public:
     // Keeps its own copy of the plan: the editor keeps one across requests (live
-    // replanning) while the document moves on.
-    PreparedPlans(const Plan& plan, const RobotProfile& robot, bool transitionCells);
+    // replanning) while the document moves on. floorCache: what plans of the same floor
+    // prepared before built from its free space (the editor passes one cache to the plans
+    // of every edit); null: a cache of its own, shared by its angles.
+    PreparedPlans(const Plan& plan, const RobotProfile& robot, bool transitionCells,
+                  std::shared_ptr<FloorCache> floorCache = nullptr);
 
     const Plan& plan() const { return plan_; }
     const RobotProfile& robot() const { return robot_; }
@@ -39,6 +42,7 @@ private:
     Plan plan_;
     RobotProfile robot_;
     bool transitionCells_;
+    std::shared_ptr<FloorCache> floorCache_;
     mutable std::mutex mutex_;
     mutable std::map<std::tuple<long long, bool>, Built> built_;
 };

@@ -1,5 +1,6 @@
 // PreparedPlans: one build per sweep angle, shared by every caller (the per-room search
 // plans the same angles many times); the plans it hands out are preparePlan's.
+#include "decomposition/FloorCache.h"
 #include "formats/PlanIO.h"
 #include "pipeline/Planner.h"
 #include "pipeline/PreparedPlans.h"
@@ -111,6 +112,82 @@ TEST(PreparedPlans, DraftPlansTheSameQueryQuickly) {
         request.rooms = {request.plan.rooms.front().name};
         const PlanResult one = draftCoverage(request, plans);
         EXPECT_LT(one.metrics.requiredArea, 0.8 * draft.metrics.requiredArea) << name;
+    }
+}
+
+// Live replanning keeps one FloorCache across edits: an edit of the rooms leaves the free space
+// as it was, so its clearance field and metrics raster are reused; a wall edit makes new ones.
+TEST(FloorCache, ARoomEditReusesTheFloorAndAWallEditDoesNot) {
+    const Plan plan = samplePlan("office");
+    const RobotProfile robot;
+    auto cache = std::make_shared<FloorCache>();
+    const PreparedPlans before(plan, robot, true, cache);
+    const PreparedPlan a = before.at(90.0, false);
+
+    Plan roomEdited = plan;
+    Ring& outline = roomEdited.rooms.front().outline;
+    Vec2 centre;
+    for (const Vec2& p : outline)
+        centre = centre + p * (1.0 / static_cast<double>(outline.size()));
+    outline[0] = outline[0] + (centre - outline[0]) * (0.1 / distance(centre, outline[0]));
+    const PreparedPlan b = PreparedPlans(roomEdited, robot, true, cache).at(90.0, false);
+    EXPECT_EQ(a.decomposition.clearanceField, b.decomposition.clearanceField);
+    EXPECT_EQ(a.decomposition.derived, b.decomposition.derived);
+    // The decomposition itself is of the edited rooms: what a fresh preparation builds.
+    expectSame(b, preparePlan(roomEdited, robot, 90.0));
+
+    Plan wallEdited = plan;
+    wallEdited.boundary[0] = wallEdited.boundary[0] + Vec2{-0.1, -0.1};
+    const PreparedPlan c = PreparedPlans(wallEdited, robot, true, cache).at(90.0, false);
+    EXPECT_NE(a.decomposition.clearanceField, c.decomposition.clearanceField);
+    EXPECT_NE(a.decomposition.derived, c.decomposition.derived);
+    // Another robot radius is another clearance field.
+    RobotProfile larger = robot;
+    larger.robotDiameter = 0.8;
+    const PreparedPlan d = PreparedPlans(plan, larger, true, cache).at(90.0, false);
+    EXPECT_NE(a.decomposition.clearanceField, d.decomposition.clearanceField);
+}
+
+TEST(FloorCache, KeepsTheMostRecentFloors) {
+    FloorCache cache;
+    auto square = [](double size) {
+        return std::vector<Ring>{{{0, 0}, {size, 0}, {size, size}, {0, size}}};
+    };
+    const auto first = cache.partsFor(square(10), 0.3, 0.5).clearance;
+    EXPECT_EQ(cache.partsFor(square(10), 0.3, 0.5).clearance, first);
+    EXPECT_NE(cache.partsFor(square(10), 0.3, 0.4).clearance, first);
+    for (size_t i = 0; i < FloorCache::kCapacity; ++i)
+        cache.partsFor(square(11.0 + static_cast<double>(i)), 0.3, 0.5);
+    EXPECT_NE(cache.partsFor(square(10), 0.3, 0.5).clearance, first); // evicted, made again
+}
+
+// Metrics measured with the cached floor raster equal those measured afresh, for every path
+// of the floor (the raster holds the floor only; the rooms asked for are painted per call).
+TEST(FloorCache, MetricsWithTheCachedRasterEqualFreshOnes) {
+    const Plan plan = samplePlan("ward");
+    PlanRequest request;
+    request.plan = plan;
+    request.solver = "greedy";
+    auto cache = std::make_shared<FloorCache>();
+    const PreparedPlans plans(plan, request.robot, true, cache);
+    for (const std::vector<std::string>& rooms :
+         {std::vector<std::string>{}, std::vector<std::string>{plan.rooms.front().name},
+          std::vector<std::string>{plan.rooms.back().name, plan.rooms.front().name}}) {
+        request.rooms = rooms;
+        const PlanResult cached = planAtAngle(request, 90.0, {}, &plans);
+        PreparedPlan uncached = cached.prepared;
+        uncached.decomposition.derived.reset();
+        const std::vector<std::string> required =
+            rooms.empty() ? uncached.decomposition.roomNames : rooms;
+        const Metrics fresh = measurePath(uncached, required, cached.path);
+        const Metrics again = measurePath(cached.prepared, required, cached.path);
+        for (const Metrics* m : {&fresh, &again}) {
+            EXPECT_EQ(m->requiredArea, cached.metrics.requiredArea);
+            EXPECT_EQ(m->sweepableArea, cached.metrics.sweepableArea);
+            EXPECT_EQ(m->coveredArea, cached.metrics.coveredArea);
+            EXPECT_EQ(m->uncovered.size(), cached.metrics.uncovered.size());
+            EXPECT_EQ(m->overlaps.size(), cached.metrics.overlaps.size());
+        }
     }
 }
 

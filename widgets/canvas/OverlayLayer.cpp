@@ -411,11 +411,12 @@ void OverlayLayer::addPath(const PlanResult& result, bool stale) {
     addPathItem(groups_[static_cast<int>(OverlayKind::Overlaps)], overlaps,
                 overlayStyle(OverlayKind::Overlaps).pen);
 
-    // Missed spots as small dots: the metric's raster samples, at most ~20,000 of them.
+    // Missed spots as small squares: the metric's raster samples, at most ~20,000 of them
+    // (as circles Qt traces a curve per dot: 15 ms more for the first paint on office).
     QPainterPath gaps;
     const double dot = 0.06 * width;
     for (Vec2 p : result.metrics.uncovered)
-        gaps.addEllipse(toQt(p), dot, dot);
+        gaps.addRect(QRectF(toQt(p) - QPointF(dot, dot), QSizeF(2 * dot, 2 * dot)));
     const OverlayStyle gapLook = overlayStyle(OverlayKind::CoverageGaps);
     addPathItem(groups_[static_cast<int>(OverlayKind::CoverageGaps)], gaps, gapLook.pen,
                 gapLook.brush);
@@ -423,7 +424,7 @@ void OverlayLayer::addPath(const PlanResult& result, bool stale) {
     // dots in the unreachable colour beside the decomposition's crosses.
     QPainterPath unreachable;
     for (Vec2 p : result.metrics.unreachable)
-        unreachable.addEllipse(toQt(p), dot, dot);
+        unreachable.addRect(QRectF(toQt(p) - QPointF(dot, dot), QSizeF(2 * dot, 2 * dot)));
     addPathItem(groups_[static_cast<int>(OverlayKind::Unreachable)], unreachable, Qt::NoPen,
                 overlayStyle(OverlayKind::Unreachable).pen.color());
 }

@@ -30,7 +30,7 @@ QPixmap swatch(OverlayKind kind) {
         break;
     case OverlayKind::CoverageGaps:
         for (double x : {8.0, 14.0, 20.0})
-            painter.drawEllipse(QPointF(x, 8), 2, 2);
+            painter.drawRect(QRectF(x - 2, 6, 4, 4)); // as the canvas draws them
         break;
     case OverlayKind::Unreachable:
         painter.drawLine(QPointF(9, 3), QPointF(19, 13));

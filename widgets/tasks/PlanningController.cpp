@@ -1,5 +1,6 @@
 #include "tasks/PlanningController.h"
 
+#include "decomposition/FloorCache.h"
 #include "document/Conversions.h"
 #include "document/Document.h"
 #include "document/PlannerMessages.h"
@@ -16,7 +17,7 @@ namespace fc::ui {
 
 PlanningController::PlanningController(TaskManager* tasks, QObject* parent)
     : QObject(parent), tasks_(tasks), prepareTimer_(new QTimer(this)),
-      replanTimer_(new QTimer(this)) {
+      replanTimer_(new QTimer(this)), floorCache_(std::make_shared<FloorCache>()) {
     prepareTimer_->setSingleShot(true);
     prepareTimer_->setInterval(kLiveDelayMs);
     connect(prepareTimer_, &QTimer::timeout, this, &PlanningController::startPrepare);
@@ -113,8 +114,8 @@ void PlanningController::scheduleReplan(bool queryOnly) {
 
 std::shared_ptr<const PreparedPlans> PlanningController::preparedPlans() {
     if (!preparedPlans_ && document_)
-        preparedPlans_ = std::make_shared<const PreparedPlans>(document_->plan(),
-                                                               document_->project().robot, true);
+        preparedPlans_ = std::make_shared<const PreparedPlans>(
+            document_->plan(), document_->project().robot, true, floorCache_);
     return preparedPlans_;
 }
 

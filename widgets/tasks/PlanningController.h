@@ -23,8 +23,9 @@
 class QTimer;
 
 namespace fc {
+class FloorCache;
 class PreparedPlans;
-}
+} // namespace fc
 
 namespace fc::ui {
 
@@ -115,6 +116,9 @@ private:
     std::shared_ptr<const PlanResult> result_;
     std::shared_ptr<const PlanResult> stale_;
     std::shared_ptr<const PreparedPlans> preparedPlans_;
+    // What the plans of earlier edits built from the floor's free space (clearance field,
+    // metrics raster): an edit of the rooms or of the robot's speed reuses it.
+    std::shared_ptr<FloorCache> floorCache_;
     bool draft_ = false;
     bool live_ = true;
     QString error_;

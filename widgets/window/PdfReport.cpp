@@ -208,7 +208,7 @@ double drawLegendEntry(QPainter& p, double x, double y, int kind, const QString&
         p.setPen(Qt::NoPen);
         p.setBrush(overlayStyle(OverlayKind::CoverageGaps).brush);
         for (double dx : {4.0, 11.0, 18.0})
-            p.drawEllipse(QPointF(x + dx, y + 5), 1.5, 1.5);
+            p.drawRect(QRectF(x + dx - 1.5, y + 3.5, 3, 3)); // as the canvas draws them
         break;
     case 4:
         p.setPen(widen(overlayStyle(OverlayKind::Unreachable).pen, 1.2));
