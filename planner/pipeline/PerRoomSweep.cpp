@@ -306,6 +306,8 @@ PlanResult planWithRoomAngles(const PlanRequest& request,
         // Hand-over points are the planner's own: they may move to where the robot gets.
         part.query = makeQuery(part.prepared, part.rooms, start, end, request.seed, result.warnings,
                                mainRegionAt, k + 1 < order.size() || !request.end);
+        if (!request.previousPath.empty())
+            part.query.orderHint = orderHintFrom(part.prepared, request.previousPath);
         if (!home)
             home = worldOf(part.prepared, part.query.startNode);
         // A hand-over point the query moved (it lay in a pocket of this part's graph): the
@@ -408,6 +410,23 @@ std::vector<std::pair<double, int>> angleGroups(const std::map<std::string, doub
 }
 
 } // namespace
+
+std::map<std::string, double> roomAnglesOf(const PlanResult& result, const Plan& plan) {
+    std::map<std::string, double> angles;
+    auto add = [&](const std::string& room, double angle) {
+        const bool named = std::any_of(plan.rooms.begin(), plan.rooms.end(),
+                                       [&](const Room& r) { return r.name == room; });
+        angles[named ? room : std::string()] = angle;
+    };
+    if (result.parts.empty()) {
+        for (const std::string& room : result.prepared.decomposition.roomNames)
+            add(room, result.stripeAngleDeg);
+    }
+    for (const PlanPart& part : result.parts)
+        for (const std::string& room : part.rooms)
+            add(room, part.stripeAngleDeg);
+    return angles;
+}
 
 std::map<std::string, double> familyAngles(const Plan& plan, const SweepOptions& sweep) {
     const std::map<std::string, double> walls = roomSweepAngles(plan, sweep);

@@ -27,6 +27,11 @@ double sweepAngleOfRoom(const std::map<std::string, double>& angles, const std::
 // other families and fixed angles (sweep.roomAngles) keep theirs. What large floors plan.
 std::map<std::string, double> familyAngles(const Plan& plan, const SweepOptions& sweep);
 
+// The angle each room of the plan was swept at in `result` (its part's angle; rooms the plan
+// does not name under the empty name, as roomSweepAngles keys them). Rooms it did not plan
+// are absent.
+std::map<std::string, double> roomAnglesOf(const PlanResult& result, const Plan& plan);
+
 // Plans each group of rooms that shares one angle of `angles` in its own frame, in turn (the
 // start's group first, then the nearest group), joined by collision-free transits; metrics
 // over the whole path. With one angle this is planAtAngle. `prepared`: of request.plan and

@@ -11,6 +11,7 @@
 #include <chrono>
 #include <cmath>
 #include <iomanip>
+#include <limits>
 #include <map>
 #include <queue>
 #include <sstream>
@@ -104,6 +105,52 @@ int defaultStartNode(const PreparedPlan& prepared, const std::vector<char>& allR
         }
     }
     return best;
+}
+
+std::vector<double> orderHintFrom(const PreparedPlan& prepared, const CoveragePath& previous) {
+    const Decomposition& dec = prepared.decomposition;
+    // Midpoints of the covering segments in order, sweep frame, sorted by x for the search.
+    std::vector<std::pair<Vec2, double>> marks;
+    for (size_t i = 0; i + 1 < previous.points.size() && i < previous.kinds.size(); ++i)
+        if (previous.kinds[i] != SegmentKind::Transit)
+            marks.push_back({dec.frame.toLocal((previous.points[i] + previous.points[i + 1]) * 0.5),
+                             static_cast<double>(marks.size())});
+    std::sort(marks.begin(), marks.end(),
+              [](const auto& a, const auto& b) { return a.first.x < b.first.x; });
+    const double none = std::numeric_limits<double>::infinity();
+    std::vector<double> rank(dec.cells.size(), none);
+    bool any = false;
+    for (const Cell& cell : dec.cells) {
+        auto it = std::lower_bound(marks.begin(), marks.end(), cell.x0,
+                                   [](const auto& m, double x) { return m.first.x < x; });
+        for (; it != marks.end() && it->first.x <= cell.x1; ++it) {
+            const Vec2 p = it->first;
+            if (p.y >= cell.floorAt(p.x) && p.y <= cell.ceilingAt(p.x))
+                rank[cell.id] = std::min(rank[cell.id], it->second);
+        }
+        any = any || rank[cell.id] < none;
+    }
+    if (!any)
+        return {};
+    std::vector<Vec2> centre(dec.cells.size());
+    for (const Cell& cell : dec.cells)
+        centre[cell.id] = {0.5 * (cell.x0 + cell.x1),
+                           0.5 * (cell.floorAt(0.5 * (cell.x0 + cell.x1)) +
+                                  cell.ceilingAt(0.5 * (cell.x0 + cell.x1)))};
+    const std::vector<double> swept = rank;
+    for (const Cell& cell : dec.cells) {
+        if (swept[cell.id] < none)
+            continue;
+        int nearest = -1;
+        double nearestDistance = none;
+        for (const Cell& other : dec.cells) {
+            const double d = distance(centre[other.id], centre[cell.id]);
+            if (swept[other.id] < none && d < nearestDistance)
+                nearest = other.id, nearestDistance = d;
+        }
+        rank[cell.id] = swept[nearest] + 0.5;
+    }
+    return rank;
 }
 
 Query makeQuery(const PreparedPlan& prepared, const std::vector<std::string>& rooms,
@@ -361,6 +408,8 @@ PlanResult planOneAngle(const PlanRequest& request, double angle, const SolveCon
     result.stripeAngleDeg = angle;
     result.query = makeQuery(result.prepared, request.rooms, request.start, request.end,
                              request.seed, result.warnings);
+    if (!request.previousPath.empty())
+        result.query.orderHint = orderHintFrom(result.prepared, request.previousPath);
     // Every selected room counts, also cells the start could not reach (no silent loss).
     std::vector<std::string> required = request.rooms;
     if (required.empty())
@@ -517,10 +566,15 @@ PlanResult draftCoverage(const PlanRequest& request, const PreparedPlans& prepar
     quick.solver = "greedy";
     quick.modelPath.clear();
     PlanResult result;
-    if (request.sweep.perRoom && !request.sweep.automatic)
-        result =
-            planWithRoomAngles(quick, familyAngles(request.plan, request.sweep), control, prepared);
-    else
+    if (request.sweep.perRoom && !request.sweep.automatic) {
+        std::map<std::string, double> angles = familyAngles(request.plan, request.sweep);
+        for (auto& [room, angle] : angles) {
+            auto it = request.previousAngles.find(room);
+            if (it != request.previousAngles.end() && request.sweep.roomAngles.count(room) == 0)
+                angle = it->second;
+        }
+        result = planWithRoomAngles(quick, angles, control, prepared);
+    } else
         result = planOneAngle(quick,
                               request.sweep.automatic ? candidateAngles(request.plan).front()
                                                       : request.sweep.angleDeg,

@@ -12,6 +12,7 @@
 #include "solvers/Solver.h"
 #include "solvers/SolverRegistry.h"
 
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -29,6 +30,13 @@ struct PlanRequest {
     std::uint64_t seed = 1;
     std::string modelPath; // for learnt solvers
     bool transitionCells = true;
+    // The path planned before the last edits (world frame; empty: none): the query's
+    // orderHint follows it. The editor gives it to live replanning's quick draft, which then
+    // keeps the last plan's order where that is cheaper than greedy's.
+    CoveragePath previousPath;
+    // The rooms' angles in that plan (roomAnglesOf), when it was of the same floor: the
+    // draft plans at them, so that its cells are the plan's and the order maps one to one.
+    std::map<std::string, double> previousAngles;
 };
 
 // The request a project file describes (its plan, robot, sweep, solver, rooms, start, end).
@@ -81,6 +89,12 @@ int defaultStartNode(const PreparedPlan& prepared, const std::vector<char>& requ
 // one room's part hands over to the next), mainRegionAt names a point of the floor's main
 // part: the start snaps to the nearest corner of the graph's part holding it, and the end
 // (endMayMove) to the nearest corner the start reaches.
+// Query::orderHint from a path planned before (world frame): a cell's rank is the first
+// covering segment of `previous` whose midpoint lies in it; a cell it did not sweep (a room
+// just ticked, a cell a wall edit made) comes right after the nearest cell it did. Empty
+// when `previous` sweeps no cell of this decomposition.
+std::vector<double> orderHintFrom(const PreparedPlan& prepared, const CoveragePath& previous);
+
 Query makeQuery(const PreparedPlan& prepared, const std::vector<std::string>& rooms,
                 std::optional<Vec2> start, std::optional<Vec2> end, std::uint64_t seed,
                 std::vector<std::string>& warnings, std::optional<Vec2> mainRegionAt = {},
@@ -151,8 +165,10 @@ PlanResult planCoverage(const PlanRequest& request, const SolveControl& control 
                         const PreparedPlans* prepared = nullptr);
 
 // A quick plan of the request for the editor's live replanning, shown while planCoverage
-// refines it: the greedy solver at the family angles (per-room) or at the first candidate
-// angle ("auto"), without the angle search and the wall touch-ups. Same warnings.
+// refines it: the greedy solver at the family angles (per-room; a room of
+// request.previousAngles at its angle there) or at the first candidate angle ("auto"),
+// without the angle search and the wall touch-ups; with request.previousPath greedy also
+// walks that path's order (Query::orderHint) and the faster path is kept. Same warnings.
 PlanResult draftCoverage(const PlanRequest& request, const PreparedPlans& prepared,
                          const SolveControl& control = {});
 

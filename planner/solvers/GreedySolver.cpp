@@ -1,5 +1,7 @@
 // The naive reference (SPEC sect. 4): always cover the uncovered required cell whose entry
-// corner is cheapest to reach from where the robot stands, then go to the end.
+// corner is cheapest to reach from where the robot stands, then go to the end. With an order
+// hint (Query::orderHint) also the hinted order, keeping the cheaper walk.
+#include "solvers/OrderEvaluator.h"
 #include "solvers/Solver.h"
 #include "solvers/SolverCommon.h"
 #include "solvers/TransitSearch.h"
@@ -49,7 +51,31 @@ Solution solveGreedy(const CornerGraph& graph, const Query& query) {
     if (!search.isSettled(problem.endNode))
         throw SolverError("greedy solver: internal error: the end node is not reachable");
     search.appendWalkTo(problem.endNode, walk);
-    return finishSolution(graph, query, name, std::move(walk));
+    Solution greedy = finishSolution(graph, query, name, std::move(walk));
+    if (query.orderHint.size() != graph.cells.size() || problem.taskCount() < 2)
+        return greedy;
+    // The order of a plan made before (live replanning): the required cells in that order,
+    // with the best corners for it. The cheaper walk on the graph is the solution, the other
+    // its alternative: the path choice keeps whichever path takes less time.
+    std::vector<int> order(static_cast<size_t>(problem.taskCount()));
+    for (int task = 0; task < problem.taskCount(); ++task)
+        order[task] = task;
+    std::stable_sort(order.begin(), order.end(), [&](int a, int b) {
+        return query.orderHint[problem.taskCells[a]] < query.orderHint[problem.taskCells[b]];
+    });
+    try {
+        TransitSearch hintSearch(transit);
+        OrderEvaluator evaluator(transit, hintSearch);
+        Solution hinted = finishSolution(graph, query, name, evaluator.walk(order));
+        if (hinted.cellOrder == greedy.cellOrder)
+            return greedy;
+        if (hinted.graphCost < greedy.graphCost)
+            std::swap(hinted, greedy);
+        greedy.alternatives.push_back(std::move(hinted.walk));
+    } catch (const SolverError&) {
+        // An order the covered state forbids (a transit only through a cell's coverage edge).
+    }
+    return greedy;
 }
 
 } // namespace fc

@@ -18,6 +18,11 @@ struct Query {
     int startNode = 0;
     int endNode = 0;
     std::uint64_t seed = 1;
+    // Optional, one per cell: when the cell came in a plan made before (lower first; the
+    // path the editor showed before an edit, see orderHintFrom). The greedy solver also walks
+    // the required cells in this order and keeps the cheaper walk, so the heuristic's polish,
+    // which starts from greedy's walk, is warm-started too. Empty: none.
+    std::vector<double> orderHint;
 };
 
 // A walk: nodes[0] = start, nodes.back() = end, edges[i] joins nodes[i] and nodes[i+1].

@@ -71,9 +71,16 @@ void LiveReplanningTest::queryEditReplansWithoutF5() {
 
     // Results in the order they arrive: the draft first, then the full plan.
     std::vector<bool> drafts;
+    bool draftHinted = false; // the sketch was warm-started from the path shown before
     connect(planner, &PlanningController::resultChanged, this, [&] {
-        if (planner->result())
-            drafts.push_back(planner->isDraft());
+        if (!planner->result())
+            return;
+        drafts.push_back(planner->isDraft());
+        if (planner->isDraft()) {
+            draftHinted = !planner->result()->query.orderHint.empty();
+            for (const PlanPart& part : planner->result()->parts)
+                draftHinted = draftHinted || !part.query.orderHint.empty();
+        }
     });
     const QStringList rooms = window->document()->roomNames();
     QVERIFY(rooms.size() > 2);
@@ -82,6 +89,7 @@ void LiveReplanningTest::queryEditReplansWithoutF5() {
     QVERIFY(planner->staleResult());
     QVERIFY2(waitForFullPlan(planner), qPrintable(planner->errorMessage()));
     QCOMPARE(drafts, (std::vector<bool>{true, false}));
+    QVERIFY(draftHinted);
     QVERIFY(!planner->staleResult());
     // The new plan is of the new query: the unticked room is not required.
     const auto& parts = planner->result()->parts;

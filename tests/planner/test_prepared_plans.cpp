@@ -2,9 +2,11 @@
 // plans the same angles many times); the plans it hands out are preparePlan's.
 #include "decomposition/FloorCache.h"
 #include "formats/PlanIO.h"
+#include "pipeline/PerRoomSweep.h"
 #include "pipeline/Planner.h"
 #include "pipeline/PreparedPlans.h"
 
+#include <cmath>
 #include <future>
 #include <gtest/gtest.h>
 #include <memory>
@@ -113,6 +115,62 @@ TEST(PreparedPlans, DraftPlansTheSameQueryQuickly) {
         const PlanResult one = draftCoverage(request, plans);
         EXPECT_LT(one.metrics.requiredArea, 0.8 * draft.metrics.requiredArea) << name;
     }
+}
+
+// Live replanning's sketch is warm-started from the path shown before the edit: the same query
+// gives back that plan's walk (its cells at its angles, in its order), and another query a
+// path never slower than the cold sketch's (greedy also walks the hinted order; the faster
+// path is kept), here mostly faster.
+TEST(DraftWarmStart, FollowsThePlanShownBeforeTheEdit) {
+    const PlanRequest request =
+        planRequestFor(loadProjectFile(std::string(FC_PLANS_DIR) + "/ward.geojson"));
+    const PreparedPlans plans(request.plan, request.robot, true);
+    const PlanResult full = planCoverage(request, {}, &plans);
+
+    PlanRequest same = request;
+    same.previousPath = full.path;
+    same.previousAngles = roomAnglesOf(full, request.plan);
+    const PlanResult again = draftCoverage(same, plans);
+    EXPECT_NEAR(again.metrics.time, full.metrics.time, 1e-6 * full.metrics.time);
+    EXPECT_LT(again.metrics.time, draftCoverage(request, plans).metrics.time);
+
+    int faster = 0, rooms = 0;
+    for (const Room& left : request.plan.rooms) {
+        PlanRequest edited = request; // `left` unticked
+        for (const Room& room : request.plan.rooms)
+            if (room.name != left.name)
+                edited.rooms.push_back(room.name);
+        const double cold = draftCoverage(edited, plans).metrics.time;
+        edited.previousPath = same.previousPath;
+        edited.previousAngles = same.previousAngles;
+        const double warm = draftCoverage(edited, plans).metrics.time;
+        EXPECT_LE(warm, cold * (1 + 1e-9)) << left.name;
+        faster += warm < 0.99 * cold;
+        ++rooms;
+    }
+    EXPECT_GE(faster, rooms / 2);
+}
+
+// The hint maps a path to the cells of any decomposition of the floor: cells the path swept
+// in its order, the others right after their nearest swept neighbour.
+TEST(DraftWarmStart, OrderHintRanksCellsAlongThePath) {
+    const Plan plan = samplePlan("office");
+    const PreparedPlan prepared = preparePlan(plan, RobotProfile{}, 90.0);
+    PlanRequest request;
+    request.plan = plan;
+    request.solver = "greedy";
+    const PlanResult planned = planAtAngle(request, 90.0);
+    const std::vector<double> rank = orderHintFrom(prepared, planned.path);
+    ASSERT_EQ(rank.size(), prepared.decomposition.cells.size());
+    // Cells in the walk's order have increasing ranks.
+    double last = -1.0;
+    for (int cell : planned.solution.cellOrder) {
+        EXPECT_GT(rank[cell], last) << "cell " << cell;
+        last = rank[cell];
+    }
+    for (double r : rank)
+        EXPECT_TRUE(std::isfinite(r));
+    EXPECT_TRUE(orderHintFrom(prepared, CoveragePath{}).empty());
 }
 
 // Live replanning keeps one FloorCache across edits: an edit of the rooms leaves the free space

@@ -354,7 +354,7 @@ TEST(WalkEvaluation, RejectsBrokenWalks) {
     Walk wrongEnd{{2, 0}, {0}};
     EXPECT_FALSE(evaluateWalk(t.graph, t.query, wrongEnd).connected);
 
-    Query nothing{{0, 0}, 3, 3, 1};
+    Query nothing{{0, 0}, 3, 3, 1, {}};
     const WalkEvaluation empty = evaluateWalk(t.graph, nothing, Walk{{3}, {}});
     EXPECT_TRUE(empty.connected && empty.coversAllRequired);
     EXPECT_EQ(empty.graphCost, 0.0);
@@ -583,7 +583,7 @@ TEST(Solvers, ExplainUnreachableCellsAndEnds) {
     GraphBuilder island;
     island.graph = t.graph;
     island.primary(20, 22, 0, 4, 2); // cell 2: no edges to the others
-    const Query cutOff{{1, 1, 1}, 0, 2, 1};
+    const Query cutOff{{1, 1, 1}, 0, 2, 1, {}};
     using Solve = std::function<Solution(const CornerGraph&, const Query&)>;
     const Solve solvers[] = {
         [](const CornerGraph& g, const Query& query) { return solveExact(g, query); },
@@ -596,8 +596,8 @@ TEST(Solvers, ExplainUnreachableCellsAndEnds) {
         } catch (const SolverError& e) {
             EXPECT_NE(std::string(e.what()).find("1 required cell"), std::string::npos) << e.what();
         }
-        EXPECT_THROW(solve(island.graph, Query{{1, 1, 0}, 0, 8, 1}), SolverError);  // end
-        EXPECT_THROW(solve(island.graph, Query{{1, 1, 0}, 0, 99, 1}), SolverError); // bad id
+        EXPECT_THROW(solve(island.graph, Query{{1, 1, 0}, 0, 8, 1, {}}), SolverError);  // end
+        EXPECT_THROW(solve(island.graph, Query{{1, 1, 0}, 0, 99, 1, {}}), SolverError); // bad id
     }
 }
 

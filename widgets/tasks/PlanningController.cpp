@@ -236,6 +236,13 @@ void PlanningController::startDraft() {
         return;
     }
     PlanRequest request = planRequestFor(document_->project());
+    // The sketch follows the path shown before the edit where that is cheaper than greedy
+    // (Query::orderHint): the path changes where the edit changed it, not everywhere.
+    if (const auto before = result_ ? result_ : stale_) {
+        request.previousPath = before->path;
+        if (resultFloor_ == floorEdits_) // the same floor: the same cells at those angles
+            request.previousAngles = roomAnglesOf(*before, request.plan);
+    }
     const quint64 edit = edits_;
     Task* task = tasks_->run(tr("Sketching the path"),
                              [request, plans = preparedPlans()](TaskFeedback& feedback) {
