@@ -25,6 +25,7 @@
 #include <cstdlib>
 #include <cstring>
 #include <ctime>
+#include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <sstream>
@@ -287,6 +288,12 @@ int main(int argc, char** argv) {
     std::printf("|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---|---:|\n");
     if (!o.model.empty())
         return measureSavedModel(o);
+    std::error_code created; // the curves and models go there; a missing folder is made
+    std::filesystem::create_directories(o.out, created);
+    if (created) {
+        std::cerr << o.out << ": cannot create the folder (" << created.message() << ")\n";
+        return 2;
+    }
     for (const std::string& name : o.cases) {
         const Project project = loadCase(name, o.seed);
         const Case c = caseOf(name);

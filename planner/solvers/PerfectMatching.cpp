@@ -2,7 +2,10 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <lemon/full_graph.h>
+#include <lemon/matching.h>
 #include <limits>
+#include <stdexcept>
 #include <tuple>
 
 namespace fc::baseline_detail {
@@ -76,9 +79,27 @@ std::vector<int> greedyPerfectMatching(const std::vector<std::vector<double>>& c
     return mate;
 }
 
+std::vector<int> blossomPerfectMatching(const std::vector<std::vector<double>>& cost) {
+    const int n = static_cast<int>(cost.size());
+    std::vector<int> mate(cost.size(), -1);
+    if (n == 0)
+        return mate;
+    lemon::FullGraph graph(n);
+    lemon::FullGraph::EdgeMap<double> weight(graph);
+    for (lemon::FullGraph::EdgeIt e(graph); e != lemon::INVALID; ++e)
+        weight[e] = -cost[graph.id(graph.u(e))][graph.id(graph.v(e))];
+    lemon::MaxWeightedPerfectMatching<lemon::FullGraph, lemon::FullGraph::EdgeMap<double>> matching(
+        graph, weight);
+    if (!matching.run()) // a complete graph of even size always has one
+        throw std::logic_error("no perfect matching on a complete graph of even size");
+    for (lemon::FullGraph::NodeIt v(graph); v != lemon::INVALID; ++v)
+        mate[graph.id(v)] = graph.id(matching.mate(v));
+    return mate;
+}
+
 std::vector<int> minimumWeightPerfectMatching(const std::vector<std::vector<double>>& cost) {
     return static_cast<int>(cost.size()) <= kExactMatchingLimit ? exactPerfectMatching(cost)
-                                                                : greedyPerfectMatching(cost);
+                                                                : blossomPerfectMatching(cost);
 }
 
 double matchingCost(const std::vector<std::vector<double>>& cost, const std::vector<int>& mate) {

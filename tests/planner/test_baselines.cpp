@@ -113,10 +113,27 @@ TEST(PerfectMatching, ExactEqualsBruteForceOnRandomPoints) {
     }
 }
 
-TEST(PerfectMatching, LargeSetsFallBackToAPerfectGreedyMatching) {
+// Above the dynamic programme's limit the blossom algorithm (LEMON) matches exactly: it agrees
+// with the programme wherever both run, and is never beaten by greedy with pair swaps.
+TEST(PerfectMatching, BlossomEqualsTheDynamicProgrammeAndScales) {
     std::mt19937 random(9);
-    const CostMatrix cost = randomPoints(kExactMatchingLimit + 10, random);
-    EXPECT_TRUE(isPerfect(minimumWeightPerfectMatching(cost)));
+    for (int n = 2; n <= kExactMatchingLimit; n += 2) {
+        for (int trial = 0; trial < 5; ++trial) {
+            const CostMatrix cost = randomPoints(n, random);
+            const std::vector<int> blossom = blossomPerfectMatching(cost);
+            ASSERT_TRUE(isPerfect(blossom)) << n;
+            EXPECT_NEAR(matchingCost(cost, blossom), matchingCost(cost, exactPerfectMatching(cost)),
+                        1e-9)
+                << n;
+        }
+    }
+    for (int n : {kExactMatchingLimit + 10, 200}) {
+        const CostMatrix cost = randomPoints(n, random);
+        const std::vector<int> mate = minimumWeightPerfectMatching(cost);
+        ASSERT_TRUE(isPerfect(mate)) << n;
+        EXPECT_LE(matchingCost(cost, mate), matchingCost(cost, greedyPerfectMatching(cost)) + 1e-9);
+    }
+    EXPECT_TRUE(blossomPerfectMatching({}).empty());
 }
 
 TEST(Baselines, ListedAndDeterministicPerSeed) {
