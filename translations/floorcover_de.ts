@@ -135,6 +135,782 @@
         <source>The free floor (%1 m²) is smaller than the robot (%2 m², L = %3 m).</source>
         <translation>Die freie Fläche (%1 m²) ist kleiner als der Roboter (%2 m², L = %3 m).</translation>
     </message>
+    <message>
+        <source>%1 (feature %2)</source>
+        <translation>%1 (Objekt %2)</translation>
+    </message>
+    <message>
+        <source>%1 (hole %2 in the outer wall)</source>
+        <translation>%1 (Loch %2 in der Außenwand)</translation>
+    </message>
+    <message>
+        <source>%1 (outer wall)</source>
+        <translation>%1 (Außenwand)</translation>
+    </message>
+    <message>
+        <source>%1 (obstacle)</source>
+        <translation>%1 (Hindernis)</translation>
+    </message>
+    <message>
+        <source>%1 (room)</source>
+        <translation>%1 (Raum)</translation>
+    </message>
+    <message>
+        <source>A room</source>
+        <translation>Ein Raum</translation>
+    </message>
+    <message>
+        <source>An unnamed room</source>
+        <translation>Ein unbenannter Raum</translation>
+    </message>
+    <message>
+        <source>Room %1</source>
+        <translation>Raum %1</translation>
+    </message>
+    <message>
+        <source>Feature %1</source>
+        <translation>Objekt %1</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+    <message>
+        <source>The free floor (%1 m²) is smaller than one coverage square W² (%2 m²): make the coverage width W smaller in the Planning panel.</source>
+        <translation>Die freie Fläche (%1 m²) ist kleiner als ein Quadrat der Bahnbreite W² (%2 m²): Verkleinern Sie die Bahnbreite W im Bereich Planung.</translation>
+    </message>
+    <message>
+        <source>%1: vertex %2 has a coordinate that is not a finite number.</source>
+        <translation>%1: Eckpunkt %2 hat eine Koordinate, die keine endliche Zahl ist.</translation>
+    </message>
+    <message>
+        <source>%1 has two vertices on top of each other at %3 (vertex %2): delete one of them (Edit Vertices, right-click).</source>
+        <translation>%1 hat bei %3 zwei Eckpunkte übereinander (Eckpunkt %2): Löschen Sie einen davon (Eckpunkte bearbeiten, Rechtsklick).</translation>
+    </message>
+    <message>
+        <source>%1 has no area: all its vertices lie on one line.</source>
+        <translation>%1 hat keine Fläche: Alle Eckpunkte liegen auf einer Linie.</translation>
+    </message>
+    <message>
+        <source>The robot diameter L must be a positive number, not %1: change it in the Planning panel.</source>
+        <translation>Der Roboterdurchmesser L muss eine positive Zahl sein, nicht %1: Ändern Sie ihn im Bereich Planung.</translation>
+    </message>
+    <message>
+        <source>The coverage width W must be a positive number, not %1: change it in the Planning panel.</source>
+        <translation>Die Bahnbreite W muss eine positive Zahl sein, nicht %1: Ändern Sie sie im Bereich Planung.</translation>
+    </message>
+    <message>
+        <source>The cleaning diameter D must be a positive number, not %1: change it in the Planning panel.</source>
+        <translation>Der Reinigungsdurchmesser D muss eine positive Zahl sein, nicht %1: Ändern Sie ihn im Bereich Planung.</translation>
+    </message>
+    <message>
+        <source>The speed must be a positive number, not %1: change it in the Planning panel.</source>
+        <translation>Die Geschwindigkeit muss eine positive Zahl sein, nicht %1: Ändern Sie sie im Bereich Planung.</translation>
+    </message>
+    <message>
+        <source>The robot&apos;s turn time must be zero or positive, not %1.</source>
+        <translation>Die Wendezeit des Roboters muss null oder positiv sein, nicht %1.</translation>
+    </message>
+    <message>
+        <source>A coverage width W of %1 m is not a plausible robot size: change it in the Planning panel.</source>
+        <translation>Eine Bahnbreite W von %1 m ist keine plausible Robotergröße: Ändern Sie sie im Bereich Planung.</translation>
+    </message>
+    <message>
+        <source>one of the rooms has fewer than three corners</source>
+        <translation>einer der Räume hat weniger als drei Ecken</translation>
+    </message>
+    <message>
+        <source>they do not share a border; merge rooms that meet along a wall or a doorway</source>
+        <translation>sie haben keine gemeinsame Grenze; führen Sie Räume zusammen, die an einer Wand oder einem Durchgang aneinanderstoßen</translation>
+    </message>
+    <message>
+        <source>the merged room would fall apart into several pieces</source>
+        <translation>der zusammengeführte Raum würde in mehrere Teile zerfallen</translation>
+    </message>
+    <message>
+        <source>the merged room would enclose a hole; merge the room inside it as well</source>
+        <translation>der zusammengeführte Raum würde ein Loch umschließen; führen Sie auch den Raum darin mit zusammen</translation>
+    </message>
+    <message>
+        <source>the room has fewer than three corners</source>
+        <translation>der Raum hat weniger als drei Ecken</translation>
+    </message>
+    <message>
+        <source>drag the cut as a line across the room (Split Room)</source>
+        <translation>ziehen Sie den Schnitt als Linie quer durch den Raum (Raum teilen)</translation>
+    </message>
+    <message>
+        <source>the cut does not cross the room; drag it from one wall of the room to another</source>
+        <translation>der Schnitt kreuzt den Raum nicht; ziehen Sie ihn von einer Wand des Raums zu einer anderen</translation>
+    </message>
+    <message>
+        <source>the cut crosses the room more than once; drag it where one straight line divides the room in two</source>
+        <translation>der Schnitt kreuzt den Raum mehr als einmal; ziehen Sie ihn dort, wo eine gerade Linie den Raum in zwei Teile teilt</translation>
+    </message>
+    <message>
+        <source>the cut would cut off only a sliver of the room; drag it across the middle of the room</source>
+        <translation>der Schnitt würde nur einen schmalen Streifen des Raums abtrennen; ziehen Sie ihn durch die Mitte des Raums</translation>
+    </message>
+    <message>
+        <source>The sweep angle must be a finite number of degrees: set it in the Planning panel.</source>
+        <translation>Der Bahnwinkel muss eine endliche Gradzahl sein: Stellen Sie ihn im Bereich Planung ein.</translation>
+    </message>
+    <message>
+        <source>There is no room “%1” in this plan (its rooms: %2): check the rooms to plan in the Planning panel.</source>
+        <translation>In diesem Plan gibt es keinen Raum „%1“ (seine Räume: %2): Prüfen Sie die zu planenden Räume im Bereich Planung.</translation>
+    </message>
+    <message>
+        <source>There is no solver “%1” (available: %2): choose one in the Planning panel.</source>
+        <translation>Es gibt keinen Löser „%1“ (verfügbar: %2): Wählen Sie einen im Bereich Planung.</translation>
+    </message>
+    <message>
+        <source>The robot finds no way into room “%1” from the room before it: widen the passage, or sweep the floor at one angle (Sweep in the Planning panel).</source>
+        <translation>Der Roboter findet aus dem vorigen Raum keinen Weg in den Raum „%1“: Verbreitern Sie den Durchgang oder fahren Sie die Fläche in einem Winkel ab (Bahnen im Bereich Planung).</translation>
+    </message>
+    <message>
+        <source>Cancelled.</source>
+        <translation>Abgebrochen.</translation>
+    </message>
+    <message>
+        <source>The %1 solver was cancelled.</source>
+        <translation>Der Löser %1 wurde abgebrochen.</translation>
+    </message>
+    <message>
+        <source>The %1 solver cannot reach %2 cells from the start: move the start (Place Start) or pick other rooms.</source>
+        <translation>Der Löser %1 kann %2 Zellen vom Start aus nicht erreichen: Verschieben Sie den Start (Start setzen) oder wählen Sie andere Räume.</translation>
+    </message>
+    <message>
+        <source>The %1 solver cannot reach the end from the start: move one of them.</source>
+        <translation>Der Löser %1 kann das Ziel vom Start aus nicht erreichen: Verschieben Sie eines von beiden.</translation>
+    </message>
+    <message>
+        <source>The %1 solver stopped on an internal error (%2): please report it, and choose another solver in the Planning panel meanwhile.</source>
+        <translation>Der Löser %1 hat wegen eines internen Fehlers angehalten (%2): Bitte melden Sie ihn und wählen Sie bis dahin im Bereich Planung einen anderen Löser.</translation>
+    </message>
+    <message>
+        <source>The dqn model is inconsistent (its network does not fit its kind of state): train a new model in the Training panel.</source>
+        <translation>Das dqn-Modell ist widersprüchlich (sein Netz passt nicht zu seiner Art von Zustand): Trainieren Sie im Bereich Training ein neues Modell.</translation>
+    </message>
+    <message>
+        <source>The dqn model was trained on a plan of another size: train a model for this plan in the Training panel.</source>
+        <translation>Das dqn-Modell wurde auf einem Plan anderer Größe trainiert: Trainieren Sie im Bereich Training ein Modell für diesen Plan.</translation>
+    </message>
+    <message>
+        <source>The dqn solver cannot plan this query (%1): choose another solver in the Planning panel.</source>
+        <translation>Der Löser dqn kann diese Anfrage nicht planen (%1): Wählen Sie im Bereich Planung einen anderen Löser.</translation>
+    </message>
+    <message>
+        <source>The dqn solver finds no way to the rooms still to clean: choose another solver in the Planning panel.</source>
+        <translation>Der Löser dqn findet keinen Weg zu den noch zu reinigenden Räumen: Wählen Sie im Bereich Planung einen anderen Löser.</translation>
+    </message>
+    <message>
+        <source>The dqn model ran out of steps before it covered the rooms: train it longer in the Training panel, or choose another solver.</source>
+        <translation>Dem dqn-Modell gingen die Schritte aus, bevor es die Räume abgedeckt hatte: Trainieren Sie es im Bereich Training länger oder wählen Sie einen anderen Löser.</translation>
+    </message>
+    <message>
+        <source>The path of the dqn solver does not cover the rooms (an internal error): choose another solver in the Planning panel.</source>
+        <translation>Der Pfad des Lösers dqn deckt die Räume nicht ab (ein interner Fehler): Wählen Sie im Bereich Planung einen anderen Löser.</translation>
+    </message>
+    <message>
+        <source>The plan has no floor the robot can reach: there is nothing to train on.</source>
+        <translation>Der Plan hat keine Fläche, die der Roboter erreichen kann: Es gibt nichts zu trainieren.</translation>
+    </message>
+    <message>
+        <source>The model file is incomplete: load another model or train a new one in the Training panel.</source>
+        <translation>Die Modelldatei ist unvollständig: Laden Sie ein anderes Modell oder trainieren Sie im Bereich Training ein neues.</translation>
+    </message>
+    <message>
+        <source>The model file is damaged: load another model or train a new one in the Training panel.</source>
+        <translation>Die Modelldatei ist beschädigt: Laden Sie ein anderes Modell oder trainieren Sie im Bereich Training ein neues.</translation>
+    </message>
+    <message>
+        <source>This is not a FloorCover dqn model file (.fcdqn).</source>
+        <translation>Dies ist keine dqn-Modelldatei von FloorCover (.fcdqn).</translation>
+    </message>
+    <message>
+        <source>The model file has format version %1, and this FloorCover reads versions up to %2: update FloorCover or train a new model.</source>
+        <translation>Die Modelldatei hat die Formatversion %1, dieses FloorCover liest Versionen bis %2: Aktualisieren Sie FloorCover oder trainieren Sie ein neues Modell.</translation>
+    </message>
+    <message>
+        <source>The model file cannot be opened: check that it exists and can be read.</source>
+        <translation>Die Modelldatei lässt sich nicht öffnen: Prüfen Sie, ob sie existiert und lesbar ist.</translation>
+    </message>
+    <message>
+        <source>This model was trained for another floor plan or robot (%1 corners in %2 cells, sweep angle %3°, coverage width %4 m; this plan has %5 corners in %6 cells): train a model for this plan in the Training panel.</source>
+        <translation>Dieses Modell wurde für einen anderen Grundriss oder Roboter trainiert (%1 Ecken in %2 Zellen, Bahnwinkel %3°, Bahnbreite %4 m; dieser Plan hat %5 Ecken in %6 Zellen): Trainieren Sie im Bereich Training ein Modell für diesen Plan.</translation>
+    </message>
+    <message>
+        <source>There is no such file.</source>
+        <translation>Diese Datei gibt es nicht.</translation>
+    </message>
+    <message>
+        <source>This is a folder, not a file.</source>
+        <translation>Dies ist ein Ordner, keine Datei.</translation>
+    </message>
+    <message>
+        <source>The file cannot be read (%1).</source>
+        <translation>Die Datei kann nicht gelesen werden (%1).</translation>
+    </message>
+    <message>
+        <source>The file cannot be written (%1): choose another folder, or check that this one can be written to.</source>
+        <translation>Die Datei kann nicht geschrieben werden (%1): Wählen Sie einen anderen Ordner oder prüfen Sie, ob in diesen geschrieben werden darf.</translation>
+    </message>
+    <message>
+        <source>The file name has no extension: FloorCover opens .fcproj projects and .geojson or .json plans; other formats come in with File &gt; Import…</source>
+        <translation>Der Dateiname hat keine Endung: FloorCover öffnet .fcproj-Projekte und .geojson- oder .json-Pläne; andere Formate kommen über Datei &gt; Importieren… herein.</translation>
+    </message>
+    <message>
+        <source>FloorCover opens .fcproj projects and .geojson or .json plans, not “%1” files; other formats come in with File &gt; Import…</source>
+        <translation>FloorCover öffnet .fcproj-Projekte und .geojson- oder .json-Pläne, keine „%1“-Dateien; andere Formate kommen über Datei &gt; Importieren… herein.</translation>
+    </message>
+    <message>
+        <source>The file is larger than %1, more than FloorCover imports.</source>
+        <translation>Die Datei ist größer als %1, mehr als FloorCover importiert.</translation>
+    </message>
+    <message>
+        <source>The file is empty.</source>
+        <translation>Die Datei ist leer.</translation>
+    </message>
+    <message>
+        <source>The file ends too early (line %1, column %2): it may have been cut off while it was written.</source>
+        <translation>Die Datei endet zu früh (Zeile %1, Spalte %2): Sie wurde vielleicht beim Schreiben abgeschnitten.</translation>
+    </message>
+    <message>
+        <source>The file ends too early: it may have been cut off while it was written.</source>
+        <translation>Die Datei endet zu früh: Sie wurde vielleicht beim Schreiben abgeschnitten.</translation>
+    </message>
+    <message>
+        <source>The file is not valid JSON at line %1, column %2 (%3).</source>
+        <translation>Die Datei ist in Zeile %1, Spalte %2 kein gültiges JSON (%3).</translation>
+    </message>
+    <message>
+        <source>The file is not valid JSON (%1).</source>
+        <translation>Die Datei ist kein gültiges JSON (%1).</translation>
+    </message>
+    <message>
+        <source>The number %1 at line %2, column %3 is too large for a coordinate.</source>
+        <translation>Die Zahl %1 in Zeile %2, Spalte %3 ist zu groß für eine Koordinate.</translation>
+    </message>
+    <message>
+        <source>The number %1 is too large for a coordinate.</source>
+        <translation>Die Zahl %1 ist zu groß für eine Koordinate.</translation>
+    </message>
+    <message>
+        <source>A number in the file is out of range (%1).</source>
+        <translation>Eine Zahl in der Datei liegt außerhalb des gültigen Bereichs (%1).</translation>
+    </message>
+    <message>
+        <source>%1: the coordinates must be a list of [x, y] positions, not %2.</source>
+        <translation>%1: Die Koordinaten müssen eine Liste von [x, y]-Positionen sein, nicht %2.</translation>
+    </message>
+    <message>
+        <source>%1: vertex %2 is not an [x, y] position but %3.</source>
+        <translation>%1: Eckpunkt %2 ist keine [x, y]-Position, sondern %3.</translation>
+    </message>
+    <message>
+        <source>%1: vertex %2 has a coordinate that is not a number (%3).</source>
+        <translation>%1: Eckpunkt %2 hat eine Koordinate, die keine Zahl ist (%3).</translation>
+    </message>
+    <message>
+        <source>%1 has no geometry.</source>
+        <translation>%1 hat keine Geometrie.</translation>
+    </message>
+    <message>
+        <source>%1: the geometry has no type.</source>
+        <translation>%1: Die Geometrie hat keinen Typ.</translation>
+    </message>
+    <message>
+        <source>%1 is a %2; FloorCover reads plans drawn as polygons.</source>
+        <translation>%1 ist ein %2; FloorCover liest Pläne, die als Polygone gezeichnet sind.</translation>
+    </message>
+    <message>
+        <source>%1: the geometry holds no polygon outline.</source>
+        <translation>%1: Die Geometrie enthält keinen Polygonumriss.</translation>
+    </message>
+    <message>
+        <source>%1: the room name (properties.name) must be text, not %2.</source>
+        <translation>%1: Der Raumname (properties.name) muss Text sein, nicht %2.</translation>
+    </message>
+    <message>
+        <source>%1 has no name: rooms need one in properties.name.</source>
+        <translation>%1 hat keinen Namen: Räume brauchen einen in properties.name.</translation>
+    </message>
+    <message>
+        <source>Features %1 and %2 are both an outer wall (role boundary); a plan has exactly one.</source>
+        <translation>Die Objekte %1 und %2 sind beide eine Außenwand (Rolle boundary); ein Plan hat genau eine.</translation>
+    </message>
+    <message>
+        <source>%1 has %2 separate parts; the outer wall must be one polygon.</source>
+        <translation>%1 hat %2 getrennte Teile; die Außenwand muss ein einziges Polygon sein.</translation>
+    </message>
+    <message>
+        <source>%1 has a hole; floor inside an obstacle is not supported.</source>
+        <translation>%1 hat ein Loch; freie Fläche in einem Hindernis wird nicht unterstützt.</translation>
+    </message>
+    <message>
+        <source>Two rooms are named “%1” (features %2 and %3): rename one.</source>
+        <translation>Zwei Räume heißen „%1“ (Objekte %2 und %3): Benennen Sie einen davon um.</translation>
+    </message>
+    <message>
+        <source>%1 has %2 separate parts: split it into rooms with names of their own.</source>
+        <translation>%1 hat %2 getrennte Teile: Teilen Sie ihn in Räume mit eigenen Namen auf.</translation>
+    </message>
+    <message>
+        <source>%1 has a hole: draw the hole as an obstacle instead.</source>
+        <translation>%1 hat ein Loch: Zeichnen Sie das Loch stattdessen als Hindernis.</translation>
+    </message>
+    <message>
+        <source>The file is not a GeoJSON FeatureCollection, the form in which FloorCover reads plans.</source>
+        <translation>Die Datei ist keine GeoJSON-FeatureCollection, die Form, in der FloorCover Pläne liest.</translation>
+    </message>
+    <message>
+        <source>The GeoJSON file has no list of features.</source>
+        <translation>Die GeoJSON-Datei hat keine Liste von Objekten (features).</translation>
+    </message>
+    <message>
+        <source>%1 is not a GeoJSON Feature.</source>
+        <translation>%1 ist kein GeoJSON-Feature.</translation>
+    </message>
+    <message>
+        <source>%1: its properties must be an object.</source>
+        <translation>%1: Seine Eigenschaften (properties) müssen ein Objekt sein.</translation>
+    </message>
+    <message>
+        <source>%1 has no role: set properties.role to boundary, obstacle or room.</source>
+        <translation>%1 hat keine Rolle: Setzen Sie properties.role auf boundary, obstacle oder room.</translation>
+    </message>
+    <message>
+        <source>%1: the role (properties.role) must be text, not %2.</source>
+        <translation>%1: Die Rolle (properties.role) muss Text sein, nicht %2.</translation>
+    </message>
+    <message>
+        <source>%1 has the unknown role “%2”: use boundary, obstacle or room.</source>
+        <translation>%1 hat die unbekannte Rolle „%2“: Verwenden Sie boundary, obstacle oder room.</translation>
+    </message>
+    <message>
+        <source>The plan has no outer wall: one feature needs properties.role = &quot;boundary&quot;.</source>
+        <translation>Der Plan hat keine Außenwand: Ein Objekt braucht properties.role = &quot;boundary&quot;.</translation>
+    </message>
+    <message>
+        <source>In the project file, %1 must be a finite number, not %2.</source>
+        <translation>In der Projektdatei muss %1 eine endliche Zahl sein, nicht %2.</translation>
+    </message>
+    <message>
+        <source>In the project file, %1 must be an object.</source>
+        <translation>In der Projektdatei muss %1 ein Objekt sein.</translation>
+    </message>
+    <message>
+        <source>In the project file, %1 must be [x, y] or null, not %2.</source>
+        <translation>In der Projektdatei muss %1 [x, y] oder null sein, nicht %2.</translation>
+    </message>
+    <message>
+        <source>In the project file, %1 has a coordinate that is not a finite number.</source>
+        <translation>In der Projektdatei hat %1 eine Koordinate, die keine endliche Zahl ist.</translation>
+    </message>
+    <message>
+        <source>The project&apos;s plan has no outer wall (boundary).</source>
+        <translation>Der Plan des Projekts hat keine Außenwand (boundary).</translation>
+    </message>
+    <message>
+        <source>In the project file, %1 must be a list.</source>
+        <translation>In der Projektdatei muss %1 eine Liste sein.</translation>
+    </message>
+    <message>
+        <source>%1 has no outline.</source>
+        <translation>%1 hat keinen Umriss.</translation>
+    </message>
+    <message>
+        <source>In the project file, plan.epsg must be an EPSG code (a positive whole number), not %1.</source>
+        <translation>In der Projektdatei muss plan.epsg ein EPSG-Code sein (eine positive ganze Zahl), nicht %1.</translation>
+    </message>
+    <message>
+        <source>The file is not a FloorCover project.</source>
+        <translation>Die Datei ist kein FloorCover-Projekt.</translation>
+    </message>
+    <message>
+        <source>The project file does not say its format version.</source>
+        <translation>Die Projektdatei nennt ihre Formatversion nicht.</translation>
+    </message>
+    <message>
+        <source>The project was saved by a newer FloorCover (format version %1; this one reads up to %2): update FloorCover.</source>
+        <translation>Das Projekt wurde von einem neueren FloorCover gespeichert (Formatversion %1; dieses liest bis %2): Aktualisieren Sie FloorCover.</translation>
+    </message>
+    <message>
+        <source>The project file has an invalid format version (%1).</source>
+        <translation>Die Projektdatei hat eine ungültige Formatversion (%1).</translation>
+    </message>
+    <message>
+        <source>The project file holds no plan.</source>
+        <translation>Die Projektdatei enthält keinen Plan.</translation>
+    </message>
+    <message>
+        <source>In the project file, sweep.%1 must be true or false.</source>
+        <translation>In der Projektdatei muss sweep.%1 true oder false sein.</translation>
+    </message>
+    <message>
+        <source>In the project file, sweep.room_angles must give each room&apos;s sweep angle in degrees.</source>
+        <translation>In der Projektdatei muss sweep.room_angles für jeden Raum den Bahnwinkel in Grad angeben.</translation>
+    </message>
+    <message>
+        <source>In the project file, the sweep angle of room “%1” must be a finite number of degrees, not %2.</source>
+        <translation>In der Projektdatei muss der Bahnwinkel von Raum „%1“ eine endliche Gradzahl sein, nicht %2.</translation>
+    </message>
+    <message>
+        <source>In the project file, solver must be the name of a solver, not %1.</source>
+        <translation>In der Projektdatei muss solver der Name eines Lösers sein, nicht %1.</translation>
+    </message>
+    <message>
+        <source>In the project file, selectedRooms must be a list of room names.</source>
+        <translation>In der Projektdatei muss selectedRooms eine Liste von Raumnamen sein.</translation>
+    </message>
+    <message>
+        <source>FloorCover cannot export to “%1” (it exports %2).</source>
+        <translation>FloorCover kann nicht nach „%1“ exportieren (es exportiert %2).</translation>
+    </message>
+    <message>
+        <source>FloorCover cannot export “%1”: it exports the path, the plan or the zones.</source>
+        <translation>FloorCover kann „%1“ nicht exportieren: Es exportiert den Pfad, den Plan oder die Zonen.</translation>
+    </message>
+    <message>
+        <source>The %1 format cannot hold the path: choose another format.</source>
+        <translation>Das Format %1 kann den Pfad nicht aufnehmen: Wählen Sie ein anderes Format.</translation>
+    </message>
+    <message>
+        <source>The %1 format cannot hold the plan: choose another format.</source>
+        <translation>Das Format %1 kann den Plan nicht aufnehmen: Wählen Sie ein anderes Format.</translation>
+    </message>
+    <message>
+        <source>The %1 format cannot hold the zones: choose another format.</source>
+        <translation>Das Format %1 kann die Zonen nicht aufnehmen: Wählen Sie ein anderes Format.</translation>
+    </message>
+    <message>
+        <source>FloorCover does not know this export format: choose one of the formats offered.</source>
+        <translation>FloorCover kennt dieses Exportformat nicht: Wählen Sie eines der angebotenen Formate.</translation>
+    </message>
+    <message>
+        <source>FloorCover cannot import “.%1” files (it imports %2).</source>
+        <translation>FloorCover kann keine „.%1“-Dateien importieren (es importiert %2).</translation>
+    </message>
+    <message>
+        <source>FloorCover cannot import “.%1” files.</source>
+        <translation>FloorCover kann keine „.%1“-Dateien importieren.</translation>
+    </message>
+    <message>
+        <source>The unit must be a positive number of metres: correct Units in the import dialog.</source>
+        <translation>Die Einheit muss eine positive Anzahl Meter sein: Korrigieren Sie Einheit im Importdialog.</translation>
+    </message>
+    <message>
+        <source>“Close gaps up to” must be between 0 and 1000 m.</source>
+        <translation>„Lücken schließen bis“ muss zwischen 0 und 1000 m liegen.</translation>
+    </message>
+    <message>
+        <source>The plan needs repair (Plan &gt; Repair Plan, after the import): %1</source>
+        <translation>Der Plan muss repariert werden (Planen &gt; Plan reparieren, nach dem Import): %1</translation>
+    </message>
+    <message>
+        <source>The map&apos;s start pose (%1, %2) is not on the free floor; it was not used.</source>
+        <translation>Die Startpose der Karte (%1, %2) liegt nicht auf der freien Fläche; sie wurde nicht verwendet.</translation>
+    </message>
+    <message>
+        <source>The map image&apos;s pixels are %1; FloorCover reads 1- to 16-bit grey or colour images.</source>
+        <translation>Die Pixel des Kartenbilds sind %1; FloorCover liest Grau- oder Farbbilder mit 1 bis 16 Bit.</translation>
+    </message>
+    <message>
+        <source>The map image %1 is not a readable PNG, PGM, BMP or TIFF image.</source>
+        <translation>Das Kartenbild %1 ist kein lesbares PNG-, PGM-, BMP- oder TIFF-Bild.</translation>
+    </message>
+    <message>
+        <source>The map image is empty.</source>
+        <translation>Das Kartenbild ist leer.</translation>
+    </message>
+    <message>
+        <source>The map image has more than %1 pixels, more than FloorCover reads.</source>
+        <translation>Das Kartenbild hat mehr als %1 Pixel, mehr als FloorCover liest.</translation>
+    </message>
+    <message>
+        <source>The map image cannot be read (%1).</source>
+        <translation>Das Kartenbild kann nicht gelesen werden (%1).</translation>
+    </message>
+    <message>
+        <source>The map image uses a colour that its palette lacks.</source>
+        <translation>Das Kartenbild verwendet eine Farbe, die in seiner Palette fehlt.</translation>
+    </message>
+    <message>
+        <source>The map image %1 named in the YAML file is missing: keep it next to the YAML file.</source>
+        <translation>Das in der YAML-Datei genannte Kartenbild %1 fehlt: Legen Sie es neben die YAML-Datei.</translation>
+    </message>
+    <message>
+        <source>Every cell of the map is unknown: the map shows nothing.</source>
+        <translation>Jede Zelle der Karte ist unbekannt: Die Karte zeigt nichts.</translation>
+    </message>
+    <message>
+        <source>The map has no free floor.</source>
+        <translation>Die Karte hat keine freie Fläche.</translation>
+    </message>
+    <message>
+        <source>Cleaning the map left no free floor (its free cells are specks): lower “Drop islands below” under Clean the map.</source>
+        <translation>Nach dem Bereinigen blieb keine freie Fläche (die freien Zellen der Karte sind Flecken): Verringern Sie „Inseln verwerfen unter“ unter Karte bereinigen.</translation>
+    </message>
+    <message>
+        <source>The free floor is thinner than a pixel everywhere.</source>
+        <translation>Die freie Fläche ist überall dünner als ein Pixel.</translation>
+    </message>
+    <message>
+        <source>In the map&apos;s YAML file, %1 “%2” is not a number.</source>
+        <translation>In der YAML-Datei der Karte ist %1 „%2“ keine Zahl.</translation>
+    </message>
+    <message>
+        <source>In the map&apos;s YAML file, %1 must be a list [%2].</source>
+        <translation>In der YAML-Datei der Karte muss %1 eine Liste [%2] sein.</translation>
+    </message>
+    <message>
+        <source>In the map&apos;s YAML file, %1 needs %2 numbers, not %3.</source>
+        <translation>In der YAML-Datei der Karte braucht %1 %2 Zahlen, nicht %3.</translation>
+    </message>
+    <message>
+        <source>In the map&apos;s YAML file, %1 “%2” is not 0/1 or true/false.</source>
+        <translation>In der YAML-Datei der Karte ist %1 „%2“ nicht 0/1 oder true/false.</translation>
+    </message>
+    <message>
+        <source>The map&apos;s YAML file is larger than 1 MiB; a ROS map&apos;s is far smaller.</source>
+        <translation>Die YAML-Datei der Karte ist größer als 1 MiB; die einer ROS-Karte ist viel kleiner.</translation>
+    </message>
+    <message>
+        <source>Line %1 of the map&apos;s YAML file is not of the form “key: value”.</source>
+        <translation>Zeile %1 der YAML-Datei der Karte hat nicht die Form „key: value“.</translation>
+    </message>
+    <message>
+        <source>The YAML file names no image (image:): it is not a ROS map_server map.</source>
+        <translation>Die YAML-Datei nennt kein Bild (image:): Sie ist keine Karte von ROS map_server.</translation>
+    </message>
+    <message>
+        <source>The map&apos;s resolution is missing or not a positive size in metres.</source>
+        <translation>Die Auflösung der Karte fehlt oder ist keine positive Größe in Metern.</translation>
+    </message>
+    <message>
+        <source>A resolution of %1 m per cell is not an occupancy map&apos;s (1 mm to 1 m).</source>
+        <translation>Eine Auflösung von %1 m je Zelle passt nicht zu einer Belegungskarte (1 mm bis 1 m).</translation>
+    </message>
+    <message>
+        <source>The map has no origin [x, y, yaw].</source>
+        <translation>Die Karte hat keinen Ursprung [x, y, yaw].</translation>
+    </message>
+    <message>
+        <source>The map&apos;s origin [%1] lies far outside any map frame.</source>
+        <translation>Der Ursprung der Karte [%1] liegt weit außerhalb jedes Kartenrahmens.</translation>
+    </message>
+    <message>
+        <source>The map&apos;s thresholds must satisfy 0 ≤ free_thresh &lt; occupied_thresh ≤ 1.</source>
+        <translation>Für die Schwellen der Karte muss 0 ≤ free_thresh &lt; occupied_thresh ≤ 1 gelten.</translation>
+    </message>
+    <message>
+        <source>The map&apos;s mode “%1” is unknown: it must be trinary, scale or raw.</source>
+        <translation>Der Modus „%1“ der Karte ist unbekannt: Er muss trinary, scale oder raw sein.</translation>
+    </message>
+    <message>
+        <source>The map image is not a PGM or PBM image.</source>
+        <translation>Das Kartenbild ist kein PGM- oder PBM-Bild.</translation>
+    </message>
+    <message>
+        <source>In the PGM image&apos;s header, %1 “%2” is not a number.</source>
+        <translation>Im Kopf des PGM-Bilds ist %1 „%2“ keine Zahl.</translation>
+    </message>
+    <message>
+        <source>The PGM image&apos;s header has a bad size or maximum value.</source>
+        <translation>Der Kopf des PGM-Bilds hat eine ungültige Größe oder einen ungültigen Höchstwert.</translation>
+    </message>
+    <message>
+        <source>The %1 image&apos;s data is cut short or damaged.</source>
+        <translation>Die Daten des %1-Bilds sind abgeschnitten oder beschädigt.</translation>
+    </message>
+    <message>
+        <source>This FloorCover lacks GDAL&apos;s in-memory drivers: reinstall FloorCover.</source>
+        <translation>Diesem FloorCover fehlen die Speicher-Treiber von GDAL: Installieren Sie FloorCover neu.</translation>
+    </message>
+    <message>
+        <source>The map image does not fit in memory.</source>
+        <translation>Das Kartenbild passt nicht in den Speicher.</translation>
+    </message>
+    <message>
+        <source>The free floor falls into more than %1 pieces: clean the map more (Clean the map).</source>
+        <translation>Die freie Fläche zerfällt in mehr als %1 Stücke: Bereinigen Sie die Karte stärker (Karte bereinigen).</translation>
+    </message>
+    <message>
+        <source>Tracing the free floor failed (%1).</source>
+        <translation>Das Nachzeichnen der freien Fläche ist fehlgeschlagen (%1).</translation>
+    </message>
+    <message>
+        <source>Smoothing the outline of the free floor failed.</source>
+        <translation>Das Glätten des Umrisses der freien Fläche ist fehlgeschlagen.</translation>
+    </message>
+    <message>
+        <source>No free floor is left to import.</source>
+        <translation>Es bleibt keine freie Fläche zum Importieren.</translation>
+    </message>
+    <message>
+        <source>The obstacles could not be merged (their outlines are invalid).</source>
+        <translation>Die Hindernisse ließen sich nicht vereinigen (ihre Umrisse sind ungültig).</translation>
+    </message>
+    <message>
+        <source>The obstacles could not be cut out of the outer wall.</source>
+        <translation>Die Hindernisse ließen sich nicht aus der Außenwand ausschneiden.</translation>
+    </message>
+    <message>
+        <source>No closed outline for the outer wall; not closed: %1. A larger “Close gaps up to” may close them.</source>
+        <translation>Kein geschlossener Umriss für die Außenwand; nicht geschlossen: %1. Ein größeres „Lücken schließen bis“ schließt sie vielleicht.</translation>
+    </message>
+    <message>
+        <source>No closed outline for the outer wall: give the layer of the walls the role Boundary, or close its gaps with “Close gaps up to”.</source>
+        <translation>Kein geschlossener Umriss für die Außenwand: Geben Sie dem Layer der Wände die Rolle Begrenzung oder schließen Sie seine Lücken mit „Lücken schließen bis“.</translation>
+    </message>
+    <message>
+        <source>The plan has no outer wall to repair: draw one first.</source>
+        <translation>Der Plan hat keine Außenwand, die repariert werden könnte: Zeichnen Sie zuerst eine.</translation>
+    </message>
+    <message>
+        <source>The outer wall encloses no area.</source>
+        <translation>Die Außenwand umschließt keine Fläche.</translation>
+    </message>
+    <message>
+        <source>The outer wall crossed or touched itself: it was split there.</source>
+        <translation>Die Außenwand kreuzte oder berührte sich selbst: Sie wurde dort geteilt.</translation>
+    </message>
+    <message>
+        <source>Obstacles were merged, clipped to the outer wall or joined to it: %1 before, %2 after.</source>
+        <translation>Hindernisse wurden vereinigt, an der Außenwand abgeschnitten oder mit ihr verbunden: %1 vorher, %2 nachher.</translation>
+    </message>
+    <message>
+        <source>%1 lay outside the floor or under other rooms and was removed.</source>
+        <translation>%1 lag außerhalb der Fläche oder unter anderen Räumen und wurde entfernt.</translation>
+    </message>
+    <message>
+        <source>%1 was reshaped to fit the floor (%2 m² before, %3 m² after).</source>
+        <translation>%1 wurde an die Fläche angepasst (%2 m² vorher, %3 m² nachher).</translation>
+    </message>
+    <message>
+        <source>%1 was renamed “%2”.</source>
+        <translation>%1 wurde in „%2“ umbenannt.</translation>
+    </message>
+    <message>
+        <source>The WKT text begins with SRID= but has no “;” after the code.</source>
+        <translation>Der WKT-Text beginnt mit SRID=, hat aber kein „;“ nach dem Code.</translation>
+    </message>
+    <message>
+        <source>The SRID of the WKT text is not a number.</source>
+        <translation>Die SRID des WKT-Texts ist keine Zahl.</translation>
+    </message>
+    <message>
+        <source>The file is not valid WKT.</source>
+        <translation>Die Datei ist kein gültiges WKT.</translation>
+    </message>
+    <message>
+        <source>There is more text after the WKT geometry.</source>
+        <translation>Nach der WKT-Geometrie folgt weiterer Text.</translation>
+    </message>
+    <message>
+        <source>The WKT geometry is a %1, not a POLYGON or MULTIPOLYGON.</source>
+        <translation>Die WKT-Geometrie ist ein %1, kein POLYGON oder MULTIPOLYGON.</translation>
+    </message>
+    <message>
+        <source>The WKT polygon is empty.</source>
+        <translation>Das WKT-Polygon ist leer.</translation>
+    </message>
+    <message>
+        <source>The holes of polygon %1 (a room) were left out.</source>
+        <translation>Die Löcher von Polygon %1 (ein Raum) wurden weggelassen.</translation>
+    </message>
+    <message>
+        <source>The file is not a readable DXF drawing (%1).</source>
+        <translation>Die Datei ist keine lesbare DXF-Zeichnung (%1).</translation>
+    </message>
+    <message>
+        <source>The file is not a readable DXF drawing.</source>
+        <translation>Die Datei ist keine lesbare DXF-Zeichnung.</translation>
+    </message>
+    <message>
+        <source>The drawing has more than %1 vertices, more than FloorCover imports.</source>
+        <translation>Die Zeichnung hat mehr als %1 Eckpunkte, mehr als FloorCover importiert.</translation>
+    </message>
+    <message>
+        <source>The drawing has more than %1 open lines, more than FloorCover imports.</source>
+        <translation>Die Zeichnung hat mehr als %1 offene Linien, mehr als FloorCover importiert.</translation>
+    </message>
+    <message>
+        <source>The drawing has more than %1 entities, more than FloorCover imports.</source>
+        <translation>Die Zeichnung hat mehr als %1 Elemente, mehr als FloorCover importiert.</translation>
+    </message>
+    <message>
+        <source>A coordinate on layer “%1” is not a finite number.</source>
+        <translation>Eine Koordinate auf Layer „%1“ ist keine endliche Zahl.</translation>
+    </message>
+    <message>
+        <source>The drawing does not say its unit ($INSUNITS): it was read in metres; correct Units if it is not.</source>
+        <translation>Die Zeichnung nennt ihre Einheit nicht ($INSUNITS): Sie wurde in Metern gelesen; korrigieren Sie Einheit, falls das nicht stimmt.</translation>
+    </message>
+    <message>
+        <source>The drawing&apos;s unit ($INSUNITS %1) is unitless or unknown: it was read in metres; correct Units if it is not.</source>
+        <translation>Die Einheit der Zeichnung ($INSUNITS %1) ist einheitenlos oder unbekannt: Sie wurde in Metern gelesen; korrigieren Sie Einheit, falls das nicht stimmt.</translation>
+    </message>
+    <message>
+        <source>The drawing is empty.</source>
+        <translation>Die Zeichnung ist leer.</translation>
+    </message>
+    <message>
+        <source>The block leg must be a positive length in metres: change it in the Tiling Robot panel.</source>
+        <translation>Die Blockkathete muss eine positive Länge in Metern sein: Ändern Sie sie im Bereich Kachelroboter.</translation>
+    </message>
+    <message>
+        <source>The block masses must be positive (kg): change them in the Tiling Robot panel.</source>
+        <translation>Die Blockmassen müssen positiv sein (kg): Ändern Sie sie im Bereich Kachelroboter.</translation>
+    </message>
+    <message>
+        <source>Waypoints are exported as .csv or .json files, not as “%1”.</source>
+        <translation>Wegpunkte werden als .csv- oder .json-Dateien exportiert, nicht als „%1“.</translation>
+    </message>
+    <message>
+        <source>The exact ordering handles at most %1 waypoints, and this floor has %2: choose another ordering in the Tiling Robot panel.</source>
+        <translation>Die exakte Reihenfolge schafft höchstens %1 Wegpunkte, diese Fläche hat %2: Wählen Sie im Bereich Kachelroboter eine andere Reihenfolge.</translation>
+    </message>
+    <message>
+        <source>There is no ordering “%1” (available: %2).</source>
+        <translation>Es gibt keine Reihenfolge „%1“ (verfügbar: %2).</translation>
+    </message>
+    <message>
+        <source>%1 has too few different vertices (%2); an outline needs at least three.</source>
+        <translation>%1 hat zu wenige verschiedene Eckpunkte (%2); ein Umriss braucht mindestens drei.</translation>
+    </message>
+    <message>
+        <source>Pieces of floor not connected to the largest, left out: %1 (%2 m²).</source>
+        <translation>Flächenstücke, die nicht mit dem größten verbunden sind, weggelassen: %1 (%2 m²).</translation>
+    </message>
+    <message>
+        <source>Closed outlines outside the outer wall, left out: %1.</source>
+        <translation>Geschlossene Umrisse außerhalb der Außenwand, weggelassen: %1.</translation>
+    </message>
+    <message>
+        <source>Room outlines outside the outer wall, left out: %1.</source>
+        <translation>Raumumrisse außerhalb der Außenwand, weggelassen: %1.</translation>
+    </message>
+    <message>
+        <source>Obstacles without area, removed: %1.</source>
+        <translation>Hindernisse ohne Fläche, entfernt: %1.</translation>
+    </message>
+    <message>
+        <source>Obstacles that crossed themselves, split where they cross: %1.</source>
+        <translation>Hindernisse, die sich selbst kreuzten, an den Kreuzungen geteilt: %1.</translation>
+    </message>
+    <message>
+        <source>Entities left out on layer “%1” (its role is Ignored): %2.</source>
+        <translation>Weggelassene Elemente auf Layer „%1“ (seine Rolle ist Ignoriert): %2.</translation>
+    </message>
+    <message>
+        <source>Entities without usable 2D geometry, skipped: %1.</source>
+        <translation>Elemente ohne verwendbare 2D-Geometrie, übersprungen: %1.</translation>
+    </message>
+    <message>
+        <source>Open lines on layer “%1” that close into no outline, left out: %2 (%3 m); a larger “Close gaps up to” may close them.</source>
+        <translation>Offene Linien auf Layer „%1“, die sich zu keinem Umriss schließen, weggelassen: %2 (%3 m); ein größeres „Lücken schließen bis“ schließt sie vielleicht.</translation>
+    </message>
 </context>
 <context>
     <name>fc::ui</name>
@@ -2425,6 +3201,10 @@ Abdeckungspfadplanung für Reinigungs- und Desinfektionsroboter.</translation>
     <message>
         <source>Load a model trained for this plan from a .fcdqn file.</source>
         <translation>Ein für diesen Plan trainiertes Modell aus einer .fcdqn-Datei laden.</translation>
+    </message>
+    <message>
+        <source>there is no valid plan to load the model for</source>
+        <translation>es gibt keinen gültigen Plan, für den das Modell geladen werden könnte</translation>
     </message>
 </context>
 <context>

@@ -135,6 +135,782 @@
         <source>The free floor (%1 m²) is smaller than the robot (%2 m², L = %3 m).</source>
         <translation>La surface libre (%1 m²) est plus petite que le robot (%2 m², L = %3 m).</translation>
     </message>
+    <message>
+        <source>%1 (feature %2)</source>
+        <translation>%1 (entité %2)</translation>
+    </message>
+    <message>
+        <source>%1 (hole %2 in the outer wall)</source>
+        <translation>%1 (trou %2 du mur extérieur)</translation>
+    </message>
+    <message>
+        <source>%1 (outer wall)</source>
+        <translation>%1 (mur extérieur)</translation>
+    </message>
+    <message>
+        <source>%1 (obstacle)</source>
+        <translation>%1 (obstacle)</translation>
+    </message>
+    <message>
+        <source>%1 (room)</source>
+        <translation>%1 (pièce)</translation>
+    </message>
+    <message>
+        <source>A room</source>
+        <translation>Une pièce</translation>
+    </message>
+    <message>
+        <source>An unnamed room</source>
+        <translation>Une pièce sans nom</translation>
+    </message>
+    <message>
+        <source>Room %1</source>
+        <translation>La pièce %1</translation>
+    </message>
+    <message>
+        <source>Feature %1</source>
+        <translation>L’entité %1</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1 : %2</translation>
+    </message>
+    <message>
+        <source>The free floor (%1 m²) is smaller than one coverage square W² (%2 m²): make the coverage width W smaller in the Planning panel.</source>
+        <translation>La surface libre (%1 m²) est plus petite qu’un carré de couverture W² (%2 m²) : réduisez la largeur de couverture W dans le panneau Planification.</translation>
+    </message>
+    <message>
+        <source>%1: vertex %2 has a coordinate that is not a finite number.</source>
+        <translation>%1 : le sommet %2 a une coordonnée qui n’est pas un nombre fini.</translation>
+    </message>
+    <message>
+        <source>%1 has two vertices on top of each other at %3 (vertex %2): delete one of them (Edit Vertices, right-click).</source>
+        <translation>%1 a deux sommets superposés en %3 (sommet %2) : supprimez-en un (Modifier les sommets, clic droit).</translation>
+    </message>
+    <message>
+        <source>%1 has no area: all its vertices lie on one line.</source>
+        <translation>%1 n’a pas de surface : tous ses sommets sont alignés.</translation>
+    </message>
+    <message>
+        <source>The robot diameter L must be a positive number, not %1: change it in the Planning panel.</source>
+        <translation>Le diamètre du robot L doit être un nombre positif, pas %1 : modifiez-le dans le panneau Planification.</translation>
+    </message>
+    <message>
+        <source>The coverage width W must be a positive number, not %1: change it in the Planning panel.</source>
+        <translation>La largeur de couverture W doit être un nombre positif, pas %1 : modifiez-la dans le panneau Planification.</translation>
+    </message>
+    <message>
+        <source>The cleaning diameter D must be a positive number, not %1: change it in the Planning panel.</source>
+        <translation>Le diamètre de nettoyage D doit être un nombre positif, pas %1 : modifiez-le dans le panneau Planification.</translation>
+    </message>
+    <message>
+        <source>The speed must be a positive number, not %1: change it in the Planning panel.</source>
+        <translation>La vitesse doit être un nombre positif, pas %1 : modifiez-la dans le panneau Planification.</translation>
+    </message>
+    <message>
+        <source>The robot&apos;s turn time must be zero or positive, not %1.</source>
+        <translation>Le temps de rotation du robot doit être nul ou positif, pas %1.</translation>
+    </message>
+    <message>
+        <source>A coverage width W of %1 m is not a plausible robot size: change it in the Planning panel.</source>
+        <translation>Une largeur de couverture W de %1 m n’est pas une taille de robot plausible : modifiez-la dans le panneau Planification.</translation>
+    </message>
+    <message>
+        <source>one of the rooms has fewer than three corners</source>
+        <translation>l’une des pièces a moins de trois coins</translation>
+    </message>
+    <message>
+        <source>they do not share a border; merge rooms that meet along a wall or a doorway</source>
+        <translation>elles n’ont pas de bord commun ; fusionnez des pièces qui se touchent le long d’un mur ou d’un passage</translation>
+    </message>
+    <message>
+        <source>the merged room would fall apart into several pieces</source>
+        <translation>la pièce fusionnée serait en plusieurs morceaux</translation>
+    </message>
+    <message>
+        <source>the merged room would enclose a hole; merge the room inside it as well</source>
+        <translation>la pièce fusionnée entourerait un trou ; fusionnez aussi la pièce qui s’y trouve</translation>
+    </message>
+    <message>
+        <source>the room has fewer than three corners</source>
+        <translation>la pièce a moins de trois coins</translation>
+    </message>
+    <message>
+        <source>drag the cut as a line across the room (Split Room)</source>
+        <translation>tracez la coupe comme une ligne à travers la pièce (Diviser la pièce)</translation>
+    </message>
+    <message>
+        <source>the cut does not cross the room; drag it from one wall of the room to another</source>
+        <translation>la coupe ne traverse pas la pièce ; tracez-la d’un mur de la pièce à un autre</translation>
+    </message>
+    <message>
+        <source>the cut crosses the room more than once; drag it where one straight line divides the room in two</source>
+        <translation>la coupe traverse la pièce plus d’une fois ; tracez-la là où une ligne droite divise la pièce en deux</translation>
+    </message>
+    <message>
+        <source>the cut would cut off only a sliver of the room; drag it across the middle of the room</source>
+        <translation>la coupe ne détacherait qu’une mince bande de la pièce ; tracez-la à travers le milieu de la pièce</translation>
+    </message>
+    <message>
+        <source>The sweep angle must be a finite number of degrees: set it in the Planning panel.</source>
+        <translation>L’angle de balayage doit être un nombre fini de degrés : réglez-le dans le panneau Planification.</translation>
+    </message>
+    <message>
+        <source>There is no room “%1” in this plan (its rooms: %2): check the rooms to plan in the Planning panel.</source>
+        <translation>Ce plan n’a pas de pièce « %1 » (ses pièces : %2) : vérifiez les pièces à planifier dans le panneau Planification.</translation>
+    </message>
+    <message>
+        <source>There is no solver “%1” (available: %2): choose one in the Planning panel.</source>
+        <translation>Il n’existe pas de solveur « %1 » (disponibles : %2) : choisissez-en un dans le panneau Planification.</translation>
+    </message>
+    <message>
+        <source>The robot finds no way into room “%1” from the room before it: widen the passage, or sweep the floor at one angle (Sweep in the Planning panel).</source>
+        <translation>Le robot ne trouve aucun chemin vers la pièce « %1 » depuis la pièce précédente : élargissez le passage, ou balayez le sol selon un seul angle (Balayage dans le panneau Planification).</translation>
+    </message>
+    <message>
+        <source>Cancelled.</source>
+        <translation>Annulé.</translation>
+    </message>
+    <message>
+        <source>The %1 solver was cancelled.</source>
+        <translation>Le solveur %1 a été annulé.</translation>
+    </message>
+    <message>
+        <source>The %1 solver cannot reach %2 cells from the start: move the start (Place Start) or pick other rooms.</source>
+        <translation>Le solveur %1 ne peut pas atteindre %2 cellules depuis le départ : déplacez le départ (Placer le départ) ou choisissez d’autres pièces.</translation>
+    </message>
+    <message>
+        <source>The %1 solver cannot reach the end from the start: move one of them.</source>
+        <translation>Le solveur %1 ne peut pas atteindre l’arrivée depuis le départ : déplacez l’un des deux.</translation>
+    </message>
+    <message>
+        <source>The %1 solver stopped on an internal error (%2): please report it, and choose another solver in the Planning panel meanwhile.</source>
+        <translation>Le solveur %1 s’est arrêté sur une erreur interne (%2) : signalez-la, et choisissez en attendant un autre solveur dans le panneau Planification.</translation>
+    </message>
+    <message>
+        <source>The dqn model is inconsistent (its network does not fit its kind of state): train a new model in the Training panel.</source>
+        <translation>Le modèle dqn est incohérent (son réseau ne correspond pas à son type d’état) : entraînez un nouveau modèle dans le panneau Entraînement.</translation>
+    </message>
+    <message>
+        <source>The dqn model was trained on a plan of another size: train a model for this plan in the Training panel.</source>
+        <translation>Le modèle dqn a été entraîné sur un plan d’une autre taille : entraînez un modèle pour ce plan dans le panneau Entraînement.</translation>
+    </message>
+    <message>
+        <source>The dqn solver cannot plan this query (%1): choose another solver in the Planning panel.</source>
+        <translation>Le solveur dqn ne peut pas planifier cette requête (%1) : choisissez un autre solveur dans le panneau Planification.</translation>
+    </message>
+    <message>
+        <source>The dqn solver finds no way to the rooms still to clean: choose another solver in the Planning panel.</source>
+        <translation>Le solveur dqn ne trouve aucun chemin vers les pièces restant à nettoyer : choisissez un autre solveur dans le panneau Planification.</translation>
+    </message>
+    <message>
+        <source>The dqn model ran out of steps before it covered the rooms: train it longer in the Training panel, or choose another solver.</source>
+        <translation>Le modèle dqn a épuisé ses pas avant de couvrir les pièces : entraînez-le plus longtemps dans le panneau Entraînement, ou choisissez un autre solveur.</translation>
+    </message>
+    <message>
+        <source>The path of the dqn solver does not cover the rooms (an internal error): choose another solver in the Planning panel.</source>
+        <translation>Le trajet du solveur dqn ne couvre pas les pièces (une erreur interne) : choisissez un autre solveur dans le panneau Planification.</translation>
+    </message>
+    <message>
+        <source>The plan has no floor the robot can reach: there is nothing to train on.</source>
+        <translation>Le plan n’a aucune surface que le robot puisse atteindre : il n’y a rien sur quoi s’entraîner.</translation>
+    </message>
+    <message>
+        <source>The model file is incomplete: load another model or train a new one in the Training panel.</source>
+        <translation>Le fichier du modèle est incomplet : chargez un autre modèle ou entraînez-en un nouveau dans le panneau Entraînement.</translation>
+    </message>
+    <message>
+        <source>The model file is damaged: load another model or train a new one in the Training panel.</source>
+        <translation>Le fichier du modèle est endommagé : chargez un autre modèle ou entraînez-en un nouveau dans le panneau Entraînement.</translation>
+    </message>
+    <message>
+        <source>This is not a FloorCover dqn model file (.fcdqn).</source>
+        <translation>Ce n’est pas un fichier de modèle dqn de FloorCover (.fcdqn).</translation>
+    </message>
+    <message>
+        <source>The model file has format version %1, and this FloorCover reads versions up to %2: update FloorCover or train a new model.</source>
+        <translation>Le fichier du modèle est au format version %1, et ce FloorCover lit les versions jusqu’à %2 : mettez FloorCover à jour ou entraînez un nouveau modèle.</translation>
+    </message>
+    <message>
+        <source>The model file cannot be opened: check that it exists and can be read.</source>
+        <translation>Le fichier du modèle ne peut pas être ouvert : vérifiez qu’il existe et qu’il est lisible.</translation>
+    </message>
+    <message>
+        <source>This model was trained for another floor plan or robot (%1 corners in %2 cells, sweep angle %3°, coverage width %4 m; this plan has %5 corners in %6 cells): train a model for this plan in the Training panel.</source>
+        <translation>Ce modèle a été entraîné pour un autre plan ou un autre robot (%1 coins dans %2 cellules, angle de balayage %3°, largeur de couverture %4 m ; ce plan a %5 coins dans %6 cellules) : entraînez un modèle pour ce plan dans le panneau Entraînement.</translation>
+    </message>
+    <message>
+        <source>There is no such file.</source>
+        <translation>Ce fichier n’existe pas.</translation>
+    </message>
+    <message>
+        <source>This is a folder, not a file.</source>
+        <translation>C’est un dossier, pas un fichier.</translation>
+    </message>
+    <message>
+        <source>The file cannot be read (%1).</source>
+        <translation>Le fichier ne peut pas être lu (%1).</translation>
+    </message>
+    <message>
+        <source>The file cannot be written (%1): choose another folder, or check that this one can be written to.</source>
+        <translation>Le fichier ne peut pas être écrit (%1) : choisissez un autre dossier, ou vérifiez que celui-ci est accessible en écriture.</translation>
+    </message>
+    <message>
+        <source>The file name has no extension: FloorCover opens .fcproj projects and .geojson or .json plans; other formats come in with File &gt; Import…</source>
+        <translation>Le nom du fichier n’a pas d’extension : FloorCover ouvre les projets .fcproj et les plans .geojson ou .json ; les autres formats passent par Fichier &gt; Importer…</translation>
+    </message>
+    <message>
+        <source>FloorCover opens .fcproj projects and .geojson or .json plans, not “%1” files; other formats come in with File &gt; Import…</source>
+        <translation>FloorCover ouvre les projets .fcproj et les plans .geojson ou .json, pas les fichiers « %1 » ; les autres formats passent par Fichier &gt; Importer…</translation>
+    </message>
+    <message>
+        <source>The file is larger than %1, more than FloorCover imports.</source>
+        <translation>Le fichier dépasse %1, plus que ce que FloorCover importe.</translation>
+    </message>
+    <message>
+        <source>The file is empty.</source>
+        <translation>Le fichier est vide.</translation>
+    </message>
+    <message>
+        <source>The file ends too early (line %1, column %2): it may have been cut off while it was written.</source>
+        <translation>Le fichier se termine trop tôt (ligne %1, colonne %2) : il a peut-être été tronqué pendant son écriture.</translation>
+    </message>
+    <message>
+        <source>The file ends too early: it may have been cut off while it was written.</source>
+        <translation>Le fichier se termine trop tôt : il a peut-être été tronqué pendant son écriture.</translation>
+    </message>
+    <message>
+        <source>The file is not valid JSON at line %1, column %2 (%3).</source>
+        <translation>Le fichier n’est pas du JSON valide à la ligne %1, colonne %2 (%3).</translation>
+    </message>
+    <message>
+        <source>The file is not valid JSON (%1).</source>
+        <translation>Le fichier n’est pas du JSON valide (%1).</translation>
+    </message>
+    <message>
+        <source>The number %1 at line %2, column %3 is too large for a coordinate.</source>
+        <translation>Le nombre %1 à la ligne %2, colonne %3 est trop grand pour une coordonnée.</translation>
+    </message>
+    <message>
+        <source>The number %1 is too large for a coordinate.</source>
+        <translation>Le nombre %1 est trop grand pour une coordonnée.</translation>
+    </message>
+    <message>
+        <source>A number in the file is out of range (%1).</source>
+        <translation>Un nombre du fichier est hors limites (%1).</translation>
+    </message>
+    <message>
+        <source>%1: the coordinates must be a list of [x, y] positions, not %2.</source>
+        <translation>%1 : les coordonnées doivent être une liste de positions [x, y], pas %2.</translation>
+    </message>
+    <message>
+        <source>%1: vertex %2 is not an [x, y] position but %3.</source>
+        <translation>%1 : le sommet %2 n’est pas une position [x, y] mais %3.</translation>
+    </message>
+    <message>
+        <source>%1: vertex %2 has a coordinate that is not a number (%3).</source>
+        <translation>%1 : le sommet %2 a une coordonnée qui n’est pas un nombre (%3).</translation>
+    </message>
+    <message>
+        <source>%1 has no geometry.</source>
+        <translation>%1 n’a pas de géométrie.</translation>
+    </message>
+    <message>
+        <source>%1: the geometry has no type.</source>
+        <translation>%1 : la géométrie n’a pas de type.</translation>
+    </message>
+    <message>
+        <source>%1 is a %2; FloorCover reads plans drawn as polygons.</source>
+        <translation>%1 est un %2 ; FloorCover lit les plans dessinés en polygones.</translation>
+    </message>
+    <message>
+        <source>%1: the geometry holds no polygon outline.</source>
+        <translation>%1 : la géométrie ne contient aucun contour de polygone.</translation>
+    </message>
+    <message>
+        <source>%1: the room name (properties.name) must be text, not %2.</source>
+        <translation>%1 : le nom de la pièce (properties.name) doit être du texte, pas %2.</translation>
+    </message>
+    <message>
+        <source>%1 has no name: rooms need one in properties.name.</source>
+        <translation>%1 n’a pas de nom : les pièces en ont besoin d’un dans properties.name.</translation>
+    </message>
+    <message>
+        <source>Features %1 and %2 are both an outer wall (role boundary); a plan has exactly one.</source>
+        <translation>Les entités %1 et %2 sont toutes deux un mur extérieur (rôle boundary) ; un plan en a exactement un.</translation>
+    </message>
+    <message>
+        <source>%1 has %2 separate parts; the outer wall must be one polygon.</source>
+        <translation>%1 a %2 parties séparées ; le mur extérieur doit être un seul polygone.</translation>
+    </message>
+    <message>
+        <source>%1 has a hole; floor inside an obstacle is not supported.</source>
+        <translation>%1 a un trou ; une surface libre à l’intérieur d’un obstacle n’est pas prise en charge.</translation>
+    </message>
+    <message>
+        <source>Two rooms are named “%1” (features %2 and %3): rename one.</source>
+        <translation>Deux pièces s’appellent « %1 » (entités %2 et %3) : renommez-en une.</translation>
+    </message>
+    <message>
+        <source>%1 has %2 separate parts: split it into rooms with names of their own.</source>
+        <translation>%1 a %2 parties séparées : divisez-la en pièces ayant chacune son nom.</translation>
+    </message>
+    <message>
+        <source>%1 has a hole: draw the hole as an obstacle instead.</source>
+        <translation>%1 a un trou : dessinez plutôt le trou comme un obstacle.</translation>
+    </message>
+    <message>
+        <source>The file is not a GeoJSON FeatureCollection, the form in which FloorCover reads plans.</source>
+        <translation>Le fichier n’est pas une FeatureCollection GeoJSON, la forme sous laquelle FloorCover lit les plans.</translation>
+    </message>
+    <message>
+        <source>The GeoJSON file has no list of features.</source>
+        <translation>Le fichier GeoJSON n’a pas de liste d’entités (features).</translation>
+    </message>
+    <message>
+        <source>%1 is not a GeoJSON Feature.</source>
+        <translation>%1 n’est pas une Feature GeoJSON.</translation>
+    </message>
+    <message>
+        <source>%1: its properties must be an object.</source>
+        <translation>%1 : ses propriétés (properties) doivent être un objet.</translation>
+    </message>
+    <message>
+        <source>%1 has no role: set properties.role to boundary, obstacle or room.</source>
+        <translation>%1 n’a pas de rôle : donnez à properties.role la valeur boundary, obstacle ou room.</translation>
+    </message>
+    <message>
+        <source>%1: the role (properties.role) must be text, not %2.</source>
+        <translation>%1 : le rôle (properties.role) doit être du texte, pas %2.</translation>
+    </message>
+    <message>
+        <source>%1 has the unknown role “%2”: use boundary, obstacle or room.</source>
+        <translation>%1 a le rôle inconnu « %2 » : utilisez boundary, obstacle ou room.</translation>
+    </message>
+    <message>
+        <source>The plan has no outer wall: one feature needs properties.role = &quot;boundary&quot;.</source>
+        <translation>Le plan n’a pas de mur extérieur : une entité doit avoir properties.role = &quot;boundary&quot;.</translation>
+    </message>
+    <message>
+        <source>In the project file, %1 must be a finite number, not %2.</source>
+        <translation>Dans le fichier de projet, %1 doit être un nombre fini, pas %2.</translation>
+    </message>
+    <message>
+        <source>In the project file, %1 must be an object.</source>
+        <translation>Dans le fichier de projet, %1 doit être un objet.</translation>
+    </message>
+    <message>
+        <source>In the project file, %1 must be [x, y] or null, not %2.</source>
+        <translation>Dans le fichier de projet, %1 doit être [x, y] ou null, pas %2.</translation>
+    </message>
+    <message>
+        <source>In the project file, %1 has a coordinate that is not a finite number.</source>
+        <translation>Dans le fichier de projet, %1 a une coordonnée qui n’est pas un nombre fini.</translation>
+    </message>
+    <message>
+        <source>The project&apos;s plan has no outer wall (boundary).</source>
+        <translation>Le plan du projet n’a pas de mur extérieur (boundary).</translation>
+    </message>
+    <message>
+        <source>In the project file, %1 must be a list.</source>
+        <translation>Dans le fichier de projet, %1 doit être une liste.</translation>
+    </message>
+    <message>
+        <source>%1 has no outline.</source>
+        <translation>%1 n’a pas de contour.</translation>
+    </message>
+    <message>
+        <source>In the project file, plan.epsg must be an EPSG code (a positive whole number), not %1.</source>
+        <translation>Dans le fichier de projet, plan.epsg doit être un code EPSG (un entier positif), pas %1.</translation>
+    </message>
+    <message>
+        <source>The file is not a FloorCover project.</source>
+        <translation>Le fichier n’est pas un projet FloorCover.</translation>
+    </message>
+    <message>
+        <source>The project file does not say its format version.</source>
+        <translation>Le fichier de projet n’indique pas sa version de format.</translation>
+    </message>
+    <message>
+        <source>The project was saved by a newer FloorCover (format version %1; this one reads up to %2): update FloorCover.</source>
+        <translation>Le projet a été enregistré par un FloorCover plus récent (version de format %1 ; celui-ci lit jusqu’à %2) : mettez FloorCover à jour.</translation>
+    </message>
+    <message>
+        <source>The project file has an invalid format version (%1).</source>
+        <translation>Le fichier de projet a une version de format invalide (%1).</translation>
+    </message>
+    <message>
+        <source>The project file holds no plan.</source>
+        <translation>Le fichier de projet ne contient aucun plan.</translation>
+    </message>
+    <message>
+        <source>In the project file, sweep.%1 must be true or false.</source>
+        <translation>Dans le fichier de projet, sweep.%1 doit valoir true ou false.</translation>
+    </message>
+    <message>
+        <source>In the project file, sweep.room_angles must give each room&apos;s sweep angle in degrees.</source>
+        <translation>Dans le fichier de projet, sweep.room_angles doit donner l’angle de balayage de chaque pièce en degrés.</translation>
+    </message>
+    <message>
+        <source>In the project file, the sweep angle of room “%1” must be a finite number of degrees, not %2.</source>
+        <translation>Dans le fichier de projet, l’angle de balayage de la pièce « %1 » doit être un nombre fini de degrés, pas %2.</translation>
+    </message>
+    <message>
+        <source>In the project file, solver must be the name of a solver, not %1.</source>
+        <translation>Dans le fichier de projet, solver doit être le nom d’un solveur, pas %1.</translation>
+    </message>
+    <message>
+        <source>In the project file, selectedRooms must be a list of room names.</source>
+        <translation>Dans le fichier de projet, selectedRooms doit être une liste de noms de pièces.</translation>
+    </message>
+    <message>
+        <source>FloorCover cannot export to “%1” (it exports %2).</source>
+        <translation>FloorCover ne peut pas exporter en « %1 » (il exporte %2).</translation>
+    </message>
+    <message>
+        <source>FloorCover cannot export “%1”: it exports the path, the plan or the zones.</source>
+        <translation>FloorCover ne peut pas exporter « %1 » : il exporte le trajet, le plan ou les zones.</translation>
+    </message>
+    <message>
+        <source>The %1 format cannot hold the path: choose another format.</source>
+        <translation>Le format %1 ne peut pas contenir le trajet : choisissez un autre format.</translation>
+    </message>
+    <message>
+        <source>The %1 format cannot hold the plan: choose another format.</source>
+        <translation>Le format %1 ne peut pas contenir le plan : choisissez un autre format.</translation>
+    </message>
+    <message>
+        <source>The %1 format cannot hold the zones: choose another format.</source>
+        <translation>Le format %1 ne peut pas contenir les zones : choisissez un autre format.</translation>
+    </message>
+    <message>
+        <source>FloorCover does not know this export format: choose one of the formats offered.</source>
+        <translation>FloorCover ne connaît pas ce format d’export : choisissez l’un des formats proposés.</translation>
+    </message>
+    <message>
+        <source>FloorCover cannot import “.%1” files (it imports %2).</source>
+        <translation>FloorCover ne peut pas importer les fichiers « .%1 » (il importe %2).</translation>
+    </message>
+    <message>
+        <source>FloorCover cannot import “.%1” files.</source>
+        <translation>FloorCover ne peut pas importer les fichiers « .%1 ».</translation>
+    </message>
+    <message>
+        <source>The unit must be a positive number of metres: correct Units in the import dialog.</source>
+        <translation>L’unité doit être un nombre positif de mètres : corrigez Unité dans la boîte de dialogue d’import.</translation>
+    </message>
+    <message>
+        <source>“Close gaps up to” must be between 0 and 1000 m.</source>
+        <translation>« Fermer les écarts jusqu’à » doit être compris entre 0 et 1000 m.</translation>
+    </message>
+    <message>
+        <source>The plan needs repair (Plan &gt; Repair Plan, after the import): %1</source>
+        <translation>Le plan doit être réparé (Planifier &gt; Réparer le plan, après l’import) : %1</translation>
+    </message>
+    <message>
+        <source>The map&apos;s start pose (%1, %2) is not on the free floor; it was not used.</source>
+        <translation>La pose de départ de la carte (%1, %2) n’est pas sur la surface libre ; elle n’a pas été utilisée.</translation>
+    </message>
+    <message>
+        <source>The map image&apos;s pixels are %1; FloorCover reads 1- to 16-bit grey or colour images.</source>
+        <translation>Les pixels de l’image de la carte sont %1 ; FloorCover lit les images en gris ou en couleur de 1 à 16 bits.</translation>
+    </message>
+    <message>
+        <source>The map image %1 is not a readable PNG, PGM, BMP or TIFF image.</source>
+        <translation>L’image de la carte %1 n’est pas une image PNG, PGM, BMP ou TIFF lisible.</translation>
+    </message>
+    <message>
+        <source>The map image is empty.</source>
+        <translation>L’image de la carte est vide.</translation>
+    </message>
+    <message>
+        <source>The map image has more than %1 pixels, more than FloorCover reads.</source>
+        <translation>L’image de la carte a plus de %1 pixels, plus que ce que FloorCover lit.</translation>
+    </message>
+    <message>
+        <source>The map image cannot be read (%1).</source>
+        <translation>L’image de la carte ne peut pas être lue (%1).</translation>
+    </message>
+    <message>
+        <source>The map image uses a colour that its palette lacks.</source>
+        <translation>L’image de la carte utilise une couleur absente de sa palette.</translation>
+    </message>
+    <message>
+        <source>The map image %1 named in the YAML file is missing: keep it next to the YAML file.</source>
+        <translation>L’image de la carte %1 nommée dans le fichier YAML est introuvable : placez-la à côté du fichier YAML.</translation>
+    </message>
+    <message>
+        <source>Every cell of the map is unknown: the map shows nothing.</source>
+        <translation>Toutes les cellules de la carte sont inconnues : la carte ne montre rien.</translation>
+    </message>
+    <message>
+        <source>The map has no free floor.</source>
+        <translation>La carte n’a pas de surface libre.</translation>
+    </message>
+    <message>
+        <source>Cleaning the map left no free floor (its free cells are specks): lower “Drop islands below” under Clean the map.</source>
+        <translation>Le nettoyage de la carte n’a laissé aucune surface libre (ses cellules libres sont des taches) : diminuez « Écarter les îlots sous » dans Nettoyer la carte.</translation>
+    </message>
+    <message>
+        <source>The free floor is thinner than a pixel everywhere.</source>
+        <translation>La surface libre est partout plus fine qu’un pixel.</translation>
+    </message>
+    <message>
+        <source>In the map&apos;s YAML file, %1 “%2” is not a number.</source>
+        <translation>Dans le fichier YAML de la carte, %1 « %2 » n’est pas un nombre.</translation>
+    </message>
+    <message>
+        <source>In the map&apos;s YAML file, %1 must be a list [%2].</source>
+        <translation>Dans le fichier YAML de la carte, %1 doit être une liste [%2].</translation>
+    </message>
+    <message>
+        <source>In the map&apos;s YAML file, %1 needs %2 numbers, not %3.</source>
+        <translation>Dans le fichier YAML de la carte, %1 demande %2 nombres, pas %3.</translation>
+    </message>
+    <message>
+        <source>In the map&apos;s YAML file, %1 “%2” is not 0/1 or true/false.</source>
+        <translation>Dans le fichier YAML de la carte, %1 « %2 » n’est ni 0/1 ni true/false.</translation>
+    </message>
+    <message>
+        <source>The map&apos;s YAML file is larger than 1 MiB; a ROS map&apos;s is far smaller.</source>
+        <translation>Le fichier YAML de la carte dépasse 1 Mio ; celui d’une carte ROS est bien plus petit.</translation>
+    </message>
+    <message>
+        <source>Line %1 of the map&apos;s YAML file is not of the form “key: value”.</source>
+        <translation>La ligne %1 du fichier YAML de la carte n’est pas de la forme « key: value ».</translation>
+    </message>
+    <message>
+        <source>The YAML file names no image (image:): it is not a ROS map_server map.</source>
+        <translation>Le fichier YAML ne nomme aucune image (image:) : ce n’est pas une carte ROS map_server.</translation>
+    </message>
+    <message>
+        <source>The map&apos;s resolution is missing or not a positive size in metres.</source>
+        <translation>La résolution de la carte manque ou n’est pas une taille positive en mètres.</translation>
+    </message>
+    <message>
+        <source>A resolution of %1 m per cell is not an occupancy map&apos;s (1 mm to 1 m).</source>
+        <translation>Une résolution de %1 m par cellule n’est pas celle d’une carte d’occupation (1 mm à 1 m).</translation>
+    </message>
+    <message>
+        <source>The map has no origin [x, y, yaw].</source>
+        <translation>La carte n’a pas d’origine [x, y, yaw].</translation>
+    </message>
+    <message>
+        <source>The map&apos;s origin [%1] lies far outside any map frame.</source>
+        <translation>L’origine de la carte [%1] est très loin de tout repère de carte.</translation>
+    </message>
+    <message>
+        <source>The map&apos;s thresholds must satisfy 0 ≤ free_thresh &lt; occupied_thresh ≤ 1.</source>
+        <translation>Les seuils de la carte doivent vérifier 0 ≤ free_thresh &lt; occupied_thresh ≤ 1.</translation>
+    </message>
+    <message>
+        <source>The map&apos;s mode “%1” is unknown: it must be trinary, scale or raw.</source>
+        <translation>Le mode « %1 » de la carte est inconnu : il doit être trinary, scale ou raw.</translation>
+    </message>
+    <message>
+        <source>The map image is not a PGM or PBM image.</source>
+        <translation>L’image de la carte n’est pas une image PGM ou PBM.</translation>
+    </message>
+    <message>
+        <source>In the PGM image&apos;s header, %1 “%2” is not a number.</source>
+        <translation>Dans l’en-tête de l’image PGM, %1 « %2 » n’est pas un nombre.</translation>
+    </message>
+    <message>
+        <source>The PGM image&apos;s header has a bad size or maximum value.</source>
+        <translation>L’en-tête de l’image PGM a une taille ou une valeur maximale invalide.</translation>
+    </message>
+    <message>
+        <source>The %1 image&apos;s data is cut short or damaged.</source>
+        <translation>Les données de l’image %1 sont tronquées ou endommagées.</translation>
+    </message>
+    <message>
+        <source>This FloorCover lacks GDAL&apos;s in-memory drivers: reinstall FloorCover.</source>
+        <translation>Il manque à ce FloorCover les pilotes en mémoire de GDAL : réinstallez FloorCover.</translation>
+    </message>
+    <message>
+        <source>The map image does not fit in memory.</source>
+        <translation>L’image de la carte ne tient pas en mémoire.</translation>
+    </message>
+    <message>
+        <source>The free floor falls into more than %1 pieces: clean the map more (Clean the map).</source>
+        <translation>La surface libre se divise en plus de %1 morceaux : nettoyez davantage la carte (Nettoyer la carte).</translation>
+    </message>
+    <message>
+        <source>Tracing the free floor failed (%1).</source>
+        <translation>Le tracé de la surface libre a échoué (%1).</translation>
+    </message>
+    <message>
+        <source>Smoothing the outline of the free floor failed.</source>
+        <translation>Le lissage du contour de la surface libre a échoué.</translation>
+    </message>
+    <message>
+        <source>No free floor is left to import.</source>
+        <translation>Il ne reste aucune surface libre à importer.</translation>
+    </message>
+    <message>
+        <source>The obstacles could not be merged (their outlines are invalid).</source>
+        <translation>Les obstacles n’ont pas pu être fusionnés (leurs contours sont invalides).</translation>
+    </message>
+    <message>
+        <source>The obstacles could not be cut out of the outer wall.</source>
+        <translation>Les obstacles n’ont pas pu être découpés dans le mur extérieur.</translation>
+    </message>
+    <message>
+        <source>No closed outline for the outer wall; not closed: %1. A larger “Close gaps up to” may close them.</source>
+        <translation>Aucun contour fermé pour le mur extérieur ; non fermés : %1. Une valeur plus grande de « Fermer les écarts jusqu’à » peut les fermer.</translation>
+    </message>
+    <message>
+        <source>No closed outline for the outer wall: give the layer of the walls the role Boundary, or close its gaps with “Close gaps up to”.</source>
+        <translation>Aucun contour fermé pour le mur extérieur : donnez au calque des murs le rôle Contour, ou fermez ses écarts avec « Fermer les écarts jusqu’à ».</translation>
+    </message>
+    <message>
+        <source>The plan has no outer wall to repair: draw one first.</source>
+        <translation>Le plan n’a pas de mur extérieur à réparer : dessinez-en d’abord un.</translation>
+    </message>
+    <message>
+        <source>The outer wall encloses no area.</source>
+        <translation>Le mur extérieur n’entoure aucune surface.</translation>
+    </message>
+    <message>
+        <source>The outer wall crossed or touched itself: it was split there.</source>
+        <translation>Le mur extérieur se croisait ou se touchait : il a été divisé à cet endroit.</translation>
+    </message>
+    <message>
+        <source>Obstacles were merged, clipped to the outer wall or joined to it: %1 before, %2 after.</source>
+        <translation>Des obstacles ont été fusionnés, coupés au mur extérieur ou joints à lui : %1 avant, %2 après.</translation>
+    </message>
+    <message>
+        <source>%1 lay outside the floor or under other rooms and was removed.</source>
+        <translation>%1 était hors du sol ou sous d’autres pièces et a été supprimée.</translation>
+    </message>
+    <message>
+        <source>%1 was reshaped to fit the floor (%2 m² before, %3 m² after).</source>
+        <translation>%1 a été redessinée pour tenir dans le sol (%2 m² avant, %3 m² après).</translation>
+    </message>
+    <message>
+        <source>%1 was renamed “%2”.</source>
+        <translation>%1 a été renommée « %2 ».</translation>
+    </message>
+    <message>
+        <source>The WKT text begins with SRID= but has no “;” after the code.</source>
+        <translation>Le texte WKT commence par SRID= mais n’a pas de « ; » après le code.</translation>
+    </message>
+    <message>
+        <source>The SRID of the WKT text is not a number.</source>
+        <translation>Le SRID du texte WKT n’est pas un nombre.</translation>
+    </message>
+    <message>
+        <source>The file is not valid WKT.</source>
+        <translation>Le fichier n’est pas du WKT valide.</translation>
+    </message>
+    <message>
+        <source>There is more text after the WKT geometry.</source>
+        <translation>Du texte suit la géométrie WKT.</translation>
+    </message>
+    <message>
+        <source>The WKT geometry is a %1, not a POLYGON or MULTIPOLYGON.</source>
+        <translation>La géométrie WKT est un %1, pas un POLYGON ou MULTIPOLYGON.</translation>
+    </message>
+    <message>
+        <source>The WKT polygon is empty.</source>
+        <translation>Le polygone WKT est vide.</translation>
+    </message>
+    <message>
+        <source>The holes of polygon %1 (a room) were left out.</source>
+        <translation>Les trous du polygone %1 (une pièce) ont été écartés.</translation>
+    </message>
+    <message>
+        <source>The file is not a readable DXF drawing (%1).</source>
+        <translation>Le fichier n’est pas un dessin DXF lisible (%1).</translation>
+    </message>
+    <message>
+        <source>The file is not a readable DXF drawing.</source>
+        <translation>Le fichier n’est pas un dessin DXF lisible.</translation>
+    </message>
+    <message>
+        <source>The drawing has more than %1 vertices, more than FloorCover imports.</source>
+        <translation>Le dessin a plus de %1 sommets, plus que ce que FloorCover importe.</translation>
+    </message>
+    <message>
+        <source>The drawing has more than %1 open lines, more than FloorCover imports.</source>
+        <translation>Le dessin a plus de %1 lignes ouvertes, plus que ce que FloorCover importe.</translation>
+    </message>
+    <message>
+        <source>The drawing has more than %1 entities, more than FloorCover imports.</source>
+        <translation>Le dessin a plus de %1 entités, plus que ce que FloorCover importe.</translation>
+    </message>
+    <message>
+        <source>A coordinate on layer “%1” is not a finite number.</source>
+        <translation>Une coordonnée du calque « %1 » n’est pas un nombre fini.</translation>
+    </message>
+    <message>
+        <source>The drawing does not say its unit ($INSUNITS): it was read in metres; correct Units if it is not.</source>
+        <translation>Le dessin n’indique pas son unité ($INSUNITS) : il a été lu en mètres ; corrigez Unité si ce n’est pas le cas.</translation>
+    </message>
+    <message>
+        <source>The drawing&apos;s unit ($INSUNITS %1) is unitless or unknown: it was read in metres; correct Units if it is not.</source>
+        <translation>L’unité du dessin ($INSUNITS %1) est sans unité ou inconnue : il a été lu en mètres ; corrigez Unité si ce n’est pas le cas.</translation>
+    </message>
+    <message>
+        <source>The drawing is empty.</source>
+        <translation>Le dessin est vide.</translation>
+    </message>
+    <message>
+        <source>The block leg must be a positive length in metres: change it in the Tiling Robot panel.</source>
+        <translation>Le côté de bloc doit être une longueur positive en mètres : modifiez-le dans le panneau Robot à pavage.</translation>
+    </message>
+    <message>
+        <source>The block masses must be positive (kg): change them in the Tiling Robot panel.</source>
+        <translation>Les masses des blocs doivent être positives (kg) : modifiez-les dans le panneau Robot à pavage.</translation>
+    </message>
+    <message>
+        <source>Waypoints are exported as .csv or .json files, not as “%1”.</source>
+        <translation>Les points de passage s’exportent en fichiers .csv ou .json, pas en « %1 ».</translation>
+    </message>
+    <message>
+        <source>The exact ordering handles at most %1 waypoints, and this floor has %2: choose another ordering in the Tiling Robot panel.</source>
+        <translation>L’ordre exact traite au plus %1 points de passage, et ce sol en a %2 : choisissez un autre ordre dans le panneau Robot à pavage.</translation>
+    </message>
+    <message>
+        <source>There is no ordering “%1” (available: %2).</source>
+        <translation>Il n’existe pas d’ordre « %1 » (disponibles : %2).</translation>
+    </message>
+    <message>
+        <source>%1 has too few different vertices (%2); an outline needs at least three.</source>
+        <translation>%1 a trop peu de sommets distincts (%2) ; un contour en demande au moins trois.</translation>
+    </message>
+    <message>
+        <source>Pieces of floor not connected to the largest, left out: %1 (%2 m²).</source>
+        <translation>Morceaux de sol non reliés au plus grand, écartés : %1 (%2 m²).</translation>
+    </message>
+    <message>
+        <source>Closed outlines outside the outer wall, left out: %1.</source>
+        <translation>Contours fermés hors du mur extérieur, écartés : %1.</translation>
+    </message>
+    <message>
+        <source>Room outlines outside the outer wall, left out: %1.</source>
+        <translation>Contours de pièces hors du mur extérieur, écartés : %1.</translation>
+    </message>
+    <message>
+        <source>Obstacles without area, removed: %1.</source>
+        <translation>Obstacles sans surface, supprimés : %1.</translation>
+    </message>
+    <message>
+        <source>Obstacles that crossed themselves, split where they cross: %1.</source>
+        <translation>Obstacles qui se croisaient eux-mêmes, divisés à leurs croisements : %1.</translation>
+    </message>
+    <message>
+        <source>Entities left out on layer “%1” (its role is Ignored): %2.</source>
+        <translation>Entités écartées du calque « %1 » (son rôle est Ignoré) : %2.</translation>
+    </message>
+    <message>
+        <source>Entities without usable 2D geometry, skipped: %1.</source>
+        <translation>Entités sans géométrie 2D utilisable, ignorées : %1.</translation>
+    </message>
+    <message>
+        <source>Open lines on layer “%1” that close into no outline, left out: %2 (%3 m); a larger “Close gaps up to” may close them.</source>
+        <translation>Lignes ouvertes du calque « %1 » qui ne forment aucun contour, écartées : %2 (%3 m) ; une valeur plus grande de « Fermer les écarts jusqu’à » peut les fermer.</translation>
+    </message>
 </context>
 <context>
     <name>fc::ui</name>
@@ -2425,6 +3201,10 @@ Planification de trajets de couverture pour robots de nettoyage et de désinfect
     <message>
         <source>Load a model trained for this plan from a .fcdqn file.</source>
         <translation>Charger depuis un fichier .fcdqn un modèle entraîné pour ce plan.</translation>
+    </message>
+    <message>
+        <source>there is no valid plan to load the model for</source>
+        <translation>il n’y a pas de plan valide pour lequel charger le modèle</translation>
     </message>
 </context>
 <context>

@@ -2,6 +2,7 @@
 #include "dialogs/BuildingImportDialog.h"
 
 #include "document/Conversions.h"
+#include "document/PlannerMessages.h"
 
 #include <QCheckBox>
 #include <QComboBox>
@@ -81,7 +82,7 @@ BuildingImportDialog::BuildingImportDialog(const QString& path, QWidget* parent)
         if (!preview.metresPerUnit) // unitless formats: metres unless the user says otherwise
             unit_->setCurrentIndex(1);
     } catch (const InputError& e) {
-        status_->setText(QString::fromStdString(e.what()));
+        status_->setText(plainMessage(QString::fromStdString(e.what())));
     }
     connect(storey_, &QComboBox::currentIndexChanged, this, &BuildingImportDialog::refresh);
     connect(height_, &QDoubleSpinBox::valueChanged, this, &BuildingImportDialog::refresh);
@@ -119,13 +120,13 @@ void BuildingImportDialog::refresh() {
         result_ = importBuildingModel(path_.toStdString(), options(), settings());
         const Plan& plan = result_->project.plan;
         for (const std::string& warning : result_->warnings)
-            warnings_->addItem(QString::fromStdString(warning));
+            warnings_->addItem(plainMessage(QString::fromStdString(warning)));
         status_->setText(
             tr("%1 obstacles, %2 rooms").arg(plan.obstacles.size()).arg(plan.rooms.size()));
         drawPlan(plan);
     } catch (const InputError& e) {
         result_.reset();
-        status_->setText(QString::fromStdString(e.what()));
+        status_->setText(plainMessage(QString::fromStdString(e.what())));
     }
     buttons_->button(QDialogButtonBox::Ok)->setEnabled(hasResult());
 }

@@ -1,6 +1,7 @@
 #include "dialogs/ImportDialog.h"
 
 #include "document/Conversions.h"
+#include "document/PlannerMessages.h"
 
 #include <QCheckBox>
 #include <QComboBox>
@@ -106,7 +107,7 @@ ImportDialog::ImportDialog(const QString& path, QWidget* parent)
         mapGroup_->setVisible(preview.format == "ros-map");
         buildLayerTable(preview);
     } catch (const InputError& e) {
-        error_ = fromStd(e.what());
+        error_ = plainMessage(fromStd(e.what()));
         unreadable_ = true;
     }
     connect(units_, &QDoubleSpinBox::editingFinished, this, &ImportDialog::refresh);
@@ -312,13 +313,13 @@ void ImportDialog::refresh() {
             result_ = importPlanFile(path_.toStdString(), options());
             error_.clear();
         } catch (const InputError& e) {
-            error_ = fromStd(e.what());
+            error_ = plainMessage(fromStd(e.what()));
         }
     }
     warnings_->clear();
     if (result_) {
         for (const std::string& w : result_->warnings)
-            warnings_->addItem(fromStd(w));
+            warnings_->addItem(plainMessage(fromStd(w)));
         const Plan& plan = result_->project.plan;
         summary_->setText(tr("Free area %1 m², %2 obstacles, %3 rooms")
                               .arg(freeAreaOf(plan), 0, 'f', 2)

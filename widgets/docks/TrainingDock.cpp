@@ -1,5 +1,6 @@
 #include "docks/TrainingDock.h"
 
+#include "document/PlannerMessages.h"
 #include "tasks/Task.h"
 
 #include <QComboBox>
@@ -345,7 +346,7 @@ bool TrainingDock::saveModel(const QString& path) {
                 throw InputError(tr("cannot replace the file").toStdString());
             }
         } catch (const std::exception& e) {
-            error = QString::fromStdString(e.what());
+            error = plainMessage(QString::fromStdString(e.what()));
         }
     }
     if (!error.isEmpty()) {
@@ -366,14 +367,14 @@ bool TrainingDock::loadModel(const QString& path) {
     }
     try {
         if (!prepared_)
-            throw InputError("there is no valid plan to load the model for");
+            throw InputError(tr("there is no valid plan to load the model for").toStdString());
         const std::string file = path.toStdString();
         auto trainer = std::make_unique<DqnTrainer>(prepared_->graph, loadDqnModelFile(file), file);
         const std::lock_guard<std::mutex> guard(session_->mutex);
         session_->trainer = std::move(trainer);
         episodes_ = session_->trainer->episodes();
     } catch (const std::exception& e) {
-        lastError_ = QString::fromStdString(e.what()); // the current model stays in place
+        lastError_ = plainMessage(QString::fromStdString(e.what())); // the current model stays
         return false;
     }
     clearPlot();

@@ -56,7 +56,8 @@ bool Document::repair(QStringList* notes) {
     try {
         changed.plan = normalizedPlan(repairPlan(project_.plan, changes));
     } catch (const InputError& e) {
-        return reject(tr("The plan cannot be repaired automatically: %1").arg(fromStd(e.what())));
+        return reject(tr("The plan cannot be repaired automatically: %1")
+                          .arg(plainMessage(fromStd(e.what()))));
     }
     const QString problem = validationMessage(changed.plan);
     if (!problem.isEmpty())
@@ -80,7 +81,7 @@ bool Document::repair(QStringList* notes) {
     if (notes) {
         notes->clear();
         for (const std::string& note : changes)
-            notes->push_back(fromStd(note));
+            notes->push_back(plainMessage(fromStd(note)));
     }
     return pushChange(changed, GeometryChange | RoomsChange | EndpointsChange, tr("Repair plan"));
 }
@@ -372,7 +373,7 @@ bool Document::setRobot(const RobotProfile& robot) {
     try {
         robot.validate();
     } catch (const InputError& e) {
-        return reject(fromStd(e.what()));
+        return reject(plainMessage(fromStd(e.what())));
     }
     // Steps of one spin box merge into one command; a change of another field does not.
     const RobotProfile& old = project_.robot;

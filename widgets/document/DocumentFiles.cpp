@@ -2,6 +2,7 @@
 
 #include "document/Conversions.h"
 #include "document/Document.h"
+#include "document/PlannerMessages.h"
 #include "formats/FileIO.h"
 
 #include <QCoreApplication>
@@ -59,7 +60,7 @@ std::unique_ptr<Document> loadDocument(const QString& path, QString* error) {
         return document;
     } catch (const std::exception& e) {
         if (error)
-            *error = fromStd(e.what());
+            *error = plainMessage(fromStd(e.what())); // the path stays, the rest reworded
         return nullptr;
     }
 }
@@ -74,7 +75,8 @@ bool saveDocument(Document& document, const QString& path, QString* error) {
         writeFileAtomically(path.toStdString(), writeProject(document.project()));
     } catch (const std::exception& e) {
         if (error)
-            *error = DocumentFilesText::tr("Cannot save %1: %2").arg(path, fromStd(e.what()));
+            *error = DocumentFilesText::tr("Cannot save %1: %2")
+                         .arg(path, plainMessage(fromStd(e.what())));
         return false;
     }
     document.setFileName(QFileInfo(path).absoluteFilePath());

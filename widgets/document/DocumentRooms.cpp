@@ -2,6 +2,7 @@
 // map's segmentation finds are corrected here). One undoable command each.
 #include "document/Conversions.h"
 #include "document/Document.h"
+#include "document/PlannerMessages.h"
 #include "model/RoomEdits.h"
 
 #include <algorithm>
@@ -19,7 +20,7 @@ bool Document::mergeRooms(int first, int second) {
         list[first].outline = mergedRoomOutline(list[first].outline, list[second].outline);
     } catch (const InputError& e) {
         return reject(tr("%1 and %2 cannot be merged: %3")
-                          .arg(fromStd(keep), fromStd(gone), fromStd(e.what())));
+                          .arg(fromStd(keep), fromStd(gone), plainMessage(fromStd(e.what()))));
     }
     list.erase(list.begin() + second);
     // Planned when either was; the merged room sweeps at the first room's fixed angle.
@@ -43,7 +44,8 @@ bool Document::splitRoom(int index, Vec2 from, Vec2 to) {
     try {
         parts = splitRoomOutline(list[index].outline, from, to);
     } catch (const InputError& e) {
-        return reject(tr("%1 cannot be split: %2").arg(fromStd(name), fromStd(e.what())));
+        return reject(
+            tr("%1 cannot be split: %2").arg(fromStd(name), plainMessage(fromStd(e.what()))));
     }
     // The larger part keeps the name (and the room's place in the planning order).
     if (ringArea(parts.second) > ringArea(parts.first))

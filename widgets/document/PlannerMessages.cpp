@@ -1,12 +1,17 @@
 #include "document/PlannerMessages.h"
 
+#include "document/PlannerMessageForms.h"
+
 #include <QCoreApplication>
 #include <QRegularExpression>
+#include <QStringList>
 #include <vector>
 
 namespace fc::ui {
 
 namespace {
+
+using messages::MessageForm;
 
 // Not named tr(): lupdate would file the strings under the enclosing namespace. The texts
 // are marked with QT_TRANSLATE_NOOP in the "PlannerMessages" context instead.
@@ -14,145 +19,109 @@ QString translated(const char* text) {
     return QCoreApplication::translate("PlannerMessages", text);
 }
 
-// "boundary", "obstacle 3", "room \"Kitchen\"" as the editor names them.
+// A pattern compiled at once: later matches only read it, from any thread (training reports
+// its errors from a worker).
+QRegularExpression compiled(const QString& pattern) {
+    QRegularExpression expression(pattern);
+    expression.optimize();
+    return expression;
+}
+
+// %1, %2... of a sentence replaced in one pass, so that a value holding "%2" (a room's name)
+// stays as it is; a translation may put the values in another order.
+QString filledIn(const QString& sentence, const QStringList& values) {
+    QString out;
+    out.reserve(sentence.size());
+    for (qsizetype i = 0; i < sentence.size(); ++i) {
+        if (sentence[i] == QLatin1Char('%') && i + 1 < sentence.size() &&
+            sentence[i + 1].isDigit()) {
+            qsizetype end = i + 1;
+            int number = 0;
+            while (end < sentence.size() && sentence[end].isDigit() && number < 10)
+                number = 10 * number + sentence[end++].digitValue();
+            if (number >= 1 && number <= values.size()) {
+                out += values[number - 1];
+                i = end - 1;
+                continue;
+            }
+        }
+        out += sentence[i];
+    }
+    return out;
+}
+
+// "boundary", "obstacle 3", "room \"Kitchen\"", "feature 4 (obstacle)"... as the editor
+// names them.
 QString ringName(const QString& planner) {
-    static const QRegularExpression obstacle(QStringLiteral("^obstacle (\\d+)$"));
-    static const QRegularExpression room(QStringLiteral("^room \"(.*)\"$"));
+    static const QRegularExpression qualified = compiled(QStringLiteral(
+        R"re(^(.+) \((?:feature (\d+)|hole (\d+) of the boundary|(boundary|obstacle|room))\)$)re"));
+    static const QRegularExpression obstacle = compiled(QStringLiteral(R"re(^obstacle (\d+)$)re"));
+    static const QRegularExpression namedRoom = compiled(QStringLiteral(R"re(^room "(.*)"$)re"));
+    static const QRegularExpression numberedRoom = compiled(QStringLiteral(R"re(^room (\d+)$)re"));
+    static const QRegularExpression feature = compiled(QStringLiteral(R"re(^feature (\d+)$)re"));
+    if (const auto m = qualified.match(planner); m.hasMatch()) {
+        const QString base = ringName(m.captured(1));
+        if (!m.captured(2).isEmpty())
+            return filledIn(translated(QT_TRANSLATE_NOOP("PlannerMessages", "%1 (feature %2)")),
+                            {base, m.captured(2)});
+        if (!m.captured(3).isEmpty())
+            return filledIn(
+                translated(QT_TRANSLATE_NOOP("PlannerMessages", "%1 (hole %2 in the outer wall)")),
+                {base, m.captured(3)});
+        const QString role = m.captured(4);
+        const char* sentence = role == QLatin1String("boundary")
+                                   ? QT_TRANSLATE_NOOP("PlannerMessages", "%1 (outer wall)")
+                                   : (role == QLatin1String("obstacle")
+                                          ? QT_TRANSLATE_NOOP("PlannerMessages", "%1 (obstacle)")
+                                          : QT_TRANSLATE_NOOP("PlannerMessages", "%1 (room)"));
+        return filledIn(translated(sentence), {base});
+    }
     if (planner == QLatin1String("boundary"))
         return translated(QT_TRANSLATE_NOOP("PlannerMessages", "The outer wall"));
+    if (planner == QLatin1String("room"))
+        return translated(QT_TRANSLATE_NOOP("PlannerMessages", "A room"));
+    if (planner == QLatin1String("an unnamed room"))
+        return translated(QT_TRANSLATE_NOOP("PlannerMessages", "An unnamed room"));
     if (const auto m = obstacle.match(planner); m.hasMatch())
-        return translated(QT_TRANSLATE_NOOP("PlannerMessages", "Obstacle %1")).arg(m.captured(1));
-    if (const auto m = room.match(planner); m.hasMatch())
-        return translated(QT_TRANSLATE_NOOP("PlannerMessages", "Room “%1”")).arg(m.captured(1));
+        return filledIn(translated(QT_TRANSLATE_NOOP("PlannerMessages", "Obstacle %1")),
+                        {m.captured(1)});
+    if (const auto m = namedRoom.match(planner); m.hasMatch())
+        return filledIn(translated(QT_TRANSLATE_NOOP("PlannerMessages", "Room “%1”")),
+                        {m.captured(1)});
+    if (const auto m = numberedRoom.match(planner); m.hasMatch())
+        return filledIn(translated(QT_TRANSLATE_NOOP("PlannerMessages", "Room %1")),
+                        {m.captured(1)});
+    if (const auto m = feature.match(planner); m.hasMatch())
+        return filledIn(translated(QT_TRANSLATE_NOOP("PlannerMessages", "Feature %1")),
+                        {m.captured(1)});
     return planner;
 }
 
-// One planner message form: its pattern and the editor's sentence, whose %1, %2... are the
-// pattern's captures in order (a capture named "ring" is put in the editor's words).
-struct MessageForm {
-    QRegularExpression pattern;
-    const char* sentence;
-};
-
 const std::vector<MessageForm>& forms() {
-    // The sentences are marked for lupdate here and translated when used.
-    static const std::vector<MessageForm> table = {
-        {QRegularExpression(
-             QStringLiteral("^exact solver: (\\d+) required cells exceed its limit of (\\d+); use "
-                            "`--solver heuristic` for this query$")),
-         QT_TRANSLATE_NOOP("PlannerMessages",
-                           "These rooms have %1 cells, and the exact solver orders at most %2. "
-                           "Choose the heuristic solver in the Planning panel.")},
-        {QRegularExpression(QStringLiteral(
-             "^exact solver: (\\d+) required cells: no proof of optimality within its "
-             "budget \\((.*)\\); use `--solver heuristic` for this query$")),
-         QT_TRANSLATE_NOOP("PlannerMessages",
-                           "The exact solver could not prove the best order of %1 cells within "
-                           "its budget (%2). Choose the heuristic solver in the Planning panel.")},
-        {QRegularExpression(QStringLiteral("^solver dqn needs a trained model \\(--model FILE; "
-                                           "make one with floorcover-cli train\\)$")),
-         QT_TRANSLATE_NOOP("PlannerMessages",
-                           "The dqn solver needs a trained model: train one in the Training "
-                           "panel (or load one there), or choose another solver.")},
-        {QRegularExpression(QStringLiteral("^obstacle (\\d+) crosses the boundary near (.*)$")),
-         QT_TRANSLATE_NOOP("PlannerMessages", "Obstacle %1 crosses the outer wall near %2.")},
-        {QRegularExpression(QStringLiteral("^obstacle (\\d+) touches the boundary at (.*); "
-                                           "obstacles must lie strictly inside it$")),
-         QT_TRANSLATE_NOOP("PlannerMessages",
-                           "Obstacle %1 touches the outer wall at %2; obstacles must lie "
-                           "inside the walls.")},
-        {QRegularExpression(QStringLiteral("^obstacles (\\d+) and (\\d+) overlap near (.*)$")),
-         QT_TRANSLATE_NOOP("PlannerMessages", "Obstacles %1 and %2 overlap near %3.")},
-        {QRegularExpression(QStringLiteral(
-             "^obstacles (\\d+) and (\\d+) touch at (.*); merge them into one obstacle$")),
-         QT_TRANSLATE_NOOP("PlannerMessages",
-                           "Obstacles %1 and %2 touch at %3; draw them as one obstacle.")},
-        {QRegularExpression(
-             QStringLiteral("^obstacle (\\d+) lies outside the boundary, near (.*)$")),
-         QT_TRANSLATE_NOOP("PlannerMessages", "Obstacle %1 lies outside the walls, near %2.")},
-        {QRegularExpression(QStringLiteral("^obstacle (\\d+) lies inside obstacle (\\d+)$")),
-         QT_TRANSLATE_NOOP("PlannerMessages", "Obstacle %1 lies inside obstacle %2.")},
-        {QRegularExpression(QStringLiteral("^(?<ring>.+) intersects itself near (.*)$")),
-         QT_TRANSLATE_NOOP("PlannerMessages", "%1 crosses itself near %2.")},
-        {QRegularExpression(QStringLiteral("^(?<ring>.+) touches itself at (.*)$")),
-         QT_TRANSLATE_NOOP("PlannerMessages", "%1 touches itself at %2.")},
-        {QRegularExpression(
-             QStringLiteral("^(?<ring>.+) folds back on itself \\(a spike\\) at (.*)$")),
-         QT_TRANSLATE_NOOP("PlannerMessages", "%1 folds back on itself (a spike) at %2.")},
-        {QRegularExpression(
-             QStringLiteral("^rooms \"(.*)\" and \"(.*)\" overlap by (.*) m\\^2 near (.*)$")),
-         QT_TRANSLATE_NOOP("PlannerMessages", "Rooms “%1” and “%2” overlap by %3 m² near %4.")},
-        {QRegularExpression(QStringLiteral("^rooms \"(.*)\" and \"(.*)\" overlap by (.*) m\\^2$")),
-         QT_TRANSLATE_NOOP("PlannerMessages", "Rooms “%1” and “%2” overlap by %3 m².")},
-        {QRegularExpression(QStringLiteral("^room \"(.*)\" lies outside the boundary$")),
-         QT_TRANSLATE_NOOP("PlannerMessages", "Room “%1” lies outside the walls.")},
-        {QRegularExpression(QStringLiteral("^room \"(.*)\" lies inside obstacle (\\d+)$")),
-         QT_TRANSLATE_NOOP("PlannerMessages", "Room “%1” lies inside obstacle %2.")},
-        {QRegularExpression(
-             QStringLiteral("^obstacles (\\d+) and (\\d+) are identical \\(duplicate "
-                            "obstacle\\)$")),
-         QT_TRANSLATE_NOOP("PlannerMessages",
-                           "Obstacles %1 and %2 are the same: delete one of them.")},
-        {QRegularExpression(QStringLiteral("^room \"(.*)\" does not overlap the free space \\(it "
-                                           "covers only obstacles\\)$")),
-         QT_TRANSLATE_NOOP("PlannerMessages",
-                           "Room “%1” covers only obstacles: there is no floor in it to clean.")},
-        {QRegularExpression(QStringLiteral("^room (\\d+) has no name$")),
-         QT_TRANSLATE_NOOP("PlannerMessages", "Room %1 has no name: give it one.")},
-        {QRegularExpression(
-             QStringLiteral("^free area (.*) m\\^2 \\(boundary minus obstacles\\) is "
-                            "smaller than the robot footprint (.*) m\\^2 \\(L = (.*) "
-                            "m\\)$")),
-         QT_TRANSLATE_NOOP("PlannerMessages",
-                           "The free floor (%1 m²) is smaller than the robot (%2 m², L = %3 m).")},
-        {QRegularExpression(QStringLiteral("^duplicate room name \"(.*)\"$")),
-         QT_TRANSLATE_NOOP("PlannerMessages", "Two rooms are named “%1”: rename one.")},
-        {QRegularExpression(QStringLiteral(
-             "^(\\d+) cells \\((.*) m\\^2\\) cannot be reached from the start and are left out$")),
-         QT_TRANSLATE_NOOP("PlannerMessages",
-                           "%1 cells (%2 m²) cannot be reached from the start and are left "
-                           "out.")},
-        {QRegularExpression(QStringLiteral("^room (.*) cannot be reached from the start and is "
-                                           "left out$")),
-         QT_TRANSLATE_NOOP("PlannerMessages",
-                           "Room %1 cannot be reached from the start and is left out.")},
-        {QRegularExpression(QStringLiteral("^(.*) m\\^2 \\((.*)% of the selected floor\\) the "
-                                           "robot could sweep but the path does not cover$")),
-         QT_TRANSLATE_NOOP("PlannerMessages",
-                           "%1 m² (%2 % of the selected floor) the robot could clean but the "
-                           "path misses.")},
-        {QRegularExpression(QStringLiteral(
-             "^(.*) m\\^2 \\((.*)% of the selected floor\\) the robot cannot reach \\(gaps "
-             "narrower than the robot, corners beyond its head\\)$")),
-         QT_TRANSLATE_NOOP("PlannerMessages",
-                           "%1 m² (%2 % of the selected floor) the robot cannot reach (gaps "
-                           "narrower than the robot, corners beyond its head).")},
-        {QRegularExpression(QStringLiteral("^no selected (?:area|room) can be reached from the "
-                                           "start point$")),
-         QT_TRANSLATE_NOOP("PlannerMessages",
-                           "No selected room can be reached from the start: move the start "
-                           "(Place Start) or pick other rooms.")},
-        {QRegularExpression(
-             QStringLiteral("^the end point cannot be reached from the start point$")),
-         QT_TRANSLATE_NOOP("PlannerMessages",
-                           "The end cannot be reached from the start: move one of them.")},
-        {QRegularExpression(QStringLiteral("^the selected rooms contain no area the robot can "
-                                           "sweep$")),
-         QT_TRANSLATE_NOOP("PlannerMessages",
-                           "The selected rooms have no floor the robot can clean: pick other "
-                           "rooms or a smaller robot.")},
-        {QRegularExpression(QStringLiteral("^robot diameter L = (.*) m exceeds coverage width "
-                                           "W = (.*) m \\(need L <= W <= D\\)$")),
-         QT_TRANSLATE_NOOP("PlannerMessages",
-                           "The robot diameter L (%1 m) is larger than the coverage width W "
-                           "(%2 m): L ≤ W ≤ D.")},
-        {QRegularExpression(QStringLiteral("^coverage width W = (.*) m exceeds cleaning "
-                                           "diameter D = (.*) m \\(need L <= W <= D\\)$")),
-         QT_TRANSLATE_NOOP("PlannerMessages",
-                           "The coverage width W (%1 m) is larger than the cleaning diameter D "
-                           "(%2 m): L ≤ W ≤ D.")},
-    };
+    static const std::vector<MessageForm> table = [] {
+        std::vector<MessageForm> all = messages::planningMessageForms();
+        std::vector<MessageForm> files = messages::fileMessageForms();
+        all.insert(all.end(), std::make_move_iterator(files.begin()),
+                   std::make_move_iterator(files.end()));
+        for (const MessageForm& form : all) {
+            form.pattern.optimize(); // compiled once, before any thread matches
+            if (!form.pattern.isValid())
+                qWarning("planner message form %s: %s", qPrintable(form.pattern.pattern()),
+                         qPrintable(form.pattern.errorString()));
+        }
+        return all;
+    }();
     return table;
+}
+
+// A message after the file it is about: "/plans/office.geojson: feature 3 has no geometry".
+// The path has a folder separator (or is a Qt resource, or a bare file name with an
+// extension) and ends before the first ": ".
+const QRegularExpression& filePrefix() {
+    static const QRegularExpression pattern = compiled(QStringLiteral(
+        R"re(^(?<path>(?:[A-Za-z]:)?[^:]*[/\\][^:]*\S|:/[^:]*\S|[^\s:/\\]+\.\w{1,8}))re"
+        R"re(: (?<message>.+)$)re"));
+    return pattern;
 }
 
 } // namespace
@@ -162,15 +131,25 @@ QString plainMessage(const QString& message) {
         const QRegularExpressionMatch m = form.pattern.match(message);
         if (!m.hasMatch())
             continue;
-        QString sentence = translated(form.sentence);
         const QStringList names = form.pattern.namedCaptureGroups();
+        QStringList values;
         for (int i = 1; i <= form.pattern.captureCount(); ++i) {
             QString value = m.captured(i);
             if (i < names.size() && names[i] == QLatin1String("ring"))
                 value = ringName(value);
-            sentence = sentence.arg(value);
+            else if (i < names.size() && names[i] == QLatin1String("message"))
+                value = plainMessage(value);
+            values << value;
         }
-        return sentence;
+        return filledIn(translated(form.sentence), values);
+    }
+    // The file's path stays; what is said about the file is reworded.
+    if (const auto m = filePrefix().match(message); m.hasMatch()) {
+        const QString said = m.captured(QStringLiteral("message"));
+        const QString plain = plainMessage(said);
+        if (plain != said)
+            return filledIn(translated(QT_TRANSLATE_NOOP("PlannerMessages", "%1: %2")),
+                            {m.captured(QStringLiteral("path")), plain});
     }
     return message;
 }

@@ -1,5 +1,6 @@
 #include "tasks/DqnTraining.h"
 
+#include "document/PlannerMessages.h"
 #include "tasks/Task.h"
 
 #include <QCoreApplication>
@@ -29,7 +30,7 @@ TrainingRun trainLocked(DqnSession& session, double seconds, TaskFeedback& feedb
     } catch (const std::exception& e) {
         throw std::runtime_error(
             QCoreApplication::translate("fc::ui::TrainingDock", "Training failed: %1")
-                .arg(QString::fromStdString(e.what()))
+                .arg(plainMessage(QString::fromStdString(e.what())))
                 .toStdString());
     }
     return {stop == TrainingStop::Cancelled ? TrainingEnd::Interrupted : TrainingEnd::BudgetReached,
@@ -48,7 +49,7 @@ TrainingRun startDqn(DqnSession& session, const PreparedPlan& prepared,
     } catch (const std::exception& e) {
         throw std::runtime_error(
             QCoreApplication::translate("fc::ui::TrainingDock", "Training cannot start: %1")
-                .arg(QString::fromStdString(e.what()))
+                .arg(plainMessage(QString::fromStdString(e.what())))
                 .toStdString());
     }
     return trainLocked(session, seconds, feedback);

@@ -1,5 +1,7 @@
 #include "tasks/Task.h"
 
+#include "document/PlannerMessages.h"
+
 #ifdef __linux__
 #include <sys/resource.h>
 #include <sys/syscall.h>
@@ -91,7 +93,9 @@ void Task::complete(std::any result, QString error, bool threw) {
         emit cancelled();
     } else if (threw) {
         state_ = State::Failed;
-        emit failed(error);
+        // The planner's own words (fc::InputError, fc::SolverError) in the editor's, here on
+        // the GUI thread; a message the editor wrote itself passes through unchanged.
+        emit failed(plainMessage(error));
     } else {
         state_ = State::Finished;
         result_ = std::move(result);

@@ -2,6 +2,7 @@
 // code as `floorcover-cli export`).
 #include "document/Conversions.h"
 #include "document/Document.h"
+#include "document/PlannerMessages.h"
 #include "formats/FileIO.h"
 #include "tasks/PlanningController.h"
 #include "window/MainWindow.h"
@@ -133,7 +134,7 @@ bool MainWindow::exportFile(const QString& path, ExportFormat format, ExportSubj
         writeFileAtomically(path.toStdString(),
                             exportToFormat(format, subject, document_->plan(), coveragePath, info));
     } catch (const std::exception& e) {
-        showError(tr("Cannot export to %1: %2").arg(path, fromStd(e.what())));
+        showError(tr("Cannot export to %1: %2").arg(path, plainMessage(fromStd(e.what()))));
         return false;
     }
     rememberExport(subject, format, path);

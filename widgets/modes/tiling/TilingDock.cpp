@@ -1,6 +1,7 @@
 #include "modes/tiling/TilingDock.h"
 
 #include "document/Conversions.h"
+#include "document/PlannerMessages.h"
 #include "formats/FileIO.h"
 #include "formats/PlanIO.h"
 #include "modes/tiling/PpoTrainingPanel.h"
@@ -210,7 +211,7 @@ bool TilingDock::exportWaypoints(const QString& path) {
         writeFileAtomically(path.toStdString(),
                             tiling::waypointsToFormat(path.toStdString(), *plan));
     } catch (const std::exception& e) {
-        lastError_ = fromStd(e.what());
+        lastError_ = plainMessage(fromStd(e.what()));
         return false;
     }
     lastError_.clear();
