@@ -9,11 +9,33 @@
 #include "tasks/Task.h"
 
 #include <QEventLoop>
+#include <QThreadPool>
 #include <QTimer>
 #include <algorithm>
 #include <map>
 
 namespace fc::ui {
+
+namespace {
+
+// Drops `slot`'s reference on a pool thread. Results, cells and graphs are built on worker
+// threads, in their malloc arenas; freeing their many small blocks from the GUI thread while
+// a planner thread allocates in the same arena made the GUI thread wait on the arena's lock,
+// now and then for 60-140 ms (perf sched: voluntary waits, not CPU).
+template <class T> void releaseOffThread(std::shared_ptr<T>& slot) {
+    if (!slot)
+        return;
+    QThreadPool::globalInstance()->start([doomed = std::move(slot)]() mutable { doomed.reset(); });
+    slot.reset();
+}
+
+template <class T> void replaceReleasingOld(std::shared_ptr<T>& slot, std::shared_ptr<T> value) {
+    std::shared_ptr<T> old = std::move(slot);
+    slot = std::move(value);
+    releaseOffThread(old);
+}
+
+} // namespace
 
 PlanningController::PlanningController(TaskManager* tasks, QObject* parent)
     : QObject(parent), tasks_(tasks), prepareTimer_(new QTimer(this)),
@@ -44,10 +66,10 @@ void PlanningController::setDocument(Document* document) {
     if (document_)
         disconnect(document_, nullptr, this, nullptr);
     document_ = document;
-    prepared_.reset();
-    preparedPlans_.reset();
+    releaseOffThread(prepared_);
+    releaseOffThread(preparedPlans_);
     invalidateResult();
-    stale_.reset(); // another document's path
+    releaseOffThread(stale_); // another document's path
     emit preparedChanged();
     if (!document_)
         return;
@@ -80,7 +102,7 @@ void PlanningController::schedulePrepare() {
     ++floorEdits_;
     // Cells and graphs are of the old plan, robot or sweep (a sweep change keeps them valid,
     // but every typed angle would otherwise stay cached).
-    preparedPlans_.reset();
+    releaseOffThread(preparedPlans_);
     invalidateResult();
     tasks_->cancelKind(QStringLiteral("prepare")); // its overlays are for the old geometry
     pendingPrepare_ = true;
@@ -128,8 +150,8 @@ void PlanningController::invalidateResult() {
     cancelPlanning(); // the solvers stop when the document changes under them
     if (!result_)
         return;
-    stale_ = result_; // shown greyed until a newer path arrives
-    result_.reset();
+    replaceReleasingOld(stale_, result_); // shown greyed until a newer path arrives
+    releaseOffThread(result_);
     draft_ = false;
     emit resultChanged();
 }
@@ -174,7 +196,7 @@ void PlanningController::startPrepare() {
     }
     const Project project = document_->project();
     if (project.plan.boundary.empty() || document_->needsRepair()) {
-        prepared_.reset();
+        releaseOffThread(prepared_);
         emit preparedChanged();
         // A new drawing is not a mistake (the dock shows a hint); a broken plan waits for
         // its repair.
@@ -206,7 +228,7 @@ void PlanningController::startPrepare() {
                              {QStringLiteral("prepare")});
     prepareTask_ = task;
     connect(task, &Task::finished, this, [this, task, floor = floorEdits_] {
-        prepared_ = task->result<PreparedPlan>();
+        replaceReleasingOld(prepared_, task->result<PreparedPlan>());
         preparedFloor_ = floor;
         // Only a preparation's own error is cleared: a plan that failed (solver dqn without
         // a model) keeps saying why while the overlays are brought up to date.
@@ -216,7 +238,7 @@ void PlanningController::startPrepare() {
         emit preparedChanged();
     });
     connect(task, &Task::failed, this, [this](const QString& message) {
-        prepared_.reset();
+        releaseOffThread(prepared_);
         setError(plainMessage(message));
         errorFromPrepare_ = true;
         emit preparedChanged();
@@ -252,10 +274,10 @@ void PlanningController::startDraft() {
                              {QStringLiteral("draft")});
     draftTask_ = task;
     connect(task, &Task::finished, this, [this, task, edit, floor = floorEdits_] {
-        result_ = task->result<PlanResult>();
+        replaceReleasingOld(result_, task->result<PlanResult>());
         resultFloor_ = floor;
         draft_ = true;
-        stale_.reset();
+        releaseOffThread(stale_);
         // The message of an earlier query that failed no longer applies; a plan still
         // failing (dqn without a model) says so again when it ends.
         setError(QString());
@@ -267,7 +289,7 @@ void PlanningController::startDraft() {
     connect(task, &Task::failed, this, [this](const QString& message) {
         // The query itself is wrong (a start the robot cannot leave, rooms it cannot reach):
         // the full plan would say the same.
-        stale_.reset();
+        releaseOffThread(stale_);
         setError(plainMessage(message));
         errorFromPrepare_ = false;
         emit resultChanged();
@@ -302,17 +324,17 @@ void PlanningController::plan() {
                              {QStringLiteral("planning")});
     planTask_ = task;
     connect(task, &Task::finished, this, [this, task, floor = floorEdits_] {
-        result_ = task->result<PlanResult>();
+        replaceReleasingOld(result_, task->result<PlanResult>());
         resultFloor_ = floor;
         draft_ = false;
-        stale_.reset();
+        releaseOffThread(stale_);
         setError(QString());
         errorFromPrepare_ = false;
         emit resultChanged();
     });
     connect(task, &Task::failed, this, [this](const QString& message) {
-        result_.reset();
-        stale_.reset();
+        releaseOffThread(result_);
+        releaseOffThread(stale_);
         draft_ = false;
         setError(plainMessage(message));
         errorFromPrepare_ = false;
