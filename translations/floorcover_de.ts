@@ -911,6 +911,90 @@
         <source>Open lines on layer “%1” that close into no outline, left out: %2 (%3 m); a larger “Close gaps up to” may close them.</source>
         <translation>Offene Linien auf Layer „%1“, die sich zu keinem Umriss schließen, weggelassen: %2 (%3 m); ein größeres „Lücken schließen bis“ schließt sie vielleicht.</translation>
     </message>
+    <message>
+        <source>The model is larger than FloorCover imports.</source>
+        <translation>Das Modell ist größer, als FloorCover importiert.</translation>
+    </message>
+    <message>
+        <source>FloorCover ran out of memory while reading the model: close other programs, or export a smaller part of the building.</source>
+        <translation>FloorCover hatte beim Lesen des Modells nicht genug Speicher: Schließen Sie andere Programme oder exportieren Sie einen kleineren Teil des Gebäudes.</translation>
+    </message>
+    <message>
+        <source>FloorCover imports 3D building models as .ifc, .obj, .gltf, .glb or .stl files, not as “%1” files.</source>
+        <translation>FloorCover importiert 3D-Gebäudemodelle als .ifc-, .obj-, .gltf-, .glb- oder .stl-Dateien, nicht als „%1“-Dateien.</translation>
+    </message>
+    <message>
+        <source>The model cannot be read (%1): export it again from the modelling program.</source>
+        <translation>Das Modell kann nicht gelesen werden (%1): Exportieren Sie es erneut aus dem Modellierungsprogramm.</translation>
+    </message>
+    <message>
+        <source>The model holds no 3D shapes (meshes) to cut: export it again with its geometry.</source>
+        <translation>Das Modell enthält keine 3D-Formen (Meshes) zum Schneiden: Exportieren Sie es erneut mit seiner Geometrie.</translation>
+    </message>
+    <message>
+        <source>The model holds no surfaces (triangles) to cut: export it again with its geometry.</source>
+        <translation>Das Modell enthält keine Flächen (Dreiecke) zum Schneiden: Exportieren Sie es erneut mit seiner Geometrie.</translation>
+    </message>
+    <message>
+        <source>The model has more than %1 triangles, more than FloorCover imports: export only the storey you need.</source>
+        <translation>Das Modell hat mehr als %1 Dreiecke, mehr als FloorCover importiert: Exportieren Sie nur das Geschoss, das Sie brauchen.</translation>
+    </message>
+    <message>
+        <source>The model&apos;s parts are nested more than %1 levels deep, more than FloorCover imports.</source>
+        <translation>Die Teile des Modells sind mehr als %1 Ebenen tief verschachtelt, mehr als FloorCover importiert.</translation>
+    </message>
+    <message>
+        <source>The model is damaged (its part “%1” refers to geometry that is missing): export it again.</source>
+        <translation>Das Modell ist beschädigt (sein Teil „%1“ verweist auf fehlende Geometrie): Exportieren Sie es erneut.</translation>
+    </message>
+    <message>
+        <source>The model&apos;s part “%1” has an invalid or huge coordinate: check the Unit in the Import 3D Building Model dialog.</source>
+        <translation>Der Teil „%1“ des Modells hat eine ungültige oder riesige Koordinate: Prüfen Sie Einheit im Dialog 3D-Gebäudemodell importieren.</translation>
+    </message>
+    <message>
+        <source>The unit must be a positive number of metres: choose another Unit in the Import 3D Building Model dialog.</source>
+        <translation>Die Einheit muss eine positive Anzahl Meter sein: Wählen Sie im Dialog 3D-Gebäudemodell importieren eine andere Einheit.</translation>
+    </message>
+    <message>
+        <source>“Cut above the floor” must be a positive number of metres.</source>
+        <translation>„Schnitt über dem Boden“ muss eine positive Anzahl Meter sein.</translation>
+    </message>
+    <message>
+        <source>The model has no storey “%1” (its storeys: %2): choose one under Storey.</source>
+        <translation>Das Modell hat kein Geschoss „%1“ (seine Geschosse: %2): Wählen Sie eines unter Geschoss.</translation>
+    </message>
+    <message>
+        <source>The cut at height %1 (%3 above the floor of storey “%2”) meets no wall: lower “Cut above the floor”, or check the Unit and the Storey.</source>
+        <translation>Der Schnitt in Höhe %1 (%3 über dem Boden von Geschoss „%2“) trifft keine Wand: Verringern Sie „Schnitt über dem Boden“ oder prüfen Sie Einheit und Geschoss.</translation>
+    </message>
+    <message>
+        <source>The cut at height %1 (%3 above the floor of storey “%2”) has more than %4 wall edges, more than FloorCover imports: try another “Cut above the floor”.</source>
+        <translation>Der Schnitt in Höhe %1 (%3 über dem Boden von Geschoss „%2“) hat mehr als %4 Wandkanten, mehr als FloorCover importiert: Versuchen Sie einen anderen „Schnitt über dem Boden“.</translation>
+    </message>
+    <message>
+        <source>The cut at height %1 (%3 above the floor of storey “%2”) encloses no free space: the outer walls are open at that height, or the model is not closed. Try another “Cut above the floor”.</source>
+        <translation>Der Schnitt in Höhe %1 (%3 über dem Boden von Geschoss „%2“) umschließt keine freie Fläche: Die Außenwände sind in dieser Höhe offen, oder das Modell ist nicht geschlossen. Versuchen Sie einen anderen „Schnitt über dem Boden“.</translation>
+    </message>
+    <message>
+        <source>The cut at height %1 (%3 above the floor of storey “%2”) makes no valid plan: %4</source>
+        <translation>Der Schnitt in Höhe %1 (%3 über dem Boden von Geschoss „%2“) ergibt keinen gültigen Plan: %4</translation>
+    </message>
+    <message>
+        <source>Smaller enclosed areas apart from the main floor, left out: %1 (%2 m² in all).</source>
+        <translation>Kleinere umschlossene Flächen neben der Hauptfläche, weggelassen: %1 (%2 m² insgesamt).</translation>
+    </message>
+    <message>
+        <source>Space “%1” has no closed outline at the cut height and is left out as a room.</source>
+        <translation>Der Raum „%1“ hat in der Schnitthöhe keinen geschlossenen Umriss und wird als Raum weggelassen.</translation>
+    </message>
+    <message>
+        <source>Room “%1” is left out: %2</source>
+        <translation>Raum „%1“ wird weggelassen: %2</translation>
+    </message>
+    <message>
+        <source>The map&apos;s rooms could not be separated: choose One room under “Split into rooms”, or another way to split.</source>
+        <translation>Die Räume der Karte konnten nicht getrennt werden: Wählen Sie Ein Raum unter „In Räume teilen“ oder eine andere Aufteilung.</translation>
+    </message>
 </context>
 <context>
     <name>fc::ui</name>

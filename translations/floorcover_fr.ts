@@ -911,6 +911,90 @@
         <source>Open lines on layer “%1” that close into no outline, left out: %2 (%3 m); a larger “Close gaps up to” may close them.</source>
         <translation>Lignes ouvertes du calque « %1 » qui ne forment aucun contour, écartées : %2 (%3 m) ; une valeur plus grande de « Fermer les écarts jusqu’à » peut les fermer.</translation>
     </message>
+    <message>
+        <source>The model is larger than FloorCover imports.</source>
+        <translation>La maquette dépasse ce que FloorCover importe.</translation>
+    </message>
+    <message>
+        <source>FloorCover ran out of memory while reading the model: close other programs, or export a smaller part of the building.</source>
+        <translation>FloorCover a manqué de mémoire en lisant la maquette : fermez d’autres programmes, ou exportez une plus petite partie du bâtiment.</translation>
+    </message>
+    <message>
+        <source>FloorCover imports 3D building models as .ifc, .obj, .gltf, .glb or .stl files, not as “%1” files.</source>
+        <translation>FloorCover importe les maquettes 3D de bâtiment en fichiers .ifc, .obj, .gltf, .glb ou .stl, pas en fichiers « %1 ».</translation>
+    </message>
+    <message>
+        <source>The model cannot be read (%1): export it again from the modelling program.</source>
+        <translation>La maquette ne peut pas être lue (%1) : exportez-la de nouveau depuis le logiciel de modélisation.</translation>
+    </message>
+    <message>
+        <source>The model holds no 3D shapes (meshes) to cut: export it again with its geometry.</source>
+        <translation>La maquette ne contient aucune forme 3D (maillage) à couper : exportez-la de nouveau avec sa géométrie.</translation>
+    </message>
+    <message>
+        <source>The model holds no surfaces (triangles) to cut: export it again with its geometry.</source>
+        <translation>La maquette ne contient aucune surface (triangles) à couper : exportez-la de nouveau avec sa géométrie.</translation>
+    </message>
+    <message>
+        <source>The model has more than %1 triangles, more than FloorCover imports: export only the storey you need.</source>
+        <translation>La maquette a plus de %1 triangles, plus que ce que FloorCover importe : exportez seulement l’étage dont vous avez besoin.</translation>
+    </message>
+    <message>
+        <source>The model&apos;s parts are nested more than %1 levels deep, more than FloorCover imports.</source>
+        <translation>Les parties de la maquette sont imbriquées sur plus de %1 niveaux, plus que ce que FloorCover importe.</translation>
+    </message>
+    <message>
+        <source>The model is damaged (its part “%1” refers to geometry that is missing): export it again.</source>
+        <translation>La maquette est endommagée (sa partie « %1 » renvoie à une géométrie manquante) : exportez-la de nouveau.</translation>
+    </message>
+    <message>
+        <source>The model&apos;s part “%1” has an invalid or huge coordinate: check the Unit in the Import 3D Building Model dialog.</source>
+        <translation>La partie « %1 » de la maquette a une coordonnée invalide ou énorme : vérifiez Unité dans la boîte de dialogue Importer une maquette 3D de bâtiment.</translation>
+    </message>
+    <message>
+        <source>The unit must be a positive number of metres: choose another Unit in the Import 3D Building Model dialog.</source>
+        <translation>L’unité doit être un nombre positif de mètres : choisissez une autre Unité dans la boîte de dialogue Importer une maquette 3D de bâtiment.</translation>
+    </message>
+    <message>
+        <source>“Cut above the floor” must be a positive number of metres.</source>
+        <translation>« Coupe au-dessus du sol » doit être un nombre positif de mètres.</translation>
+    </message>
+    <message>
+        <source>The model has no storey “%1” (its storeys: %2): choose one under Storey.</source>
+        <translation>La maquette n’a pas d’étage « %1 » (ses étages : %2) : choisissez-en un sous Étage.</translation>
+    </message>
+    <message>
+        <source>The cut at height %1 (%3 above the floor of storey “%2”) meets no wall: lower “Cut above the floor”, or check the Unit and the Storey.</source>
+        <translation>La coupe à la hauteur %1 (%3 au-dessus du sol de l’étage « %2 ») ne rencontre aucun mur : abaissez « Coupe au-dessus du sol », ou vérifiez l’Unité et l’Étage.</translation>
+    </message>
+    <message>
+        <source>The cut at height %1 (%3 above the floor of storey “%2”) has more than %4 wall edges, more than FloorCover imports: try another “Cut above the floor”.</source>
+        <translation>La coupe à la hauteur %1 (%3 au-dessus du sol de l’étage « %2 ») a plus de %4 arêtes de mur, plus que ce que FloorCover importe : essayez une autre « Coupe au-dessus du sol ».</translation>
+    </message>
+    <message>
+        <source>The cut at height %1 (%3 above the floor of storey “%2”) encloses no free space: the outer walls are open at that height, or the model is not closed. Try another “Cut above the floor”.</source>
+        <translation>La coupe à la hauteur %1 (%3 au-dessus du sol de l’étage « %2 ») n’enclôt aucun espace libre : les murs extérieurs sont ouverts à cette hauteur, ou la maquette n’est pas fermée. Essayez une autre « Coupe au-dessus du sol ».</translation>
+    </message>
+    <message>
+        <source>The cut at height %1 (%3 above the floor of storey “%2”) makes no valid plan: %4</source>
+        <translation>La coupe à la hauteur %1 (%3 au-dessus du sol de l’étage « %2 ») ne donne pas de plan valide : %4</translation>
+    </message>
+    <message>
+        <source>Smaller enclosed areas apart from the main floor, left out: %1 (%2 m² in all).</source>
+        <translation>Surfaces fermées plus petites que le sol principal, écartées : %1 (%2 m² en tout).</translation>
+    </message>
+    <message>
+        <source>Space “%1” has no closed outline at the cut height and is left out as a room.</source>
+        <translation>L’espace « %1 » n’a pas de contour fermé à la hauteur de coupe et n’est pas repris comme pièce.</translation>
+    </message>
+    <message>
+        <source>Room “%1” is left out: %2</source>
+        <translation>La pièce « %1 » est écartée : %2</translation>
+    </message>
+    <message>
+        <source>The map&apos;s rooms could not be separated: choose One room under “Split into rooms”, or another way to split.</source>
+        <translation>Les pièces de la carte n’ont pas pu être séparées : choisissez Une seule pièce sous « Diviser en pièces », ou une autre division.</translation>
+    </message>
 </context>
 <context>
     <name>fc::ui</name>

@@ -68,7 +68,7 @@ void BuildingImportDialogTest::slicesAndPreviewsAGeneratedRoom() {
     // Read as millimetres the walls are 2.5 mm high: a cut 0.3 m up misses them.
     dialog.unitBox()->setCurrentIndex(3);
     QVERIFY(!dialog.hasResult());
-    QVERIFY2(dialog.errorText().contains("no section"), qPrintable(dialog.errorText()));
+    QVERIFY2(dialog.errorText().contains("meets no wall"), qPrintable(dialog.errorText()));
     dialog.unitBox()->setCurrentIndex(1);
     QVERIFY(dialog.hasResult());
 }
@@ -83,7 +83,9 @@ void BuildingImportDialogTest::reportsAPlaneAboveTheWalls() {
     QVERIFY(dialog.hasResult());
     dialog.heightBox()->setValue(3.0);
     QVERIFY(!dialog.hasResult());
-    QVERIFY2(dialog.errorText().contains("no section at height 3 m"),
+    QVERIFY2(dialog.errorText().contains(
+                 "The cut at height 3 m (3 m above the floor of storey “whole model”) meets no "
+                 "wall"),
              qPrintable(dialog.errorText()));
     QVERIFY(dialog.previewScene()->items().isEmpty());
     QVERIFY(!okButton(dialog)->isEnabled());

@@ -466,6 +466,37 @@ QStringList plannerMessagesAsWorded() {
     literal("layer \"DIMENSIONS\": 12 entities ignored");
     literal("3 entities without usable 2D geometry skipped");
     literal("layer \"NOTES\": 1 open segment (2.5 m) not closed into an outline; ignored");
+    // 3D building models and separating a map's rooms.
+    literal("cannot read the file (No such file or directory)");
+    literal("the file is empty");
+    literal("the file is larger than 512 MiB");
+    literal("the model is too large");
+    literal("out of memory while reading the model");
+    literal("unsupported 3D model format \".3ds\"");
+    literal("cannot read the model: OBJ: unexpected end of file");
+    literal("the model holds no meshes");
+    literal("the model holds no triangles");
+    literal("more than 20000000 triangles");
+    literal("the node tree is deeper than 256");
+    literal("node \"Wall_01\" indexes a missing vertex");
+    literal("node \"Wall_01\" refers to a missing mesh");
+    literal("node \"Wall_01\" has a non-finite or huge coordinate");
+    literal("metres per unit must be a positive number");
+    literal("the slice height must be a positive number of metres");
+    literal("no storey \"Attic\" (the model has \"Ground floor\", \"First floor\")");
+    literal(
+        "no section at height 3 m (storey \"whole model\" floor + 3 m): the plane cuts no wall");
+    literal("the section at height 1.3 m (storey \"Ground floor\" floor + 0.3 m) has more than "
+            "400000 segments");
+    literal("the section encloses no free space (the outer walls are open at that height, or the "
+            "model is not closed) at height 0.3 m (storey \"whole model\" floor + 0.3 m)");
+    literal("the section at height 0.3 m (storey \"whole model\" floor + 0.3 m) is not a valid "
+            "plan: the boundary encloses no area");
+    literal("2 smaller enclosed region(s) left out (3.5 m^2 in all)");
+    literal("space \"Kitchen\" has no closed section");
+    literal("room \"Kitchen\" left out: room \"Kitchen\" lies outside the boundary");
+    literal("/plans/house.ifc: the model holds no meshes");
+    literal("separating the rooms failed");
     // The tiling robot.
     {
         fc::tiling::TilingRobotProfile robot;
@@ -642,6 +673,17 @@ private slots:
                                              "obstacle 1")),
                  QStringLiteral("The plan needs repair (Plan > Repair Plan, after the import): "
                                 "Obstacle 2 lies inside obstacle 1."));
+        QCOMPARE(plainMessage(QStringLiteral("room \"Kitchen\" left out: room \"Kitchen\" lies "
+                                             "outside the boundary")),
+                 QStringLiteral("Room “Kitchen” is left out: Room “Kitchen” lies outside the "
+                                "walls."));
+        QCOMPARE(
+            plainMessage(QStringLiteral("/plans/house.ifc: the section at height 0.3 m (storey "
+                                        "\"whole model\" floor + 0.3 m) is not a valid plan: "
+                                        "the boundary encloses no area")),
+            QStringLiteral("/plans/house.ifc: The cut at height 0.3 m (0.3 m above the floor "
+                           "of storey “whole model”) makes no valid plan: The outer wall "
+                           "encloses no area."));
         for (const char* unknown : {"/plans/a.geojson: something new", "a: b", "Training failed"})
             QCOMPARE(plainMessage(QLatin1String(unknown)), QLatin1String(unknown));
     }

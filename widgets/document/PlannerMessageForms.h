@@ -24,5 +24,7 @@ MessageForm messageForm(const char* pattern, const char* sentence);
 std::vector<MessageForm> planningMessageForms();
 // Reading, importing and writing files; the tiling robot.
 std::vector<MessageForm> fileMessageForms();
+// 3D building models (reading, cutting) and separating an occupancy map's rooms.
+std::vector<MessageForm> modelMessageForms();
 
 } // namespace fc::ui::messages

@@ -99,10 +99,15 @@ QString ringName(const QString& planner) {
 
 const std::vector<MessageForm>& forms() {
     static const std::vector<MessageForm> table = [] {
-        std::vector<MessageForm> all = messages::planningMessageForms();
-        std::vector<MessageForm> files = messages::fileMessageForms();
-        all.insert(all.end(), std::make_move_iterator(files.begin()),
-                   std::make_move_iterator(files.end()));
+        // The 3D model's forms first: "room \"A\" left out: room \"A\" lies outside the
+        // boundary" holds a plan check that would otherwise match the whole message.
+        std::vector<MessageForm> all = messages::modelMessageForms();
+        const auto append = [&all](std::vector<MessageForm> more) {
+            all.insert(all.end(), std::make_move_iterator(more.begin()),
+                       std::make_move_iterator(more.end()));
+        };
+        append(messages::planningMessageForms());
+        append(messages::fileMessageForms());
         for (const MessageForm& form : all) {
             form.pattern.optimize(); // compiled once, before any thread matches
             if (!form.pattern.isValid())
