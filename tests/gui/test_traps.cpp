@@ -229,6 +229,16 @@ void TrapsTest::plannerMessagesSpeakOfTheEditor() {
     }
     QCOMPARE(plainMessage(QStringLiteral("the start point lies in an obstacle")),
              QStringLiteral("the start point lies in an obstacle"));
+    // A save that fails names the file once, then says why in the editor's words.
+    {
+        Document document;
+        const QString path = QStringLiteral("/nonexistent-folder/plan.fcproj");
+        QString error;
+        QVERIFY(!saveDocument(document, path, &error));
+        QCOMPARE(error.count(path), 1);
+        QVERIFY2(error.startsWith(QStringLiteral("Cannot save ") + path), qPrintable(error));
+        QVERIFY2(!error.contains(QStringLiteral("cannot write (")), qPrintable(error));
+    }
     // Through the window: dqn without a model; the message stays when the background
     // preparation of the overlays ends after the plan failed (it cleared it).
     fc::registerDqnSolver();

@@ -74,9 +74,14 @@ bool saveDocument(Document& document, const QString& path, QString* error) {
     try {
         writeFileAtomically(path.toStdString(), writeProject(document.project()));
     } catch (const std::exception& e) {
-        if (error)
-            *error = DocumentFilesText::tr("Cannot save %1: %2")
-                         .arg(path, plainMessage(fromStd(e.what())));
+        if (error) {
+            // The planner names the file too: said once, in front.
+            QString reason = fromStd(e.what());
+            const QString named = path + QStringLiteral(": ");
+            if (reason.startsWith(named))
+                reason = reason.mid(named.size());
+            *error = DocumentFilesText::tr("Cannot save %1: %2").arg(path, plainMessage(reason));
+        }
         return false;
     }
     document.setFileName(QFileInfo(path).absoluteFilePath());
