@@ -3,6 +3,7 @@
 #include "decomposition/FloorCache.h"
 #include "decomposition/FunctionClip.h"
 #include "decomposition/SlabSweep.h"
+#include "decomposition/StripeLattice.h"
 #include "decomposition/StripePlanner.h"
 
 #include <algorithm>
@@ -108,14 +109,7 @@ std::vector<RawAdjacency> rawAdjacencies(const SlabSweep& sweep, const std::vect
 }
 
 std::vector<double> stripePositions(double x0, double x1, double w) {
-    const double width = x1 - x0;
-    const int n = std::max(1, static_cast<int>(std::ceil(width / w - 1e-9)));
-    if (n == 1)
-        return {0.5 * (x0 + x1)};
-    std::vector<double> xs(n);
-    for (int i = 0; i < n; ++i)
-        xs[i] = x0 + 0.5 * w + i * (width - w) / (n - 1);
-    return xs;
+    return detail::evenStripePositions(x0, x1, w);
 }
 
 // The x-pieces one raw cell becomes (SPEC sect. 2.3, our rule for narrow cells). The
@@ -130,8 +124,8 @@ struct PieceSpec {
     std::vector<double> stripes;
 };
 
-std::vector<PieceSpec> pieceSpecs(double x0, double x1, bool left, bool right, double w) {
-    const std::vector<double> stripes = stripePositions(x0, x1, w);
+std::vector<PieceSpec> pieceSpecs(double x0, double x1, bool left, bool right,
+                                  const std::vector<double>& stripes) {
     const size_t m = stripes.size();
     const size_t k = size_t(left) + size_t(right);
     if (k == 0)
@@ -303,6 +297,23 @@ Decomposition decompose(const Plan& plan, const DecompositionOptions& options) {
         if (raw[a.second].x0 == a.x0)
             leftCritical[a.second] = 1;
     }
+    std::vector<detail::LatticeCell> latticeCells;
+    for (const RawCell& c : raw)
+        latticeCells.push_back({c.room, c.x0, c.x1,
+                                c.ceiling.empty() ? 0.0 : c.ceiling.front().y - c.floor.front().y,
+                                c.ceiling.empty() ? 0.0 : c.ceiling.back().y - c.floor.back().y});
+    std::vector<detail::LatticeLink> latticeLinks;
+    for (const RawAdjacency& a : adj)
+        if (a.kind == Adjacency::Kind::AcrossSweep && raw[a.first].x1 == a.x0 &&
+            raw[a.second].x0 == a.x0)
+            latticeLinks.push_back({a.first, a.second, a.x0, a.y1 - a.y0});
+    detail::StripeLayout layout = detail::layOutStripes(latticeCells, latticeLinks, w);
+    out.stripeLatticeAvailable = std::any_of(layout.onLattice.begin(), layout.onLattice.end(),
+                                             [](char on) { return on != 0; });
+    if (options.stripeLattice)
+        out.stripeLattice = out.stripeLatticeAvailable;
+    else if (out.stripeLatticeAvailable)
+        layout = detail::layOutStripes(latticeCells, {}, w); // every cell on its own
 
     // Split where the clear region changes (narrow passages, spans stacked in y), cut
     // transition strips and create the final cells.
@@ -328,7 +339,7 @@ Decomposition decompose(const Plan& plan, const DecompositionOptions& options) {
         for (int c : {a.first, a.second}) {
             // Snap to the nearest midpoint of the cell's own stripe grid so that the split
             // adds no stripe (a door column would otherwise get two stripes 0.2 m apart).
-            const std::vector<double> grid = stripePositions(raw[c].x0, raw[c].x1, w);
+            const std::vector<double>& grid = layout.stripes[c];
             for (double x : {a.x0, a.x1}) {
                 double best = x, bestGap = INFINITY;
                 for (size_t k = 1; k < grid.size(); ++k) {
@@ -349,6 +360,16 @@ Decomposition decompose(const Plan& plan, const DecompositionOptions& options) {
         cuts.push_back(whole.x1);
         std::sort(cuts.begin(), cuts.end());
         cuts.erase(std::unique(cuts.begin(), cuts.end()), cuts.end());
+        // The raw cell's stripes, once: its pieces share them.
+        const std::vector<double>& grid = layout.stripes[i];
+        const bool onLattice = layout.onLattice[i];
+        auto linesIn = [&](double a, double b) {
+            std::vector<double> xs;
+            for (double x : grid)
+                if (x >= a && (x < b || (b == whole.x1 && x <= b)))
+                    xs.push_back(x);
+            return xs.empty() ? stripePositions(a, b, w) : xs;
+        };
         for (size_t seg = 0; seg + 1 < cuts.size(); ++seg) {
             RawCell r = whole;
             r.x0 = cuts[seg], r.x1 = cuts[seg + 1];
@@ -365,13 +386,14 @@ Decomposition decompose(const Plan& plan, const DecompositionOptions& options) {
                     pieces[i].push_back({c.id, c.x0, c.x1, layer, layers});
                     out.cells.push_back(std::move(c));
                 };
+                const std::vector<double> stripes =
+                    onLattice ? linesIn(part.x0, part.x1) : stripePositions(part.x0, part.x1, w);
                 if (part.layers >= 2) {
                     for (int k = 0; k < part.layers; ++k) {
                         const int id = static_cast<int>(out.cells.size());
                         add(makeCell(id, CellKind::Primary, r.room, part.x0, part.x1,
                                      k == 0 ? floor : part.pinches[k - 1],
-                                     k + 1 == part.layers ? ceiling : part.pinches[k],
-                                     stripePositions(part.x0, part.x1, w)),
+                                     k + 1 == part.layers ? ceiling : part.pinches[k], stripes),
                             k, part.layers);
                     }
                     continue;
@@ -379,7 +401,8 @@ Decomposition decompose(const Plan& plan, const DecompositionOptions& options) {
                 const bool left = part.x0 == r.x0 && leftSlice;
                 const bool right = part.x1 == r.x1 && rightSlice;
                 const bool cut = options.transitionCells && part.layers == 1;
-                for (PieceSpec& spec : pieceSpecs(part.x0, part.x1, cut && left, cut && right, w))
+                for (PieceSpec& spec :
+                     pieceSpecs(part.x0, part.x1, cut && left, cut && right, stripes))
                     add(makeCell(static_cast<int>(out.cells.size()), spec.kind, r.room, spec.x0,
                                  spec.x1, detail::clipFunction(r.floor, spec.x0, spec.x1),
                                  detail::clipFunction(r.ceiling, spec.x0, spec.x1),

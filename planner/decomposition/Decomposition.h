@@ -74,6 +74,9 @@ struct Decomposition {
     std::vector<CriticalSlice> criticalSlices;
     std::vector<UnreachableArea> unreachable;
     std::vector<Ring> freeSpace; // sweep frame: [0] boundary (ccw), then holes (cw)
+    bool stripeLattice = false;  // some cells' stripes lie on a shared lattice
+    // Whether DecompositionOptions::stripeLattice would move some cells' stripes.
+    bool stripeLatticeAvailable = false;
 
     int primaryCount() const;
     int transitionCount() const;
@@ -100,6 +103,9 @@ struct DecompositionOptions {
     RobotProfile robot = RobotProfile{1.0, 1.0, 1.0};
     double stripeAngleDeg = 90.0;
     bool transitionCells = true; // the paper's modification; off = classic BCD
+    // Wide cells meeting at an obstacle's corner share one stripe lattice
+    // (StripeLattice.h) instead of each restarting W/2 inside its edges.
+    bool stripeLattice = false;
     // Where the clearance field and derived values of a free space decomposed before are
     // taken from (FloorCache.h); null: made afresh.
     std::shared_ptr<FloorCache> floorCache;

@@ -3,12 +3,14 @@
 namespace fc {
 
 PlanStages buildPlanStages(const Plan& plan, const RobotProfile& robot, double stripeAngleDeg,
-                           bool transitionCells, const std::shared_ptr<FloorCache>& floorCache) {
+                           bool transitionCells, const std::shared_ptr<FloorCache>& floorCache,
+                           bool stripeLattice) {
     DecompositionOptions options;
     options.robot = robot;
     options.stripeAngleDeg = stripeAngleDeg;
     options.transitionCells = transitionCells;
     options.floorCache = floorCache;
+    options.stripeLattice = stripeLattice;
     PlanStages stages;
     stages.decomposition = decompose(plan, options);
     stages.graph = buildCornerGraph(stages.decomposition);

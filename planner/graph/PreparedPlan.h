@@ -21,7 +21,8 @@ struct PlanStages {
 // floorCache (optional): see DecompositionOptions::floorCache.
 PlanStages buildPlanStages(const Plan& plan, const RobotProfile& robot, double stripeAngleDeg,
                            bool transitionCells,
-                           const std::shared_ptr<FloorCache>& floorCache = nullptr);
+                           const std::shared_ptr<FloorCache>& floorCache = nullptr,
+                           bool stripeLattice = false);
 
 struct PreparedPlan {
     Plan plan; // normalized

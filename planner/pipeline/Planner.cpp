@@ -14,6 +14,7 @@
 #include <limits>
 #include <map>
 #include <queue>
+#include <set>
 #include <sstream>
 
 namespace fc {
@@ -32,15 +33,15 @@ void addClassicStages(PreparedPlan& prepared, const std::shared_ptr<FloorCache>&
 
 PreparedPlan preparePlan(const Plan& plan, const RobotProfile& robot, double stripeAngleDeg,
                          bool transitionCells, bool classicStages,
-                         const std::shared_ptr<FloorCache>& floorCache) {
+                         const std::shared_ptr<FloorCache>& floorCache, bool stripeLattice) {
     PreparedPlan prepared;
     prepared.plan = normalizedPlan(plan);
     prepared.robot = robot;
     validatePlan(prepared.plan, robot);
     if (!std::isfinite(stripeAngleDeg))
         throw InputError("the sweep angle must be a finite number of degrees");
-    PlanStages stages =
-        buildPlanStages(prepared.plan, robot, stripeAngleDeg, transitionCells, floorCache);
+    PlanStages stages = buildPlanStages(prepared.plan, robot, stripeAngleDeg, transitionCells,
+                                        floorCache, stripeLattice);
     prepared.decomposition = std::move(stages.decomposition);
     prepared.graph = std::move(stages.graph);
     if (classicStages)
@@ -545,14 +546,84 @@ void applyTouchUps(const PlanRequest& request, PlanResult& result) {
     }
 }
 
+namespace {
+
+// Where wide cells meet at an obstacle's corner, stripes on one lattice save a stripe per
+// cell (12 m on simple-diamond), or cost turns where lattice lines graze the corner: only
+// the path tells. Plans again on the lattice at the angles of `first`, and (where the sweep
+// is the planner's choice) with the free rooms turned by 90 degrees, as the per-room search
+// did; returns the best of those, if any. Only where some cell would move its stripes, and
+// only at angles `prepared` built already; not for solvers bound to their own graph.
+std::optional<PlanResult> planOnLattice(const PlanRequest& request, const PlanResult& first,
+                                        const SolveControl& control,
+                                        const PreparedPlans& prepared) {
+    static const std::vector<std::string> anyGraph{"heuristic", "greedy", "exact"};
+    if (!request.stripeLattice ||
+        std::find(anyGraph.begin(), anyGraph.end(), request.solver) == anyGraph.end())
+        return std::nullopt;
+    const std::map<std::string, double> chosen = roomAnglesOf(first, request.plan);
+    std::vector<std::map<std::string, double>> variants{chosen};
+    if (request.sweep.perRoom || request.sweep.automatic) {
+        std::map<std::string, double> turned = chosen;
+        for (auto& [room, angle] : turned)
+            if (request.sweep.automatic || request.sweep.roomAngles.count(room) == 0)
+                angle = std::fmod(angle + 90.0, 180.0);
+        variants.push_back(turned);
+    }
+    const PreparedPlans lattice(request.plan, request.robot, request.transitionCells,
+                                prepared.floorCache(), true);
+    std::optional<PlanResult> best;
+    for (const std::map<std::string, double>& angles : variants) {
+        std::set<double> distinct;
+        for (const auto& entry : angles)
+            distinct.insert(PreparedPlans::roundedAngle(entry.second));
+        bool known = true, moves = false;
+        for (double angle : distinct) {
+            known = known && prepared.asked(angle, false);
+            moves = moves ||
+                    (known && prepared.shared(angle, false)->decomposition.stripeLatticeAvailable);
+        }
+        if (!known || !moves)
+            continue;
+        PlanResult again;
+        const bool single = std::all_of(angles.begin(), angles.end(), [&](const auto& entry) {
+            return entry.second == angles.begin()->second;
+        });
+        if (single && !request.sweep.perRoom) {
+            again = planOneAngle(request, angles.begin()->second, control, &lattice);
+        } else {
+            std::map<std::string, double> all = familyAngles(request.plan, request.sweep);
+            for (const auto& [room, angle] : angles)
+                all[room] = angle;
+            again = planWithRoomAngles(request, all, control, lattice);
+        }
+        applyTouchUps(request, again);
+        if (!best || betterPlanChoice(again.metrics, best->metrics))
+            best = std::move(again);
+    }
+    return best;
+}
+
+} // namespace
+
 PlanResult planCoverage(const PlanRequest& request, const SolveControl& control,
                         const PreparedPlans* prepared) {
     const auto t0 = std::chrono::steady_clock::now();
+    std::optional<PreparedPlans> own; // shared by the first plan and the lattice's check
+    if (!prepared)
+        prepared = &own.emplace(request.plan, request.robot, request.transitionCells);
     PlanResult result = planWithoutTouchUps(request, control, prepared);
     // The candidates of a search over angles were compared with their touch-ups (a plan
     // that leaves wedges along slanted walls may be the best once they are swept); a plan of
     // one angle gets them here.
     applyTouchUps(request, result);
+    try {
+        if (std::optional<PlanResult> lattice = planOnLattice(request, result, control, *prepared))
+            if (betterPlanChoice(lattice->metrics, result.metrics))
+                result = std::move(*lattice);
+    } catch (const InputError&) {
+        // The lattice is an offer: where it cannot be planned, the first plan stands.
+    }
     result.metrics.seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     return result;

@@ -30,6 +30,9 @@ struct PlanRequest {
     std::uint64_t seed = 1;
     std::string modelPath; // for learnt solvers
     bool transitionCells = true;
+    // planCoverage also plans with stripes on a shared lattice where wide cells meet at an
+    // obstacle's corner (DecompositionOptions::stripeLattice), keeping the better path.
+    bool stripeLattice = true;
     // The path planned before the last edits (world frame; empty: none): the query's
     // orderHint follows it. The editor gives it to live replanning's quick draft, which then
     // keeps the last plan's order where that is cheaper than greedy's.
@@ -68,10 +71,11 @@ struct PlanResult {
 // Validates (throws InputError) and builds decomposition and graph for one sweep angle
 // (graph/PreparedPlan.h); with classicStages also PreparedPlan::classic.
 // floorCache (optional): what earlier preparations of the same free space built
-// (DecompositionOptions::floorCache).
+// (DecompositionOptions::floorCache). stripeLattice: DecompositionOptions::stripeLattice.
 PreparedPlan preparePlan(const Plan& plan, const RobotProfile& robot, double stripeAngleDeg,
                          bool transitionCells = true, bool classicStages = false,
-                         const std::shared_ptr<FloorCache>& floorCache = nullptr);
+                         const std::shared_ptr<FloorCache>& floorCache = nullptr,
+                         bool stripeLattice = false);
 
 // Whether the named solver plans on PreparedPlan::classic (false for unknown names).
 bool solverNeedsClassicStages(const std::string& name);

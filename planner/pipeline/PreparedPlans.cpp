@@ -8,17 +8,31 @@
 namespace fc {
 
 PreparedPlans::PreparedPlans(const Plan& plan, const RobotProfile& robot, bool transitionCells,
-                             std::shared_ptr<FloorCache> floorCache)
-    : plan_(plan), robot_(robot), transitionCells_(transitionCells),
+                             std::shared_ptr<FloorCache> floorCache, bool stripeLattice)
+    : plan_(plan), robot_(robot), transitionCells_(transitionCells), stripeLattice_(stripeLattice),
       floorCache_(floorCache ? std::move(floorCache) : std::make_shared<FloorCache>()) {}
 
 double PreparedPlans::roundedAngle(double angleDeg) {
     return std::isfinite(angleDeg) ? std::round(angleDeg * 1e9) / 1e9 : angleDeg;
 }
 
+bool PreparedPlans::asked(double angleDeg, bool classicStages) const {
+    if (!std::isfinite(angleDeg))
+        return false;
+    std::lock_guard<std::mutex> lock(mutex_);
+    return built_.count(
+               std::make_tuple(std::llround(roundedAngle(angleDeg) * 1e9), classicStages)) > 0;
+}
+
 PreparedPlan PreparedPlans::at(double angleDeg, bool classicStages) const {
+    return *shared(angleDeg, classicStages);
+}
+
+std::shared_ptr<const PreparedPlan> PreparedPlans::shared(double angleDeg,
+                                                          bool classicStages) const {
     if (!std::isfinite(angleDeg)) // preparePlan's own error
-        return preparePlan(plan_, robot_, angleDeg, transitionCells_, classicStages);
+        return std::make_shared<const PreparedPlan>(
+            preparePlan(plan_, robot_, angleDeg, transitionCells_, classicStages));
     const double angle = roundedAngle(angleDeg);
     const auto key = std::make_tuple(std::llround(angle * 1e9), classicStages);
     std::promise<std::shared_ptr<const PreparedPlan>> promise;
@@ -38,12 +52,13 @@ PreparedPlan PreparedPlans::at(double angleDeg, bool classicStages) const {
     if (builder) {
         try {
             promise.set_value(std::make_shared<const PreparedPlan>(
-                preparePlan(plan_, robot_, angle, transitionCells_, classicStages, floorCache_)));
+                preparePlan(plan_, robot_, angle, transitionCells_, classicStages, floorCache_,
+                            stripeLattice_)));
         } catch (...) {
             promise.set_exception(std::current_exception());
         }
     }
-    return *built.get();
+    return built.get();
 }
 
 } // namespace fc

@@ -21,18 +21,26 @@ public:
     // replanning) while the document moves on. floorCache: what plans of the same floor
     // prepared before built from its free space (the editor passes one cache to the plans
     // of every edit); null: a cache of its own, shared by its angles.
+    // stripeLattice: DecompositionOptions::stripeLattice for every angle.
     PreparedPlans(const Plan& plan, const RobotProfile& robot, bool transitionCells,
-                  std::shared_ptr<FloorCache> floorCache = nullptr);
+                  std::shared_ptr<FloorCache> floorCache = nullptr, bool stripeLattice = false);
 
     const Plan& plan() const { return plan_; }
     const RobotProfile& robot() const { return robot_; }
     bool transitionCells() const { return transitionCells_; }
+    bool stripeLattice() const { return stripeLattice_; }
+    const std::shared_ptr<FloorCache>& floorCache() const { return floorCache_; }
 
     // A copy of the plan prepared at the angle rounded to 1e-9 degrees (so that 7.15 + 90
     // and 97.15 share one build, and a plan does not depend on which caller built it
     // first). Built on first use; concurrent callers of one angle wait for that build.
     // Throws what preparePlan throws, to every caller of that angle.
     PreparedPlan at(double angleDeg, bool classicStages) const;
+    // The same without the copy.
+    std::shared_ptr<const PreparedPlan> shared(double angleDeg, bool classicStages) const;
+
+    // Whether at(angleDeg, classicStages) was asked for before (built or being built).
+    bool asked(double angleDeg, bool classicStages) const;
 
     // The angle at() prepares for angleDeg.
     static double roundedAngle(double angleDeg);
@@ -42,6 +50,7 @@ private:
     Plan plan_;
     RobotProfile robot_;
     bool transitionCells_;
+    bool stripeLattice_;
     std::shared_ptr<FloorCache> floorCache_;
     mutable std::mutex mutex_;
     mutable std::map<std::tuple<long long, bool>, Built> built_;

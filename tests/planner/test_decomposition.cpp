@@ -1,5 +1,6 @@
 #include "TestPlans.h"
 #include "decomposition/Decomposition.h"
+#include "decomposition/StripeLattice.h"
 
 #include <algorithm>
 #include <cmath>
@@ -198,4 +199,66 @@ TEST(Decomposition, NarrowCellRuleIsDeterministic) {
             ++narrow;
         }
     EXPECT_EQ(narrow, 4);
+}
+
+// Issue 13: wide cells meeting at the corner of a rotated box keep one lattice W apart;
+// restarting W/2 inside every cell's edge added a stripe per cell (114 m instead of 102 m on
+// shared/plans/simple-diamond).
+TEST(StripeLattice, WideCellsAtAnObstacleCornerShareOneLattice) {
+    Plan p;
+    p.boundary = rectangle(0, 0, 12, 8);
+    p.obstacles = {{{6.2, 2.4}, {7.6, 3.7}, {6.0, 5.6}, {4.5, 4.0}}};
+    DecompositionOptions o;
+    o.stripeAngleDeg = 0.0; // stripes along the 12 m walls: 8 lanes across the 8 m
+    auto lanes = [&](bool lattice) {
+        o.stripeLattice = lattice;
+        const Decomposition d = decompose(p, o);
+        EXPECT_TRUE(d.stripeLatticeAvailable);
+        EXPECT_EQ(d.stripeLattice, lattice);
+        std::vector<double> xs;
+        for (const Cell& c : d.cells)
+            xs.insert(xs.end(), c.stripes.begin(), c.stripes.end());
+        std::sort(xs.begin(), xs.end());
+        xs.erase(std::unique(xs.begin(), xs.end(),
+                             [](double a, double b) { return std::abs(a - b) < 1e-9; }),
+                 xs.end());
+        return xs;
+    };
+    const std::vector<double> shared = lanes(true);
+    ASSERT_EQ(shared.size(), 8u);
+    for (size_t k = 0; k < shared.size(); ++k)
+        EXPECT_NEAR(shared[k], 0.5 + k, 1e-9);
+    EXPECT_GT(lanes(false).size(), shared.size()); // each cell W/2 inside its own edges
+}
+
+TEST(StripeLattice, CellsKeepTheirOwnStripesWhereTheLatticeWouldNotHold) {
+    using detail::LatticeCell;
+    using detail::LatticeLink;
+    const double w = 1.0;
+    // Two wide cells of one room meeting along the whole slice: one lattice, 12 stripes
+    // instead of 5 + 8.
+    const std::vector<LatticeCell> open{{0, 0.0, 4.5, 8, 8}, {0, 4.5, 12.0, 8, 8}};
+    const detail::StripeLayout shared = detail::layOutStripes(open, {{0, 1, 4.5, 8}}, w);
+    EXPECT_TRUE(shared.onLattice[0] && shared.onLattice[1]);
+    EXPECT_EQ(shared.stripes[0].size() + shared.stripes[1].size(), 12u);
+    EXPECT_NEAR(shared.stripes[1].front(), 4.5, 1e-12);
+    EXPECT_NEAR(shared.stripes[1].back(), 11.5, 1e-12);
+    // An obstacle's flank takes 2 m of the slice: the first cell needs its own last stripe.
+    const detail::StripeLayout flank = detail::layOutStripes(open, {{0, 1, 4.5, 6}}, w);
+    EXPECT_FALSE(flank.onLattice[0] || flank.onLattice[1]);
+    EXPECT_EQ(flank.stripes[0], detail::evenStripePositions(0.0, 4.5, w));
+    // Different rooms (their lattices start at their own walls), or a narrow cell.
+    const std::vector<LatticeCell> rooms{{0, 0.0, 4.5, 8, 8}, {1, 4.5, 12.0, 8, 8}};
+    EXPECT_FALSE(detail::layOutStripes(rooms, {{0, 1, 4.5, 8}}, w).onLattice[0]);
+    const std::vector<LatticeCell> narrow{{0, 0.0, 4.5, 8, 8}, {0, 4.5, 5.9, 8, 8}};
+    EXPECT_FALSE(detail::layOutStripes(narrow, {{0, 1, 4.5, 8}}, w).onLattice[0]);
+    // Consecutive stripes are never more than W apart, lattice or not.
+    for (const detail::StripeLayout& layout : {shared, flank}) {
+        std::vector<double> all;
+        for (const auto& s : layout.stripes)
+            all.insert(all.end(), s.begin(), s.end());
+        std::sort(all.begin(), all.end());
+        for (size_t k = 1; k < all.size(); ++k)
+            EXPECT_LE(all[k] - all[k - 1], w + 1e-12);
+    }
 }

@@ -1,0 +1,122 @@
+#include "decomposition/StripeLattice.h"
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <map>
+
+namespace fc::detail {
+namespace {
+
+// Cells narrower than this many W keep their own stripes: beside pillars and in wedges
+// their stripes move to where the robot fits, which would leave gaps in a lattice.
+constexpr double kLatticeMinWidth = 2.0;
+// A side counts as open when walls take at most this share of W of its height.
+constexpr double kOpenWallTolerance = 0.05;
+
+// Lattice lines origin + W/2 + kW inside the cell; at a side that is not open, a stripe
+// W/2 inside it unless a lattice line is there already.
+std::vector<double> latticePositions(double x0, double x1, double w, bool leftOpen, bool rightOpen,
+                                     double origin) {
+    const double eps = 1e-9 * w, tol = 1e-3 * w;
+    const double lo = leftOpen ? x0 - eps : x0 + 0.5 * w - tol;
+    const double hi = rightOpen ? x1 - eps : x1 - 0.5 * w + tol;
+    const double first = origin + 0.5 * w;
+    std::vector<double> xs;
+    for (double k = std::ceil((lo - first) / w); first + k * w <= hi; k += 1)
+        if (first + k * w >= lo)
+            xs.push_back(first + k * w);
+    if (!leftOpen && (xs.empty() || xs.front() > x0 + 0.5 * w + tol))
+        xs.insert(xs.begin(), x0 + 0.5 * w);
+    if (!rightOpen && (xs.empty() || xs.back() < x1 - 0.5 * w - tol))
+        xs.push_back(x1 - 0.5 * w);
+    if (xs.empty())
+        xs.push_back(0.5 * (x0 + x1));
+    return xs;
+}
+
+} // namespace
+
+std::vector<double> evenStripePositions(double x0, double x1, double w) {
+    const double width = x1 - x0;
+    const int n = std::max(1, static_cast<int>(std::ceil(width / w - 1e-9)));
+    if (n == 1)
+        return {0.5 * (x0 + x1)};
+    std::vector<double> xs(n);
+    for (int i = 0; i < n; ++i)
+        xs[i] = x0 + 0.5 * w + i * (width - w) / (n - 1);
+    return xs;
+}
+
+StripeLayout layOutStripes(const std::vector<LatticeCell>& cells,
+                           const std::vector<LatticeLink>& links, double w) {
+    const size_t n = cells.size();
+    // A side is open where neighbours share (almost) all of it, within one room, both
+    // cells wide, and the neighbour's facing side is open too.
+    std::vector<double> leftShared(n, 0.0), rightShared(n, 0.0);
+    std::vector<char> leftLinked(n, 0), rightLinked(n, 0);
+    for (const LatticeLink& l : links) {
+        rightShared[l.left] += l.length, rightLinked[l.left] = 1;
+        leftShared[l.right] += l.length, leftLinked[l.right] = 1;
+    }
+    std::vector<char> leftOpen(n, 0), rightOpen(n, 0);
+    for (size_t i = 0; i < n; ++i) {
+        const bool wide = cells[i].x1 - cells[i].x0 >= kLatticeMinWidth * w;
+        leftOpen[i] =
+            wide && leftLinked[i] && cells[i].leftHeight - leftShared[i] <= kOpenWallTolerance * w;
+        rightOpen[i] = wide && rightLinked[i] &&
+                       cells[i].rightHeight - rightShared[i] <= kOpenWallTolerance * w;
+    }
+    std::vector<char> leftKeep = leftOpen, rightKeep = rightOpen;
+    for (const LatticeLink& l : links) {
+        if (!(rightOpen[l.left] && leftOpen[l.right] && cells[l.left].room == cells[l.right].room))
+            rightKeep[l.left] = 0, leftKeep[l.right] = 0;
+    }
+    leftOpen = leftKeep, rightOpen = rightKeep;
+
+    // Each room's lattice starts W/2 inside its first wall.
+    std::map<int, double> roomStart;
+    for (const LatticeCell& c : cells) {
+        auto [it, inserted] = roomStart.emplace(c.room, c.x0);
+        if (!inserted)
+            it->second = std::min(it->second, c.x0);
+    }
+    // Cells joined through open sides share the lattice; a group takes it only where it
+    // saves stripes over spacing each cell evenly.
+    std::vector<int> parent(n);
+    for (size_t i = 0; i < n; ++i)
+        parent[i] = static_cast<int>(i);
+    std::function<int(int)> find = [&](int i) {
+        return parent[i] == i ? i : parent[i] = find(parent[i]);
+    };
+    for (const LatticeLink& l : links)
+        if (rightOpen[l.left] && leftOpen[l.right])
+            parent[find(l.left)] = find(l.right);
+    StripeLayout out;
+    out.stripes.resize(n);
+    out.onLattice.assign(n, 0);
+    std::vector<std::vector<double>> even(n);
+    std::map<int, std::pair<size_t, size_t>> counts; // group -> lattice, even stripes
+    for (size_t i = 0; i < n; ++i) {
+        const LatticeCell& c = cells[i];
+        even[i] = evenStripePositions(c.x0, c.x1, w);
+        if (leftOpen[i] || rightOpen[i])
+            out.stripes[i] =
+                latticePositions(c.x0, c.x1, w, leftOpen[i], rightOpen[i], roomStart[c.room]);
+        else
+            out.stripes[i] = even[i];
+        auto& [latticeCount, evenCount] = counts[find(static_cast<int>(i))];
+        latticeCount += out.stripes[i].size();
+        evenCount += even[i].size();
+    }
+    for (size_t i = 0; i < n; ++i) {
+        const auto& [latticeCount, evenCount] = counts[find(static_cast<int>(i))];
+        if (latticeCount < evenCount && (leftOpen[i] || rightOpen[i]))
+            out.onLattice[i] = 1;
+        else
+            out.stripes[i] = std::move(even[i]);
+    }
+    return out;
+}
+
+} // namespace fc::detail

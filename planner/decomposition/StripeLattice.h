@@ -1,0 +1,37 @@
+// Where a raw cell's stripes go. By default evenly, the first and last W/2 inside the cell's
+// ends. Where wide cells of one room meet at an obstacle's corner (a slice of zero wall
+// height), their stripes instead continue one lattice W apart across the slice: restarting
+// W/2 from every cell's edge would add a stripe per cell, 12 m on a 12 x 8 m hall with a
+// rotated box in it.
+#pragma once
+
+#include <vector>
+
+namespace fc::detail {
+
+// Evenly spaced stripes in [x0, x1], the first and last W/2 inside (one in the middle when
+// the cell is at most W wide).
+std::vector<double> evenStripePositions(double x0, double x1, double w);
+
+struct LatticeCell {
+    int room = 0;
+    double x0 = 0, x1 = 0;
+    double leftHeight = 0, rightHeight = 0; // ceiling - floor at x0 and x1
+};
+
+// Two raw cells sharing a piece of a slice: `left` ends at x, `right` starts there.
+struct LatticeLink {
+    int left = -1, right = -1;
+    double x = 0;
+    double length = 0; // of the shared piece
+};
+
+struct StripeLayout {
+    std::vector<std::vector<double>> stripes; // per raw cell
+    std::vector<char> onLattice;              // stripes on the room's lattice
+};
+
+StripeLayout layOutStripes(const std::vector<LatticeCell>& cells,
+                           const std::vector<LatticeLink>& links, double w);
+
+} // namespace fc::detail
