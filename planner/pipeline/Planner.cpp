@@ -552,13 +552,17 @@ namespace {
 // cell (12 m on simple-diamond), or cost turns where lattice lines graze the corner: only
 // the path tells. Plans again on the lattice at the angles of `first`, and (where the sweep
 // is the planner's choice) with the free rooms turned by 90 degrees, as the per-room search
-// did; returns the best of those, if any. Only where some cell would move its stripes, and
-// only at angles `prepared` built already; not for solvers bound to their own graph.
+// did; returns the best of those, if any. Only where some cell would move its stripes, only
+// at angles `prepared` built already and on floors of at most 60 rooms; not for solvers bound
+// to their own graph.
 std::optional<PlanResult> planOnLattice(const PlanRequest& request, const PlanResult& first,
                                         const SolveControl& control,
                                         const PreparedPlans& prepared) {
     static const std::vector<std::string> anyGraph{"heuristic", "greedy", "exact"};
-    if (!request.stripeLattice ||
+    // Planning a second time is what the per-room search affords on floors it searches; a
+    // 1,000-room floor would take half as long again (8 s to 13 s).
+    constexpr size_t kLatticeMaxRooms = 60;
+    if (!request.stripeLattice || request.plan.rooms.size() > kLatticeMaxRooms ||
         std::find(anyGraph.begin(), anyGraph.end(), request.solver) == anyGraph.end())
         return std::nullopt;
     const std::map<std::string, double> chosen = roomAnglesOf(first, request.plan);
