@@ -7,6 +7,7 @@
 #include "geometry/OpenRegions.h"
 #include "geometry/SegmentIndex.h"
 
+#include <atomic>
 #include <cmath>
 #include <memory>
 #include <mutex>
@@ -72,6 +73,7 @@ private:
     BoundingBox extent_;
     mutable std::once_flag regionsBuilt_;
     mutable std::unique_ptr<OpenRegions> regions_;
+    mutable std::atomic<bool> regionsReady_{false}; // regions_ built
 };
 
 } // namespace fc
