@@ -26,6 +26,14 @@ constexpr double kTieTolerance = 1e-6;
 // Screened candidates that miss at most this share of the floor (before touch-ups) rank by
 // estimated time.
 constexpr double kScreenedLoss = 0.02;
+// On floors of many cells, a complete screened candidate this much slower than the best
+// complete one is not planned again: there greedy's ranking holds (ward, 132 cells, and
+// office: the requested solver gains 6-8% over greedy on every candidate), and each finalist
+// costs a whole solve (on the ward a third of its planning time). On small floors greedy
+// ranks poorly (generated star rooms and slanted rooms: winners screened up to 25% slower)
+// and every solve is quick, so all finalists are planned.
+constexpr double kFinalistSlack = 1.15;
+constexpr int kFinalistSlackMinCells = 100;
 
 double normalizedAngle(double deg) {
     return std::fmod(std::fmod(deg, 180.0) + 180.0, 180.0);
@@ -481,45 +489,68 @@ PlanResult planPerRoom(const PlanRequest& request, const SolveControl& control,
     // Progress: the screening is the first half, the finalists the second.
     const double candidates =
         2.0 + static_cast<double>(std::min(groups.size(), kPerRoomSearchLimit));
-    double screenedCount = 0.0;
     auto report = [&control](double fraction) {
         if (control.progress)
             control.progress(fraction);
     };
-    auto screen = [&](const std::map<std::string, double>& candidate) {
-        throwIfCancelled(control);
-        report(0.5 * screenedCount++ / candidates);
-        for (const Screened& previous : screened) {
+    // The distinct candidates, screened side by side (each plan is independent; results are
+    // kept in candidate order, so the choice does not depend on which finishes first).
+    std::vector<std::map<std::string, double>> candidateAngles;
+    auto addCandidate = [&](const std::map<std::string, double>& candidate) {
+        for (const auto& previous : candidateAngles) {
             bool same = true;
             for (const auto& [room, angle] : candidate)
-                same = same && angleDistance(angle, previous.angles.at(room)) < 0.5;
+                same = same && angleDistance(angle, previous.at(room)) < 0.5;
             if (same)
                 return;
         }
-        try {
-            screened.push_back(
-                {candidate, planWithRoomAngles(screening, candidate, control, prepared).metrics});
-        } catch (const InputError&) {
-            // e.g. one group's rooms cannot be reached from the start at its angle
-        }
+        candidateAngles.push_back(candidate);
     };
-    screen(family);
-    screen(walls);
+    addCandidate(family);
+    addCandidate(walls);
     for (size_t g = 0; g < groups.size() && g < kPerRoomSearchLimit; ++g) {
         std::map<std::string, double> turned = walls;
         for (auto& [room, angle] : turned)
             if (free(room) && angleDistance(walls.at(room), groups[g].first) < 0.5)
                 angle = normalizedAngle(angle + 90.0);
-        screen(turned);
+        addCandidate(turned);
     }
+    throwIfCancelled(control);
+    std::vector<std::future<std::optional<Metrics>>> screenings;
+    SolveControl screeningControl;
+    screeningControl.cancelled = control.cancelled;
+    for (const auto& candidate : candidateAngles)
+        screenings.push_back(std::async(std::launch::async, [&screening, &prepared, candidate,
+                                                             screeningControl]() {
+            try {
+                return std::optional<Metrics>(
+                    planWithRoomAngles(screening, candidate, screeningControl, prepared).metrics);
+            } catch (const InputError&) {
+                // e.g. one group's rooms cannot be reached from the start at its angle
+                return std::optional<Metrics>();
+            }
+        }));
+    std::exception_ptr screeningFailure;
+    for (size_t i = 0; i < screenings.size(); ++i) {
+        try {
+            if (std::optional<Metrics> metrics = screenings[i].get())
+                screened.push_back({candidateAngles[i], *metrics});
+        } catch (...) { // cancelled: every screening is waited for first
+            if (!screeningFailure)
+                screeningFailure = std::current_exception();
+        }
+        report(0.5 * static_cast<double>(i + 1) / candidates);
+    }
+    if (screeningFailure)
+        std::rethrow_exception(screeningFailure);
     // Screened without wall touch-ups (they take longer than the plan on ragged maps): what
     // they would sweep, wedges along walls the stripes miss, is no reason to drop a
     // candidate, so misses up to kScreenedLoss of the floor count as complete here. The
     // finalists are compared with their touch-ups.
-    std::stable_sort(screened.begin(), screened.end(), [](const Screened& a, const Screened& b) {
-        const auto complete = [](const Metrics& m) {
-            return m.uncoveredArea <= kScreenedLoss * m.requiredArea;
-        };
+    const auto complete = [](const Metrics& m) {
+        return m.uncoveredArea <= kScreenedLoss * m.requiredArea;
+    };
+    std::stable_sort(screened.begin(), screened.end(), [&](const Screened& a, const Screened& b) {
         if (complete(a.metrics) != complete(b.metrics))
             return complete(a.metrics);
         if (!complete(a.metrics))
@@ -533,7 +564,11 @@ PlanResult planPerRoom(const PlanRequest& request, const SolveControl& control,
         bool isFamily = true;
         for (const auto& [room, angle] : screened[i].angles)
             isFamily = isFamily && angleDistance(angle, family.at(room)) < 0.5;
-        if (!isFamily)
+        const Metrics& best = screened.front().metrics;
+        const bool hopeless = best.cells >= kFinalistSlackMinCells && complete(best) &&
+                              complete(screened[i].metrics) &&
+                              screened[i].metrics.time > kFinalistSlack * best.time;
+        if (!isFamily && !hopeless)
             finalists.push_back(screened[i].angles);
     }
     SolveControl quiet;
