@@ -22,7 +22,8 @@ commands:
   plan PLAN     plan a coverage path; prints one JSON line of metrics
                 [--width W] [--robot-diameter L] [--cleaning-diameter D] [--speed V]
                 [--turn-time S] [--angle per-room|auto|DEG] [--rooms A,B] [--start X,Y] [--end X,Y]
-                [--solver exact|heuristic|greedy|dqn|reeb-cpp|adjacency-ga] [--model FILE]
+                [--solver exact|heuristic|greedy|dqn|reeb-cpp|adjacency-ga|
+                adjacency-ga-centres] [--model FILE]
                 [--seed N] [--out FILE] [--strict]
                 (--robot-diameter L, default 0.6: the robot is a disc; its centre keeps L/2
                 from walls, so passages at least L wide are driven and swept)

@@ -6,7 +6,7 @@
 namespace fc {
 
 bool isBaselineSolver(const std::string& name) {
-    return name == "reeb-cpp" || name == "adjacency-ga";
+    return name == "reeb-cpp" || name == "adjacency-ga" || name == "adjacency-ga-centres";
 }
 
 std::vector<BaselineRatio>

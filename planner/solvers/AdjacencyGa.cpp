@@ -1,4 +1,4 @@
-// adjacency-ga (Tung & Liu 2019), as the paper describes it: the adjacency graph of the
+// adjacency-ga-centres (Tung & Liu 2019 as the first paper reads it): the adjacency graph of the
 // classic decomposition's cells, a genetic algorithm for the travelling-salesman order of the
 // cells with four entry/exit options per cell (start at any corner; the stripe parity fixes
 // the exit), transits between cells that are not neighbours through the centres of the cells
@@ -15,7 +15,7 @@ namespace {
 
 using namespace baseline_detail;
 
-constexpr const char* kName = "adjacency-ga";
+constexpr const char* kName = "adjacency-ga-centres";
 
 // One way to cover a cell: its boustrophedon from one of the four corners.
 struct CoverOption {

@@ -4,7 +4,8 @@
 //   (minimum-weight perfect matching of odd nodes), cells on duplicated edges covered in two
 //   halves (top half on the first pass, bottom half on the second), back to the start
 //   (Mannadiar & Rekleitis 2010; Xu et al. 2014);
-// * adjacency-ga: cell adjacency graph, genetic-algorithm TSP over cells with four entry/exit
+// * adjacency-ga-centres: cell adjacency graph, genetic-algorithm TSP over cells with four
+// entry/exit
 //   options per cell, the start cell first, transits between cells that are not neighbours
 //   through the centres of the cells on the way (the one left and the one entered included),
 //   back to the start (Tung & Liu 2019).
@@ -19,10 +20,18 @@
 
 namespace fc {
 
-// Both throw SolverError when no collision-free tour exists.
+// `adjacency-ga` itself is the independent implementation of Tung & Liu's own code
+// (baselines/TungLiu.h, adapted by solveTungLiuGa); adjacency-ga-centres keeps the reading
+// of the first paper above.
+//
+// All throw SolverError when no collision-free tour exists.
 Solution solveReebPostman(const PreparedPlan& prepared, const Query& query);
 // Cancellable between generations (SolverError when control.cancelled() says so).
 Solution solveAdjacencyGa(const PreparedPlan& prepared, const Query& query,
                           const SolveControl& control = {});
+// adjacency-ga: the query's rooms, start and end planned by baselines/TungLiu.h (GA); the
+// path as Solution::directPath. Cancellable between generations.
+Solution solveTungLiuGa(const PreparedPlan& prepared, const Query& query,
+                        const SolveControl& control = {});
 
 } // namespace fc

@@ -21,7 +21,7 @@ Registry& registry() {
 } // namespace
 
 std::vector<RegisteredSolver> builtInSolvers() {
-    std::vector<RegisteredSolver> solvers(5);
+    std::vector<RegisteredSolver> solvers(6);
     solvers[0].name = "exact";
     solvers[0].solve = [](const PreparedPlan& prepared, const Query& query, const std::string&,
                           const SolveControl& control) {
@@ -45,9 +45,14 @@ std::vector<RegisteredSolver> builtInSolvers() {
     solvers[4].name = "adjacency-ga";
     solvers[4].solve = [](const PreparedPlan& prepared, const Query& query, const std::string&,
                           const SolveControl& control) {
+        return solveTungLiuGa(prepared, query, control);
+    };
+    solvers[5].name = "adjacency-ga-centres";
+    solvers[5].solve = [](const PreparedPlan& prepared, const Query& query, const std::string&,
+                          const SolveControl& control) {
         return solveAdjacencyGa(prepared, query, control);
     };
-    solvers[4].classicStages = true;
+    solvers[5].classicStages = true;
     return solvers;
 }
 

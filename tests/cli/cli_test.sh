@@ -123,11 +123,11 @@ check "compare --json" cli compare "$plans/simple.geojson" --json
 check "compare --json lines parse" python3 -c "
 import json; lines = [json.loads(l) for l in open('$work/last')]
 assert {l['solver'] for l in lines[:-1]} >= {'heuristic', 'reeb-cpp', 'adjacency-ga'}
-assert {r['baseline'] for r in lines[-1]['ratios']} == {'reeb-cpp', 'adjacency-ga'}"
+assert {r['baseline'] for r in lines[-1]['ratios']} == {'reeb-cpp', 'adjacency-ga', 'adjacency-ga-centres'}"
 
 # The paper's baselines plan like any solver.
 for plan in simple room-obstacle office; do
-  for solver in reeb-cpp adjacency-ga; do
+  for solver in reeb-cpp adjacency-ga adjacency-ga-centres; do
     check "plan $plan $solver" cli plan "$plans/$plan.geojson" --solver "$solver" --out "$work/$plan-$solver.csv"
     check "metrics $plan $solver" metrics_ok
   done

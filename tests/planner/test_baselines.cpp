@@ -185,11 +185,11 @@ TEST(Baselines, ReebPostmanCoversACellItCrossesTwiceInTwoHalves) {
     EXPECT_GT(reeb.metrics.turns, ga.metrics.turns) << "the halves' turns in the middle";
 }
 
-TEST(Baselines, AdjacencyGaCoversItsStartCellFirst) {
+TEST(Baselines, AdjacencyGaCentresCoversItsStartCellFirst) {
     // As a TSP tour from its start node: on `simple` (12 x 8 m, a 2 x 2 m obstacle at
     // x = 5..7) the start cell is the classic cell left of the obstacle; all five of its
     // stripes (x = 0.5 .. 4.5) come before the robot first goes right of x = 5.
-    PlanRequest r = requestFor("simple", "adjacency-ga");
+    PlanRequest r = requestFor("simple", "adjacency-ga-centres");
     const PlanResult res = planCoverage(r);
     const auto& pts = res.path.points;
     const auto firstRight =

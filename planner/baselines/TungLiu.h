@@ -1,0 +1,65 @@
+// adjacency-ga as Tung & Liu published it (GA-TSPCPP), written apart from the planner: its
+// own classic Boustrophedon decomposition (no transition cells), its own boustrophedon in
+// each cell (stripes W apart, connectors along the cell's floor and ceiling, nothing
+// pruned), transits as shortest paths on a visibility graph of the walls grown by the
+// robot's clearance (Boost.Graph), four entry/exit options per cell (start corner x
+// direction) and a seeded genetic algorithm over cell order and options (order crossover,
+// option mutation). planDp is their dynamic programme over cells x options for the same
+// model: the optimum the GA is measured against.
+//
+// Independence: the files of this folder include only the plan model (model/), the plain
+// geometry (geometry/Geometry.h) and each other; tests/planner/test_baseline_independence
+// checks it. Nothing of the planner's decomposition, graph, solvers or path building.
+#pragma once
+
+#include "geometry/Geometry.h"
+#include "model/CoveragePath.h"
+#include "model/Plan.h"
+
+#include <cstdint>
+#include <functional>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace fc::tungliu {
+
+struct Options {
+    double width = 1.0;           // W: stripe spacing
+    double clearance = 0.3;       // L/2: how far the robot centre keeps from walls
+    double stripeAngleDeg = 90.0; // stripe direction in the world frame
+    std::uint64_t seed = 1;
+    int population = 80;
+    int generations = 10000;         // at most
+    int stallGenerations = 1000;     // stops after this many without a better tour
+    std::function<bool()> cancelled; // checked between generations; may be empty
+};
+
+struct Tour {
+    CoveragePath path;        // world frame, from the start to the end point
+    double length = 0.0;      // of path
+    std::vector<int> order;   // the cells in visiting order
+    std::vector<int> options; // per visited cell: 0..3 (bit 0: right to left, bit 1: down first)
+    int cells = 0;            // cells of the decomposition
+    int unreachableCells = 0; // cells where no stripe keeps the clearance (left out)
+    double modelCost = 0.0;   // the tour's length in the GA/DP model (== length)
+};
+
+// No tour: nothing to cover, a cell the robot cannot reach, or cancelled.
+class TourError : public std::runtime_error {
+public:
+    using std::runtime_error::runtime_error;
+};
+
+// rooms: the names of the rooms to cover; empty: the whole floor. start, end: world frame,
+// free points the robot fits at.
+Tour planGa(const Plan& plan, const std::vector<std::string>& rooms, Vec2 start, Vec2 end,
+            const Options& options);
+
+// The same model solved exactly (Held-Karp over visited cells x last cell x option); nullopt
+// when the rooms decompose into more than maxCells cells.
+std::optional<Tour> planDp(const Plan& plan, const std::vector<std::string>& rooms, Vec2 start,
+                           Vec2 end, const Options& options, int maxCells = 16);
+
+} // namespace fc::tungliu
