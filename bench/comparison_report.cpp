@@ -1,11 +1,11 @@
 // floorcover-comparison-report: every solver, the paper's two baselines included, on every
 // sample plan, with the paper's ratios beside ours, as Markdown.
 //   floorcover-comparison-report > docs/comparison.md
-#include "baselines/TungLiu.h"
+#include "baselines/IndependentBaselines.h"
 #include "formats/PlanIO.h"
 #include "pipeline/Comparison.h"
 #include "pipeline/Planner.h"
-#include "solvers/PerfectMatching.h"
+#include "baselines/PerfectMatching.h"
 
 #include <algorithm>
 #include <chrono>
@@ -86,8 +86,8 @@ PlanRun runPlan(const std::string& name) {
             run.splits.push_back({solver, splitOf(result.path)});
             if (solver == "adjacency-ga" && !result.path.empty()) {
                 // The same query (whole floor, its angle, start and end) solved by the GA
-                // and by the DP of baselines/TungLiu.h.
-                tungliu::Options options;
+                // and by the DP of baselines/IndependentBaselines.h.
+                baselines::Options options;
                 options.width = request.robot.coverageWidth;
                 options.clearance = 0.5 * request.robot.robotDiameter;
                 options.stripeAngleDeg = result.stripeAngleDeg;
@@ -95,13 +95,13 @@ PlanRun runPlan(const std::string& name) {
                 const Vec2 start = result.path.points.front(), end = result.path.points.back();
                 DpRow row;
                 auto t0 = std::chrono::steady_clock::now();
-                const tungliu::Tour ga = tungliu::planGa(request.plan, {}, start, end, options);
+                const baselines::Tour ga = baselines::planTungLiuGa(request.plan, {}, start, end, options);
                 row.gaSeconds = secondsSince(t0);
                 row.ga = ga.modelCost;
                 row.cells = ga.cells - ga.unreachableCells;
                 t0 = std::chrono::steady_clock::now();
                 if (const auto dp =
-                        tungliu::planDp(request.plan, {}, start, end, options, kDpMaxCells))
+                        baselines::planTungLiuDp(request.plan, {}, start, end, options, kDpMaxCells))
                     row.dp = dp->modelCost;
                 row.dpSeconds = secondsSince(t0);
                 run.dp = row;
@@ -201,7 +201,7 @@ void printDpTable(const std::vector<PlanRun>& runs) {
     std::printf("## adjacency-ga against its dynamic programme\n\n");
     std::printf("The query `adjacency-ga` answered above (its sweep angle, start and end, the "
                 "whole floor) solved by its genetic algorithm and by the dynamic programme over "
-                "cells x options of the same model (`tungliu::planDp`, Held-Karp, run up to %d "
+                "cells x options of the same model (`baselines::planTungLiuDp`, Held-Karp, run up to %d "
                 "cells). Lengths are the model's tour lengths.\n\n",
                 kDpMaxCells);
     std::printf("| plan | cells | GA m | DP m | GA over DP | GA s | DP s |\n"
@@ -328,20 +328,21 @@ int main() {
         "with the least extra distance (`exact` where it runs; the DQN needs a trained model "
         "per plan and is not included).\n\n");
     std::printf(
-        "The baselines: `reeb-cpp` plans on our classic Boustrophedon decomposition (no "
-        "transition cells): the Reeb graph with a Chinese Postman tour whose odd nodes are "
-        "paired by an exact minimum-weight perfect matching at every size (a dynamic "
-        "programme up to %d odd nodes, LEMON's Edmonds blossom above), cells on duplicated "
-        "edges covered as a top half, then a bottom half. `adjacency-ga` is Tung & Liu's own "
-        "method written apart from the planner (`planner/baselines/`, which includes nothing "
-        "of ours below the plan model; a test checks it): its own classic decomposition, "
-        "stripes W apart with connectors along each cell's floor and ceiling, transits as "
-        "shortest paths on a visibility graph of the walls grown by L/2 (Boost.Graph), four "
-        "entry/exit options per cell and a seeded genetic algorithm (order crossover, swap "
-        "and inversion, option mutation). `adjacency-ga-centres` is the first paper's "
-        "reading of it on our classic decomposition: transits through the centres of the "
-        "cells on the way. All return to the start.\n\n",
-        fc::baseline_detail::kExactMatchingLimit);
+        "The baselines: `reeb-cpp` and `adjacency-ga` are written apart from the planner "
+        "(`planner/baselines/`, which includes nothing of ours below the plan model; a test "
+        "follows its includes). Both plan on their own classic Boustrophedon decomposition (no "
+        "transition cells), stripes W apart with connectors along each cell's floor and "
+        "ceiling, and transits as shortest paths on a visibility graph of the walls grown by "
+        "L/2 (Boost.Graph). `reeb-cpp`: the Reeb graph (cells as edges between the slices "
+        "where cells meet) with a Chinese Postman tour whose odd nodes are paired by an exact "
+        "minimum-weight perfect matching at every size (a dynamic programme up to %d odd "
+        "nodes, LEMON's Edmonds blossom above), a cell on a duplicated edge covered as its top "
+        "half on the first pass and its bottom half on the second. `adjacency-ga`: Tung & "
+        "Liu's four entry/exit options per cell and a seeded genetic algorithm (order "
+        "crossover, swap and inversion, option mutation). `adjacency-ga-centres` is the first "
+        "paper's reading of Tung & Liu on our classic decomposition: transits through the "
+        "centres of the cells on the way. All return to the start.\n\n",
+        fc::baselines::kExactMatchingLimit);
     printSummary(runs);
     printDpTable(runs);
     printTargetPlans(runs);

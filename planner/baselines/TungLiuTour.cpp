@@ -1,14 +1,14 @@
 // The Tung & Liu tour over the model's cells: a genetic algorithm over the cell order and
 // each cell's option (order crossover, swap and inversion mutation, option mutation, elitism;
 // seeded), and their dynamic programme (Held-Karp) as the exact reference.
-#include "baselines/TungLiuModel.h"
+#include "baselines/BaselineModel.h"
 
 #include <algorithm>
 #include <cstdint>
 #include <numeric>
 #include <random>
 
-namespace fc::tungliu {
+namespace fc::baselines {
 namespace detail {
 
 namespace {
@@ -264,18 +264,18 @@ Tour solveDp(const Model& m) {
 
 } // namespace detail
 
-Tour planGa(const Plan& plan, const std::vector<std::string>& rooms, Vec2 start, Vec2 end,
-            const Options& options) {
+Tour planTungLiuGa(const Plan& plan, const std::vector<std::string>& rooms, Vec2 start, Vec2 end,
+                   const Options& options) {
     const detail::Model model = detail::buildModel(plan, rooms, start, end, options);
     return detail::solveGa(model, options);
 }
 
-std::optional<Tour> planDp(const Plan& plan, const std::vector<std::string>& rooms, Vec2 start,
-                           Vec2 end, const Options& options, int maxCells) {
+std::optional<Tour> planTungLiuDp(const Plan& plan, const std::vector<std::string>& rooms,
+                                  Vec2 start, Vec2 end, const Options& options, int maxCells) {
     const detail::Model model = detail::buildModel(plan, rooms, start, end, options);
     if (static_cast<int>(model.cells.size()) > std::min(maxCells, 24))
         return std::nullopt;
     return detail::solveDp(model);
 }
 
-} // namespace fc::tungliu
+} // namespace fc::baselines

@@ -40,8 +40,9 @@ std::vector<RegisteredSolver> builtInSolvers() {
                           const SolveControl&) { return solveGreedy(prepared.graph, query); };
     solvers[3].name = "reeb-cpp";
     solvers[3].solve = [](const PreparedPlan& prepared, const Query& query, const std::string&,
-                          const SolveControl&) { return solveReebPostman(prepared, query); };
-    solvers[3].classicStages = true;
+                          const SolveControl& control) {
+        return solveReebPostman(prepared, query, control);
+    };
     solvers[4].name = "adjacency-ga";
     solvers[4].solve = [](const PreparedPlan& prepared, const Query& query, const std::string&,
                           const SolveControl& control) {

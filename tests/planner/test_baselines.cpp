@@ -8,7 +8,7 @@
 #include "model/SyntheticPlans.h"
 #include "pipeline/Comparison.h"
 #include "pipeline/Planner.h"
-#include "solvers/PerfectMatching.h"
+#include "baselines/PerfectMatching.h"
 
 #include <algorithm>
 #include <cmath>
@@ -17,7 +17,7 @@
 #include <string>
 
 using namespace fc;
-using namespace fc::baseline_detail;
+using namespace fc::baselines;
 
 namespace {
 

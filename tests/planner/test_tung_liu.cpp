@@ -1,7 +1,7 @@
-// The independent adjacency-ga (baselines/TungLiu.h): independent of the planner below the
+// The independent adjacency-ga (baselines/IndependentBaselines.h): independent of the planner below the
 // plan model, its GA against its own dynamic programme, and its answers through the
 // pipeline.
-#include "baselines/TungLiu.h"
+#include "baselines/IndependentBaselines.h"
 #include "formats/PlanIO.h"
 #include "pipeline/Planner.h"
 
@@ -19,8 +19,8 @@ Plan samplePlan(const std::string& name) {
     return loadProjectFile(std::string(FC_PLANS_DIR) + "/" + name + ".geojson").plan;
 }
 
-tungliu::Options defaultOptions() {
-    tungliu::Options o;
+baselines::Options defaultOptions() {
+    baselines::Options o;
     o.width = 1.0;
     o.clearance = 0.3;
     o.stripeAngleDeg = 90.0;
@@ -73,9 +73,9 @@ TEST(TungLiu, GeneticAlgorithmReachesItsDynamicProgrammeOnSmallPlans) {
         const Vec2 corner = plan.bounds().minX < INFINITY
                                 ? Vec2{plan.bounds().minX + 0.5, plan.bounds().minY + 0.5}
                                 : Vec2{};
-        const tungliu::Tour ga = tungliu::planGa(plan, {}, corner, corner, defaultOptions());
-        const std::optional<tungliu::Tour> dp =
-            tungliu::planDp(plan, {}, corner, corner, defaultOptions(), 16);
+        const baselines::Tour ga = baselines::planTungLiuGa(plan, {}, corner, corner, defaultOptions());
+        const std::optional<baselines::Tour> dp =
+            baselines::planTungLiuDp(plan, {}, corner, corner, defaultOptions(), 16);
         ASSERT_TRUE(dp) << name << ": " << ga.cells << " cells";
         EXPECT_GE(ga.modelCost, dp->modelCost - 1e-3) << name << ": the DP is optimal";
         EXPECT_LE(ga.modelCost, dp->modelCost * 1.02) << name;
@@ -96,12 +96,12 @@ TEST(TungLiu, GeneticAlgorithmWithinTwoPercentOfItsDynamicProgramme) {
           {"S01", "S02", "S03", "N01", "N02", "N03", "Corridor"},
           {"S04", "S05", "S06", "N04", "N05", "N06", "Corridor"}}) {
         const Vec2 p{1, 1};
-        const std::optional<tungliu::Tour> dp =
-            tungliu::planDp(office, rooms, p, p, defaultOptions(), 16);
+        const std::optional<baselines::Tour> dp =
+            baselines::planTungLiuDp(office, rooms, p, p, defaultOptions(), 16);
         if (!dp)
             continue;
         ++compared;
-        const tungliu::Tour ga = tungliu::planGa(office, rooms, p, p, defaultOptions());
+        const baselines::Tour ga = baselines::planTungLiuGa(office, rooms, p, p, defaultOptions());
         EXPECT_GE(ga.modelCost, dp->modelCost - 1e-3);
         EXPECT_LE(ga.modelCost, dp->modelCost * 1.02) << ga.cells << " cells";
         std::printf("%zu rooms, %d cells: GA %.2f m, DP %.2f m\n", rooms.size(), ga.cells,
@@ -113,23 +113,23 @@ TEST(TungLiu, GeneticAlgorithmWithinTwoPercentOfItsDynamicProgramme) {
 TEST(TungLiu, SeededAndCancellable) {
     const Plan plan = samplePlan("room-obstacle");
     const Vec2 p{0.5, 0.5};
-    const tungliu::Tour a = tungliu::planGa(plan, {}, p, p, defaultOptions());
-    const tungliu::Tour b = tungliu::planGa(plan, {}, p, p, defaultOptions());
+    const baselines::Tour a = baselines::planTungLiuGa(plan, {}, p, p, defaultOptions());
+    const baselines::Tour b = baselines::planTungLiuGa(plan, {}, p, p, defaultOptions());
     EXPECT_EQ(a.path.points, b.path.points);
-    tungliu::Options cancelled = defaultOptions();
+    baselines::Options cancelled = defaultOptions();
     cancelled.cancelled = [] { return true; };
-    EXPECT_THROW(tungliu::planGa(plan, {}, p, p, cancelled), tungliu::TourError);
+    EXPECT_THROW(baselines::planTungLiuGa(plan, {}, p, p, cancelled), baselines::TourError);
     // Above the DP's size limit there is no reference rather than a wrong one.
     EXPECT_FALSE(
-        tungliu::planDp(samplePlan("office"), {}, Vec2{1, 1}, Vec2{1, 1}, defaultOptions(), 16));
+        baselines::planTungLiuDp(samplePlan("office"), {}, Vec2{1, 1}, Vec2{1, 1}, defaultOptions(), 16));
 }
 
 // A room subset: only the chosen rooms' floor is swept, every transit stays clear.
 TEST(TungLiu, RoomSubsetsSweepOnlyTheirRooms) {
     const Plan plan = samplePlan("office");
-    const tungliu::Tour all = tungliu::planGa(plan, {}, Vec2{1, 1}, Vec2{1, 1}, defaultOptions());
-    const tungliu::Tour some =
-        tungliu::planGa(plan, {"S01", "N03"}, Vec2{1, 1}, Vec2{1, 1}, defaultOptions());
+    const baselines::Tour all = baselines::planTungLiuGa(plan, {}, Vec2{1, 1}, Vec2{1, 1}, defaultOptions());
+    const baselines::Tour some =
+        baselines::planTungLiuGa(plan, {"S01", "N03"}, Vec2{1, 1}, Vec2{1, 1}, defaultOptions());
     EXPECT_LT(some.cells, all.cells);
     EXPECT_LT(some.length, 0.5 * all.length);
     EXPECT_GT(some.length, 10.0);

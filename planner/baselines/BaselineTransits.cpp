@@ -2,14 +2,14 @@
 // Dijkstra) whose nodes sit just outside the walls' corners, grown by the clearance, so that
 // a path bends around a corner at the clearance, as around the grown obstacles of their
 // implementation.
-#include "baselines/TungLiuModel.h"
+#include "baselines/BaselineModel.h"
 
 #include <algorithm>
 #include <boost/graph/adjacency_list.hpp>
 #include <boost/graph/dijkstra_shortest_paths.hpp>
 #include <cmath>
 
-namespace fc::tungliu::detail {
+namespace fc::baselines::detail {
 
 struct Transits::Graph {
     using Type =
@@ -221,4 +221,4 @@ Polyline Transits::route(Vec2 p, Vec2 q) const {
     return Polyline(reversed.rbegin(), reversed.rend());
 }
 
-} // namespace fc::tungliu::detail
+} // namespace fc::baselines::detail

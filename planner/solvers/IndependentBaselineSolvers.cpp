@@ -1,15 +1,21 @@
-// The solver `adjacency-ga`: the corner-graph query handed to the independent Tung & Liu
-// implementation (baselines/TungLiu.h) as what it is, rooms and points; its path comes back
-// as the solution's direct path. Only this adapter knows both sides.
-#include "baselines/TungLiu.h"
+// The solvers `adjacency-ga` and `reeb-cpp`: the corner-graph query handed to the
+// independent baselines (baselines/IndependentBaselines.h) as what it is, rooms and points;
+// their path comes back as the solution's direct path. Only this adapter knows both sides.
+#include "baselines/IndependentBaselines.h"
 #include "solvers/Baselines.h"
 
 #include <algorithm>
+#include <functional>
 
 namespace fc {
 
-Solution solveTungLiuGa(const PreparedPlan& prepared, const Query& query,
-                        const SolveControl& control) {
+namespace {
+
+using Planner = std::function<baselines::Tour(const Plan&, const std::vector<std::string>&, Vec2,
+                                              Vec2, const baselines::Options&)>;
+
+Solution solveIndependently(const char* name, const Planner& plan, const PreparedPlan& prepared,
+                            const Query& query, const SolveControl& control) {
     const Decomposition& dec = prepared.decomposition;
     const CornerGraph& graph = prepared.graph;
     std::vector<std::string> rooms;
@@ -25,10 +31,10 @@ Solution solveTungLiuGa(const PreparedPlan& prepared, const Query& query,
             everyRoom = false;
     }
     if (rooms.empty())
-        throw SolverError("adjacency-ga: no required cells");
+        throw SolverError(std::string(name) + ": no required cells");
     if (everyRoom || prepared.plan.rooms.empty())
         rooms.clear(); // the whole floor
-    tungliu::Options options;
+    baselines::Options options;
     options.width = prepared.robot.coverageWidth;
     options.clearance = 0.5 * prepared.robot.robotDiameter;
     options.stripeAngleDeg = dec.frame.stripeAngleDeg();
@@ -36,10 +42,10 @@ Solution solveTungLiuGa(const PreparedPlan& prepared, const Query& query,
     options.cancelled = control.cancelled;
     const Vec2 start = dec.frame.toWorld(graph.nodes[query.startNode].position);
     const Vec2 end = dec.frame.toWorld(graph.nodes[query.endNode].position);
-    tungliu::Tour tour;
+    baselines::Tour tour;
     try {
-        tour = tungliu::planGa(prepared.plan, rooms, start, end, options);
-    } catch (const tungliu::TourError& e) {
+        tour = plan(prepared.plan, rooms, start, end, options);
+    } catch (const baselines::TourError& e) {
         throw SolverError(e.what());
     }
     DirectPath direct;
@@ -47,9 +53,21 @@ Solution solveTungLiuGa(const PreparedPlan& prepared, const Query& query,
         direct.path.points.push_back(dec.frame.toLocal(p));
     direct.path.kinds = tour.path.kinds;
     Solution s;
-    s.solver = "adjacency-ga";
+    s.solver = name;
     s.directPath = std::move(direct);
     return s;
+}
+
+} // namespace
+
+Solution solveTungLiuGa(const PreparedPlan& prepared, const Query& query,
+                        const SolveControl& control) {
+    return solveIndependently("adjacency-ga", baselines::planTungLiuGa, prepared, query, control);
+}
+
+Solution solveReebPostman(const PreparedPlan& prepared, const Query& query,
+                          const SolveControl& control) {
+    return solveIndependently("reeb-cpp", baselines::planReebPostman, prepared, query, control);
 }
 
 } // namespace fc

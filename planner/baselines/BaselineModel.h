@@ -2,12 +2,12 @@
 // along +y): cells, their four boustrophedon options, and the transits between points.
 #pragma once
 
-#include "baselines/TungLiu.h"
+#include "baselines/IndependentBaselines.h"
 
 #include <array>
 #include <memory>
 
-namespace fc::tungliu::detail {
+namespace fc::baselines::detail {
 
 // Shortest collision-free travel between points: a visibility graph over nodes placed just
 // outside the walls' corners, grown by the clearance.
@@ -26,6 +26,7 @@ public:
     double distance(int from, int to) const; // INFINITY when none
     Polyline path(int from, int to) const;   // from..to; empty when none
     // Shortest path between two arbitrary points (not registered); empty when none.
+    // Not safe to call from two threads at once.
     Polyline route(Vec2 p, Vec2 q) const;
 
 private:
@@ -49,14 +50,22 @@ struct CoverOption {
     int entry = -1, exit = -1; // registered transit points
 };
 
+struct Stripe {
+    double x = 0;
+    Interval span; // where the robot centre runs on it
+};
+
 struct Cell {
     double x0 = 0, x1 = 0;
+    std::vector<Stripe> stripes; // left to right
     std::array<CoverOption, 4> options;
 };
 
 struct Model {
     Frame frame;
     std::vector<Cell> cells; // the reachable ones
+    // Cells that meet across a slice where one of them begins (left cell, right cell).
+    std::vector<std::pair<int, int>> links;
     int cellCount = 0;
     int unreachable = 0;
     std::unique_ptr<Transits> transits;
@@ -77,4 +86,4 @@ Tour assembleTour(const Model& model, const std::vector<int>& order,
 Tour solveGa(const Model& model, const Options& options);
 Tour solveDp(const Model& model);
 
-} // namespace fc::tungliu::detail
+} // namespace fc::baselines::detail

@@ -1,4 +1,4 @@
-#include "solvers/PerfectMatching.h"
+#include "baselines/PerfectMatching.h"
 
 #include <algorithm>
 #include <cstdint>
@@ -8,7 +8,7 @@
 #include <stdexcept>
 #include <tuple>
 
-namespace fc::baseline_detail {
+namespace fc::baselines {
 
 std::vector<int> exactPerfectMatching(const std::vector<std::vector<double>>& cost) {
     const int n = static_cast<int>(cost.size());
@@ -110,4 +110,4 @@ double matchingCost(const std::vector<std::vector<double>>& cost, const std::vec
     return total;
 }
 
-} // namespace fc::baseline_detail
+} // namespace fc::baselines

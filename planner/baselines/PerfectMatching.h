@@ -7,7 +7,7 @@
 
 #include <vector>
 
-namespace fc::baseline_detail {
+namespace fc::baselines {
 
 // Above this many points the dynamic programme (2^n states) gives way to the blossom
 // algorithm; both are exact.
@@ -30,4 +30,4 @@ std::vector<int> greedyPerfectMatching(const std::vector<std::vector<double>>& c
 
 double matchingCost(const std::vector<std::vector<double>>& cost, const std::vector<int>& mate);
 
-} // namespace fc::baseline_detail
+} // namespace fc::baselines

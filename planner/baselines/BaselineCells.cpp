@@ -2,7 +2,7 @@
 // space (slabs between the vertices' slices, joined where a slab's piece continues into
 // exactly one piece of the next and that piece comes from it alone) and each cell's four
 // boustrophedons. Boost.Geometry restricts the floor to the chosen rooms.
-#include "baselines/TungLiuModel.h"
+#include "baselines/BaselineModel.h"
 
 // Boost.Geometry's envelope code trips GCC 12's -Wmaybe-uninitialized (a false positive
 // inside the library); silence it for this file only.
@@ -15,7 +15,7 @@
 #include <cmath>
 #include <map>
 
-namespace fc::tungliu::detail {
+namespace fc::baselines::detail {
 namespace {
 
 namespace bg = boost::geometry;
@@ -102,7 +102,8 @@ struct CellShape {
     }
 };
 
-std::vector<CellShape> decompose(const std::vector<Ring>& rings, std::vector<Edge>& edges) {
+std::vector<CellShape> decompose(const std::vector<Ring>& rings, std::vector<Edge>& edges,
+                                 std::vector<std::pair<int, int>>& links) {
     std::vector<double> xs;
     for (const Ring& ring : rings)
         for (std::size_t i = 0; i < ring.size(); ++i) {
@@ -138,8 +139,8 @@ std::vector<CellShape> decompose(const std::vector<Ring>& rings, std::vector<Edg
     for (std::size_t s = 0; s < slabs.size(); ++s)
         for (Trapezoid& t : slabs[s]) {
             int continues = -1;
+            std::vector<int> left;
             if (s > 0) {
-                std::vector<int> left;
                 for (int k = 0; k < static_cast<int>(slabs[s - 1].size()); ++k)
                     if (overlap(slabs[s - 1][k], t))
                         left.push_back(k);
@@ -155,6 +156,8 @@ std::vector<CellShape> decompose(const std::vector<Ring>& rings, std::vector<Edg
             if (continues < 0) {
                 continues = static_cast<int>(cells.size());
                 cells.emplace_back();
+                for (int k : left)
+                    links.push_back({slabs[s - 1][k].cell, continues});
             }
             t.cell = continues;
             cells[continues].pieces.push_back(t);
@@ -249,8 +252,11 @@ Model buildModel(const Plan& plan, const std::vector<std::string>& rooms, Vec2 s
     Transits& transits = *model.transits;
 
     std::vector<Edge> edges;
-    const std::vector<CellShape> shapes = decompose(regionRings(plan, rooms, model.frame), edges);
+    std::vector<std::pair<int, int>> links;
+    const std::vector<CellShape> shapes =
+        decompose(regionRings(plan, rooms, model.frame), edges, links);
     model.cellCount = static_cast<int>(shapes.size());
+    std::vector<int> kept(shapes.size(), -1); // shape -> model cell
     for (const CellShape& shape : shapes) {
         Cell cell;
         cell.x0 = shape.pieces.front().xa, cell.x1 = shape.pieces.back().xb;
@@ -273,6 +279,8 @@ Model buildModel(const Plan& plan, const std::vector<std::string>& rooms, Vec2 s
             ++model.unreachable;
             continue;
         }
+        for (const auto& [x, span] : stripes)
+            cell.stripes.push_back({x, span});
         for (int o = 0; o < 4; ++o) {
             const bool rightToLeft = o & 1, downFirst = o & 2;
             std::vector<std::pair<double, Interval>> order = stripes;
@@ -304,12 +312,16 @@ Model buildModel(const Plan& plan, const std::vector<std::string>& rooms, Vec2 s
             option.entry = transits.addPoint(option.points.front());
             option.exit = transits.addPoint(option.points.back());
         }
+        kept[&shape - shapes.data()] = static_cast<int>(model.cells.size());
         model.cells.push_back(std::move(cell));
     }
+    for (const auto& [a, b] : links)
+        if (kept[a] >= 0 && kept[b] >= 0)
+            model.links.push_back({kept[a], kept[b]});
     model.start = transits.addPoint(model.frame.toLocal(start));
     model.end = transits.addPoint(model.frame.toLocal(end));
     transits.solve();
     return model;
 }
 
-} // namespace fc::tungliu::detail
+} // namespace fc::baselines::detail
