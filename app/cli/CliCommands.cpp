@@ -240,7 +240,7 @@ void printRatios(const std::vector<BaselineRatio>& ratios, bool json) {
     std::printf("\nthe paper's ratios (ours = %s, the least extra distance):\n",
                 ratios.front().ours.c_str());
     for (const BaselineRatio& r : ratios)
-        std::printf("  vs %-13s extra %6.1f%%  turns %6.1f%%   (paper: %s)\n", r.baseline.c_str(),
+        std::printf("  vs %-20s extra %6.1f%%  turns %6.1f%%   (paper: %s)\n", r.baseline.c_str(),
                     100.0 * r.extraRatio, 100.0 * r.turnsRatio,
                     paperRatiosText(r.baseline).c_str());
 }
@@ -265,7 +265,7 @@ int commandCompare(const Arguments& args) {
         throw InputError(path + ": " + e.what());
     }
     if (!json)
-        std::printf("%-14s %10s %10s %10s %6s %9s %10s %11s %9s\n", "solver", "length_m", "ideal_m",
+        std::printf("%-20s %10s %10s %10s %6s %9s %10s %11s %9s\n", "solver", "length_m", "ideal_m",
                     "extra_m", "turns", "coverage", "time_s", "graph_cost", "seconds");
     int failures = 0;
     std::vector<std::pair<std::string, Metrics>> answered;
@@ -278,7 +278,7 @@ int commandCompare(const Arguments& args) {
             if (json)
                 std::cout << metricsJsonLine(solver, m) << std::endl;
             else
-                std::printf("%-14s %10.2f %10.2f %10.2f %6d %8.2f%% %10.1f %11.3f %9.3f\n",
+                std::printf("%-20s %10.2f %10.2f %10.2f %6d %8.2f%% %10.1f %11.3f %9.3f\n",
                             solver.c_str(), m.length, m.ideal, m.extra, m.turns, 100.0 * m.coverage,
                             m.time, m.graphCost, m.seconds);
         } catch (const SolverError& e) {
@@ -287,7 +287,7 @@ int commandCompare(const Arguments& args) {
                 std::cout << "{\"solver\":\"" << solver << "\",\"error\":\"" << e.what() << "\"}"
                           << std::endl;
             else
-                std::printf("%-14s refused: %s\n", solver.c_str(), e.what());
+                std::printf("%-20s refused: %s\n", solver.c_str(), e.what());
         } catch (const InputError& e) {
             throw InputError(path + ": " + e.what());
         }
