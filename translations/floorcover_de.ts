@@ -3290,6 +3290,18 @@ Abdeckungspfadplanung für Reinigungs- und Desinfektionsroboter.</translation>
         <source>there is no valid plan to load the model for</source>
         <translation>es gibt keinen gültigen Plan, für den das Modell geladen werden könnte</translation>
     </message>
+    <message>
+        <source>Policy gap (%)</source>
+        <translation>Abstand der Strategie (%)</translation>
+    </message>
+    <message>
+        <source>Policy alone, % above the reference</source>
+        <translation>Strategie allein, % über der Referenz</translation>
+    </message>
+    <message>
+        <source> · policy alone %1 % above the reference</source>
+        <translation> · Strategie allein %1 % über der Referenz</translation>
+    </message>
 </context>
 <context>
     <name>fc::ui::Translations</name>

@@ -3290,6 +3290,18 @@ Planification de trajets de couverture pour robots de nettoyage et de désinfect
         <source>there is no valid plan to load the model for</source>
         <translation>il n’y a pas de plan valide pour lequel charger le modèle</translation>
     </message>
+    <message>
+        <source>Policy gap (%)</source>
+        <translation>Écart de la politique (%)</translation>
+    </message>
+    <message>
+        <source>Policy alone, % above the reference</source>
+        <translation>Politique seule, % au-dessus de la référence</translation>
+    </message>
+    <message>
+        <source> · policy alone %1 % above the reference</source>
+        <translation> · politique seule %1 % au-dessus de la référence</translation>
+    </message>
 </context>
 <context>
     <name>fc::ui::Translations</name>

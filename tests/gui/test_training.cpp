@@ -74,6 +74,8 @@ void TrainingDockTest::trainsPausesResumesAndSaves() {
     }
     QVERIFY2(dock.plottedPoints() >= 20, "no reward points on the plot");
     QVERIFY(dock.plot()->graph(1)->dataCount() >= 20); // moving average too
+    // The policy alone was measured where training started: what training buys shows.
+    QTRY_VERIFY_WITH_TIMEOUT(dock.plottedEvaluations() >= 1, 10000);
     QVERIFY2(worst < 1000, qPrintable(QString("event loop blocked for %1 ms").arg(worst)));
 
     dock.pause();
@@ -325,6 +327,8 @@ void TrainingDockTest::progressSaysDoneWhenTheBudgetIsSpent() {
     QTRY_COMPARE_WITH_TIMEOUT(bar->value(), bar->maximum(), 10000);
     QVERIFY2(!bar->text().contains(QStringLiteral("left")), qPrintable(bar->text()));
     QVERIFY2(bar->text().startsWith(QStringLiteral("Done")), qPrintable(bar->text()));
+    // The policy gap where training started and where the budget left it, on its own axis.
+    QTRY_VERIFY_WITH_TIMEOUT(dock.plottedEvaluations() >= 2, 10000);
 }
 
 QTEST_MAIN(TrainingDockTest)

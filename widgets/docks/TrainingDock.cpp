@@ -18,12 +18,13 @@
 #include <QVBoxLayout>
 #include <cmath>
 #include <cstdio>
+#include <optional>
 #include <qcustomplot.h>
 
 namespace fc::ui {
 namespace {
 
-constexpr int kRewardGraph = 0, kAverageGraph = 1, kLossGraph = 2, kEpsilonGraph = 3;
+constexpr int kRewardGraph = 0, kAverageGraph = 1, kLossGraph = 2, kEpsilonGraph = 3, kGapGraph = 4;
 
 QString minutesAndSeconds(double seconds) {
     const int s = static_cast<int>(std::lround(std::max(0.0, seconds)));
@@ -110,6 +111,15 @@ void TrainingDock::buildUi() {
     QCPGraph* epsilon = plot_->addGraph(plot_->xAxis, plot_->yAxis2);
     epsilon->setName(tr("Epsilon"));
     epsilon->setPen(QPen(QColor(120, 120, 120), 1, Qt::DashLine));
+    // What training buys: the policy alone on the model's fixed test queries, on its own axis.
+    QCPAxis* gapAxis = plot_->axisRect()->addAxis(QCPAxis::atRight);
+    gapAxis->setLabel(tr("Policy gap (%)"));
+    gapAxis->setLabelColor(QColor(40, 140, 60));
+    gapAxis->setTickLabelColor(QColor(40, 140, 60));
+    QCPGraph* gap = plot_->addGraph(plot_->xAxis, gapAxis);
+    gap->setName(tr("Policy alone, % above the reference"));
+    gap->setPen(QPen(QColor(40, 140, 60), 2));
+    gap->setScatterStyle(QCPScatterStyle(QCPScatterStyle::ssCircle, QColor(40, 140, 60), 6));
     layout->addWidget(plot_, 1);
 
     auto* files = new QHBoxLayout;
@@ -269,27 +279,38 @@ void TrainingDock::stop() {
 void TrainingDock::appendPoints(const QVariantList& values) {
     if (values.isEmpty())
         return;
-    TrainingPoint last;
+    std::optional<TrainingPoint> last;
     for (const QVariant& value : values) {
         const auto p = value.value<TrainingPoint>();
-        last = p;
         const double x = static_cast<double>(p.episode);
+        if (!std::isnan(p.policyGap)) {
+            plot_->graph(kGapGraph)->addData(x, p.policyGap);
+            lastGap_ = p.policyGap;
+        }
+        if (std::isnan(p.reward))
+            continue; // an evaluation only
+        last = p;
         plot_->graph(kRewardGraph)->addData(x, p.reward);
         plot_->graph(kAverageGraph)->addData(x, p.average);
         if (!std::isnan(p.loss))
             plot_->graph(kLossGraph)->addData(x, p.loss);
         plot_->graph(kEpsilonGraph)->addData(x, p.epsilon);
     }
-    episodes_ = last.episode;
-    lastSeconds_ = last.seconds;
     plot_->rescaleAxes();
     plot_->replot(QCustomPlot::rpQueuedReplot);
-    updateProgress(last.seconds);
-    status_->setText(tr("Episode %1 · %2 steps/s · epsilon %3 · average reward %4")
-                         .arg(last.episode)
-                         .arg(last.stepsPerSecond, 0, 'f', 0)
-                         .arg(last.epsilon, 0, 'f', 2)
-                         .arg(last.average, 0, 'f', 3));
+    if (!last)
+        return;
+    episodes_ = last->episode;
+    lastSeconds_ = last->seconds;
+    updateProgress(last->seconds);
+    QString text = tr("Episode %1 · %2 steps/s · epsilon %3 · average reward %4")
+                       .arg(last->episode)
+                       .arg(last->stepsPerSecond, 0, 'f', 0)
+                       .arg(last->epsilon, 0, 'f', 2)
+                       .arg(last->average, 0, 'f', 3);
+    if (lastGap_)
+        text += tr(" · policy alone %1 % above the reference").arg(*lastGap_, 0, 'f', 1);
+    status_->setText(text);
 }
 
 void TrainingDock::updateProgress(double seconds) {
@@ -409,6 +430,7 @@ QString TrainingDock::cacheModelPath() const {
 void TrainingDock::clearPlot() {
     for (int i = 0; i < plot_->graphCount(); ++i)
         plot_->graph(i)->data()->clear();
+    lastGap_.reset();
     plot_->replot();
     progress_->setValue(0);
     progress_->setFormat(tr("%p%"));
@@ -416,6 +438,10 @@ void TrainingDock::clearPlot() {
 
 int TrainingDock::plottedPoints() const {
     return plot_->graph(kRewardGraph)->dataCount();
+}
+
+int TrainingDock::plottedEvaluations() const {
+    return plot_->graph(kGapGraph)->dataCount();
 }
 
 void TrainingDock::setState(State state) {

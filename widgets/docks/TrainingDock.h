@@ -47,6 +47,8 @@ public:
     long episodes() const { return episodes_; }
     QCustomPlot* plot() const { return plot_; }
     int plottedPoints() const;
+    // Points of the policy-gap curve (evaluations of the policy alone while training).
+    int plottedEvaluations() const;
     QString lastError() const { return lastError_; }
     bool evaluating() const { return evaluating_; }
     const std::optional<TrainingEvaluation>& lastEvaluation() const { return lastEvaluation_; }
@@ -103,6 +105,7 @@ private:
     double lastSeconds_ = 0.0;
     bool evaluating_ = false;
     std::optional<TrainingEvaluation> lastEvaluation_;
+    std::optional<double> lastGap_; // the latest policy gap on the curve, percent
 
     QComboBox* setting_ = nullptr;
     QDoubleSpinBox* budget_ = nullptr;

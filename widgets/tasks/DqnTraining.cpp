@@ -6,16 +6,44 @@
 #include <QCoreApplication>
 #include <QElapsedTimer>
 #include <QVariant>
+#include <algorithm>
+#include <cmath>
+#include <limits>
 #include <stdexcept>
 
 namespace fc::ui {
 namespace {
+
+// Evaluations of the policy alone per run, and the least training time between two.
+constexpr double kEvaluations = 20.0;
+constexpr double kMinEvaluationSeconds = 10.0;
+
+// The policy alone on the trainer's test queries (percent above the reference); NaN when
+// cancelled meanwhile.
+double policyGap(DqnTrainer& trainer, TaskFeedback& feedback) {
+    try {
+        return 100.0 * trainer.evaluate(feedback.solveControl()).meanGap;
+    } catch (const SolverError&) { // cancelled: the training loop stops next
+        return std::numeric_limits<double>::quiet_NaN();
+    }
+}
 
 TrainingRun trainLocked(DqnSession& session, double seconds, TaskFeedback& feedback) {
     if (!session.trainer)
         throw InputError("there is no model to continue");
     QElapsedTimer clock;
     clock.start();
+    const double evaluationEvery = std::max(kMinEvaluationSeconds, seconds / kEvaluations);
+    double nextEvaluation = 0.0; // the first episode: where training starts from
+    // A point of the gap curve alone (posted after the episode's point, so that the reward
+    // curve and the progress never wait for an evaluation).
+    auto postGap = [&](long episode) {
+        const double nan = std::numeric_limits<double>::quiet_NaN();
+        TrainingPoint point{episode, 0, 0.0, nan, nan, nan, nan, 0.0};
+        point.policyGap = policyGap(*session.trainer, feedback);
+        if (!std::isnan(point.policyGap))
+            feedback.post(QVariant::fromValue(point));
+    };
     TrainingStop stop = TrainingStop::TimeLimit;
     try {
         stop = session.trainer->train(
@@ -25,8 +53,14 @@ TrainingRun trainLocked(DqnSession& session, double seconds, TaskFeedback& feedb
                     TrainingPoint{p.episode, p.totalSteps, p.elapsedSeconds, p.reward,
                                   p.movingAverage, p.loss, p.epsilon, p.stepsPerSecond}));
                 feedback.setProgress(clock.elapsed() / (1000.0 * seconds));
+                if (clock.elapsed() / 1000.0 >= nextEvaluation) {
+                    postGap(p.episode);
+                    nextEvaluation = clock.elapsed() / 1000.0 + evaluationEvery;
+                }
             },
             feedback.cancelledFunction());
+        if (stop == TrainingStop::TimeLimit) // where the budget left the policy
+            postGap(session.trainer->episodes());
     } catch (const std::exception& e) {
         throw std::runtime_error(
             QCoreApplication::translate("fc::ui::TrainingDock", "Training failed: %1")

@@ -2,7 +2,9 @@
 // loop and the model's evaluation. The trainer lives in a DqnSession shared by the dock and
 // its tasks; each task holds the session's lock while it works, so a resumed training or an
 // evaluation waits for a pausing one to end its episode. The training posts its episodes
-// (TrainingPoint) through the feedback; the dock plots them in batches.
+// (TrainingPoint) through the feedback; the dock plots them in batches. Every twentieth of
+// the budget (at least every 10 s), and when it ends, the training also measures the policy
+// alone on the trainer's fixed test queries, so the curve shows what training buys.
 #pragma once
 
 #include "learning/dqn/DqnTrainer.h"
@@ -10,6 +12,7 @@
 
 #include <QMetaType>
 #include <QString>
+#include <limits>
 #include <memory>
 #include <mutex>
 
@@ -26,6 +29,10 @@ struct TrainingPoint {
     double loss = 0.0; // NaN while not learning yet
     double epsilon = 0.0;
     double stepsPerSecond = 0.0;
+    // The learnt rollout alone on the trainer's fixed test queries, percent above the
+    // reference solver; NaN when this point was not evaluated. A point that carries only an
+    // evaluation (the one when the budget is spent) has NaN reward too.
+    double policyGap = std::numeric_limits<double>::quiet_NaN();
 };
 
 enum class TrainingEnd { BudgetReached, Interrupted };
