@@ -39,7 +39,7 @@ struct Options {
     std::uint64_t seed = 1;
     int population = 80;
     int generations = 10000;         // at most
-    int stallGenerations = 1000;     // stops after this many without a better tour
+    int stallGenerations = 3000;     // stops after this many without a better tour
     std::function<bool()> cancelled; // checked between generations; may be empty
 };
 

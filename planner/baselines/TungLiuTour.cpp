@@ -95,24 +95,29 @@ struct Individual {
     double cost = INFINITY;
 };
 
-// Order crossover (OX1): a slice of the first parent in place, the rest in the second's order.
-std::vector<int> orderCrossover(const std::vector<int>& p1, const std::vector<int>& p2,
-                                std::mt19937_64& rng) {
-    const std::size_t n = p1.size();
+// Order crossover (OX1): a slice of the first parent in place, the rest in the second's
+// order; each cell keeps the option of the parent whose order placed it (an option is good
+// with its neighbours in the order, not on its own).
+Individual orderCrossover(const Individual& p1, const Individual& p2, std::mt19937_64& rng) {
+    const std::size_t n = p1.order.size();
     std::uniform_int_distribution<std::size_t> pick(0, n - 1);
     std::size_t a = pick(rng), b = pick(rng);
     if (a > b)
         std::swap(a, b);
-    std::vector<int> child(n, -1);
+    Individual child;
+    child.order.assign(n, -1);
+    child.options = p2.options;
     std::vector<char> used(n, 0);
-    for (std::size_t i = a; i <= b; ++i)
-        child[i] = p1[i], used[p1[i]] = 1;
+    for (std::size_t i = a; i <= b; ++i) {
+        const int cell = p1.order[i];
+        child.order[i] = cell, used[cell] = 1, child.options[cell] = p1.options[cell];
+    }
     std::size_t at = (b + 1) % n;
     for (std::size_t k = 0; k < n; ++k) {
-        const int gene = p2[(b + 1 + k) % n];
+        const int gene = p2.order[(b + 1 + k) % n];
         if (used[gene])
             continue;
-        child[at] = gene;
+        child.order[at] = gene;
         used[gene] = 1;
         at = (at + 1) % n;
     }
@@ -163,12 +168,7 @@ Tour solveGa(const Model& m, const Options& opt) {
         std::vector<Individual> next(population.begin(), population.begin() + 2); // elites
         while (static_cast<int>(next.size()) < size) {
             const Individual &a = tournament(), &b = tournament();
-            Individual child;
-            child.order =
-                n > 1 && unit(rng) < 0.9 ? orderCrossover(a.order, b.order, rng) : a.order;
-            child.options.resize(n);
-            for (int c = 0; c < n; ++c)
-                child.options[c] = unit(rng) < 0.5 ? a.options[c] : b.options[c];
+            Individual child = n > 1 && unit(rng) < 0.9 ? orderCrossover(a, b, rng) : a;
             if (n > 1 && unit(rng) < 0.3)
                 std::swap(child.order[anyPosition(rng)], child.order[anyPosition(rng)]);
             if (n > 2 && unit(rng) < 0.3) {
@@ -176,6 +176,12 @@ Tour solveGa(const Model& m, const Options& opt) {
                 if (i > j)
                     std::swap(i, j);
                 std::reverse(child.order.begin() + i, child.order.begin() + j + 1);
+            }
+            if (n > 2 && unit(rng) < 0.3) { // insertion: one cell moved elsewhere in the order
+                const int from = anyPosition(rng), to = anyPosition(rng);
+                const int cell = child.order[from];
+                child.order.erase(child.order.begin() + from);
+                child.order.insert(child.order.begin() + to, cell);
             }
             for (int c = 0; c < n; ++c)
                 if (unit(rng) < 1.0 / n)

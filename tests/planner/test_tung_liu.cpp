@@ -1,8 +1,8 @@
-// The independent adjacency-ga (baselines/IndependentBaselines.h): independent of the planner below the
-// plan model, its GA against its own dynamic programme, and its answers through the
-// pipeline.
+// The independent adjacency-ga (baselines/IndependentBaselines.h): independent of the planner below
+// the plan model, its GA against its own dynamic programme, and its answers through the pipeline.
 #include "baselines/IndependentBaselines.h"
 #include "formats/PlanIO.h"
+#include "model/SyntheticPlans.h"
 #include "pipeline/Planner.h"
 
 #include <filesystem>
@@ -73,7 +73,8 @@ TEST(TungLiu, GeneticAlgorithmReachesItsDynamicProgrammeOnSmallPlans) {
         const Vec2 corner = plan.bounds().minX < INFINITY
                                 ? Vec2{plan.bounds().minX + 0.5, plan.bounds().minY + 0.5}
                                 : Vec2{};
-        const baselines::Tour ga = baselines::planTungLiuGa(plan, {}, corner, corner, defaultOptions());
+        const baselines::Tour ga =
+            baselines::planTungLiuGa(plan, {}, corner, corner, defaultOptions());
         const std::optional<baselines::Tour> dp =
             baselines::planTungLiuDp(plan, {}, corner, corner, defaultOptions(), 16);
         ASSERT_TRUE(dp) << name << ": " << ga.cells << " cells";
@@ -108,6 +109,16 @@ TEST(TungLiu, GeneticAlgorithmWithinTwoPercentOfItsDynamicProgramme) {
                     ga.modelCost, dp->modelCost);
     }
     EXPECT_GE(compared, 2);
+    // A generated office floor of 16 cells: the DP's largest default size.
+    const Plan floor = generateOfficeFloor(3, 2);
+    const Vec2 p{floor.bounds().minX + 0.5, floor.bounds().minY + 0.5};
+    const std::optional<baselines::Tour> dp =
+        baselines::planTungLiuDp(floor, {}, p, p, defaultOptions(), 16);
+    ASSERT_TRUE(dp);
+    const baselines::Tour ga = baselines::planTungLiuGa(floor, {}, p, p, defaultOptions());
+    EXPECT_GE(ga.cells, 12);
+    EXPECT_GE(ga.modelCost, dp->modelCost - 1e-3);
+    EXPECT_LE(ga.modelCost, dp->modelCost * 1.02) << ga.cells << " cells";
 }
 
 TEST(TungLiu, SeededAndCancellable) {
@@ -120,14 +131,15 @@ TEST(TungLiu, SeededAndCancellable) {
     cancelled.cancelled = [] { return true; };
     EXPECT_THROW(baselines::planTungLiuGa(plan, {}, p, p, cancelled), baselines::TourError);
     // Above the DP's size limit there is no reference rather than a wrong one.
-    EXPECT_FALSE(
-        baselines::planTungLiuDp(samplePlan("office"), {}, Vec2{1, 1}, Vec2{1, 1}, defaultOptions(), 16));
+    EXPECT_FALSE(baselines::planTungLiuDp(samplePlan("office"), {}, Vec2{1, 1}, Vec2{1, 1},
+                                          defaultOptions(), 16));
 }
 
 // A room subset: only the chosen rooms' floor is swept, every transit stays clear.
 TEST(TungLiu, RoomSubsetsSweepOnlyTheirRooms) {
     const Plan plan = samplePlan("office");
-    const baselines::Tour all = baselines::planTungLiuGa(plan, {}, Vec2{1, 1}, Vec2{1, 1}, defaultOptions());
+    const baselines::Tour all =
+        baselines::planTungLiuGa(plan, {}, Vec2{1, 1}, Vec2{1, 1}, defaultOptions());
     const baselines::Tour some =
         baselines::planTungLiuGa(plan, {"S01", "N03"}, Vec2{1, 1}, Vec2{1, 1}, defaultOptions());
     EXPECT_LT(some.cells, all.cells);
