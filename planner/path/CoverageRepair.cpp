@@ -53,10 +53,120 @@ std::optional<Vec2> centreFor(const ClearanceField& field, Vec2 t, double w) {
     return std::nullopt;
 }
 
+// A stroke to add and how the robot gets there from the path vertex `from` (route[0] is
+// that vertex, route.back() == a).
+struct TouchUp {
+    int from = -1;
+    Polyline route;
+    Vec2 a, b;
+};
+
+// Touch-ups that leave from path vertices close together (within W, along at most 2 W of
+// path: the many vertices of one traced stripe end under a slanted wall) are driven as one
+// chain from the first vertex: stroke to nearest stroke, each swept once from its nearer
+// end, then back, where that is shorter than driving each alone (on a ragged map, alone
+// they make a fan of there-and-back strokes from one corner). A stroke whose leg is not
+// clear leaves on its own route from its own vertex, as before. Returns, per vertex, the
+// detours that leave from it and return to it (the vertex itself not included at either
+// end).
+std::map<int, std::vector<Polyline>> chainedDetours(const ClearanceField& field,
+                                                    const std::vector<Vec2>& local,
+                                                    std::vector<TouchUp> touchUps, double w,
+                                                    double maxDetour, bool chainNearby,
+                                                    int& chains) {
+    std::sort(touchUps.begin(), touchUps.end(),
+              [](const TouchUp& x, const TouchUp& y) { return x.from < y.from; });
+    std::map<int, std::vector<Polyline>> detours;
+    auto alone = [&](const TouchUp& t) {
+        Polyline detour(t.route.begin() + 1, t.route.end()); // from the vertex to a
+        detour.push_back(t.b);
+        detour.push_back(t.a);
+        detour.insert(detour.end(), t.route.rbegin() + 1, t.route.rend()); // back
+        detours[t.from].push_back(std::move(detour));
+    };
+    auto clearLeg = [&](Vec2 p, Vec2 q) -> Polyline {
+        if (field.segmentIsClear(p, q))
+            return {p, q};
+        Polyline route = field.findPath(p, q, {}, maxDetour, kMaxRouteChecks);
+        return !route.empty() && polylineLength(route) <= maxDetour ? route : Polyline{};
+    };
+    for (size_t first = 0; first < touchUps.size();) {
+        // The group: touch-ups from vertices near the first one's, along a short stretch.
+        const int anchor = touchUps[first].from;
+        size_t end = first + 1;
+        double along = 0.0;
+        int last = anchor;
+        while (end < touchUps.size()) {
+            const int v = touchUps[end].from;
+            for (int i = last; i < v; ++i)
+                along += distance(local[i], local[i + 1]);
+            last = v;
+            if (along > 2.0 * w || distance(local[v], local[anchor]) > w)
+                break;
+            ++end;
+        }
+        std::vector<const TouchUp*> left;
+        for (size_t k = first; k < end; ++k)
+            left.push_back(&touchUps[k]);
+        first = end;
+        if (left.size() == 1 || !chainNearby) {
+            for (const TouchUp* t : left)
+                alone(*t);
+            continue;
+        }
+        if (left.size() == 1) {
+            alone(*left.front());
+            continue;
+        }
+        const Vec2 home = local[anchor];
+        Polyline chain{home};
+        std::vector<const TouchUp*> chained;
+        while (!left.empty()) {
+            const Vec2 at = chain.back();
+            auto nearest = std::min_element(left.begin(), left.end(), [&](auto* x, auto* y) {
+                return std::min(distance(at, x->a), distance(at, x->b)) <
+                       std::min(distance(at, y->a), distance(at, y->b));
+            });
+            const TouchUp& t = **nearest;
+            const bool fromA = distance(at, t.a) <= distance(at, t.b);
+            const Vec2 enter = fromA ? t.a : t.b, leave = fromA ? t.b : t.a;
+            Polyline leg = clearLeg(at, enter);
+            if (leg.empty()) {
+                alone(t); // on its own route from its own vertex
+                left.erase(nearest);
+                continue;
+            }
+            chain.insert(chain.end(), leg.begin() + 1, leg.end());
+            chain.push_back(leave);
+            chained.push_back(&t);
+            left.erase(nearest);
+        }
+        if (chain.size() < 2)
+            continue;
+        Polyline back = clearLeg(chain.back(), home);
+        if (back.empty()) // retrace the chain: clear by construction
+            back.assign(chain.rbegin(), chain.rend());
+        chain.insert(chain.end(), back.begin() + 1, back.end());
+        // Kept only where it is shorter than its strokes driven each on its own.
+        double separately = 0.0;
+        for (const TouchUp* t : chained)
+            separately += 2.0 * (polylineLength(t->route) + distance(t->a, t->b));
+        if (polylineLength(chain) < separately) {
+            detours[anchor].push_back(Polyline(chain.begin() + 1, chain.end()));
+            ++chains;
+        } else {
+            for (const TouchUp* t : chained)
+                alone(*t);
+        }
+    }
+    return detours;
+}
+
 } // namespace
 
 CoverageRepairStats repairCoverage(const Decomposition& dec, CoveragePath& path,
-                                   const std::vector<Vec2>& missed, double maxDetour) {
+                                   const std::vector<Vec2>& missed, double maxDetour,
+                                   bool chainNearby) {
     CoverageRepairStats stats;
     if (missed.empty() || path.points.size() < 2)
         return stats;
@@ -80,7 +190,7 @@ CoverageRepairStats repairCoverage(const Decomposition& dec, CoveragePath& path,
         vertices[keyOf(local[i], bucket)].push_back(static_cast<int>(i));
 
     std::vector<Stroke> strokes;
-    std::map<int, std::vector<Polyline>> detours; // by the path vertex they leave from
+    std::vector<TouchUp> touchUps;
     for (const auto& [key, points] : groups) {
         if (static_cast<size_t>(stats.gaps) >= kMaxGaps)
             break;
@@ -155,17 +265,17 @@ CoverageRepairStats repairCoverage(const Decomposition& dec, CoveragePath& path,
         }
         if (route.empty())
             continue;
-        Polyline detour(route.begin() + 1, route.end()); // from the vertex to a
-        detour.push_back(b);
-        detour.push_back(a);
-        detour.insert(detour.end(), route.rbegin() + 1, route.rend()); // back to the vertex
-        stats.added += 2.0 * polylineLength(route) + 2.0 * distance(a, b);
         ++stats.touchUps;
         strokes.push_back(stroke);
-        detours[from].push_back(std::move(detour));
+        touchUps.push_back({from, std::move(route), a, b});
     }
-    if (detours.empty())
+    if (touchUps.empty())
         return stats;
+    const std::map<int, std::vector<Polyline>> detours =
+        chainedDetours(field, local, std::move(touchUps), w, maxDetour, chainNearby, stats.chains);
+    for (const auto& [vertex, list] : detours)
+        for (const Polyline& detour : list)
+            stats.added += distance(local[vertex], detour.front()) + polylineLength(detour);
 
     CoveragePath out;
     auto add = [&out](Vec2 p, SegmentKind kind) {

@@ -15,13 +15,18 @@ struct CoverageRepairStats {
     int gaps = 0;       // groups of missed floor found
     int touchUps = 0;   // strokes added
     double added = 0.0; // path length added, m
+    int chains = 0;     // groups of touch-ups driven as one chain
 };
 
 // Adds a touch-up for each group of `missed` points (world frame, e.g. Metrics::uncovered)
 // that a clear stroke within `maxDetour` of the path can sweep. Every added piece keeps the
 // robot L/2 from walls. The path stays a valid world-frame path; its metrics must be
 // computed again.
+// chainNearby: touch-ups that leave from nearly the same place are driven as one chain
+// where that is shorter (CoverageRepair.cpp); a chain turns where a lone stroke turns back, so
+// the head's square ends sweep a little differently: the caller measures both.
 CoverageRepairStats repairCoverage(const Decomposition& dec, CoveragePath& path,
-                                   const std::vector<Vec2>& missed, double maxDetour);
+                                   const std::vector<Vec2>& missed, double maxDetour,
+                                   bool chainNearby = true);
 
 } // namespace fc

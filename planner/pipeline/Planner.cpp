@@ -369,6 +369,18 @@ void touchUpCoverage(const PreparedPlan& prepared, const std::vector<std::string
         if (stats.touchUps == 0)
             return;
         Metrics after = measurePath(prepared, requiredRooms, repaired);
+        // Chained strokes end differently from lone ones: the lone ones, where they plan
+        // better (complete first, then faster).
+        if (stats.chains > 0) {
+            CoveragePath lone = path;
+            repairCoverage(prepared.decomposition, lone, metrics.uncovered,
+                           kTouchUpReachInWidths * prepared.robot.coverageWidth, false);
+            Metrics loneAfter = measurePath(prepared, requiredRooms, lone);
+            if (betterPlanChoice(loneAfter, after)) {
+                repaired = std::move(lone);
+                after = std::move(loneAfter);
+            }
+        }
         if (!(after.coveredArea > metrics.coveredArea))
             return;
         path = std::move(repaired);
