@@ -14,6 +14,7 @@
 #include <boost/geometry/geometries/polygon.hpp>
 #include <cmath>
 #include <map>
+#include <string>
 
 namespace fc::baselines::detail {
 namespace {
@@ -234,7 +235,7 @@ Interval clearSpan(double x, double lo, double hi, const std::vector<Segment>& w
 } // namespace
 
 Model buildModel(const Plan& plan, const std::vector<std::string>& rooms, Vec2 start, Vec2 end,
-                 const Options& options) {
+                 const Options& options, int maxCells, const char* what) {
     Model model;
     model.frame =
         Frame(plan.boundary.empty() ? Vec2{} : plan.boundary.front(), options.stripeAngleDeg);
@@ -248,13 +249,17 @@ Model buildModel(const Plan& plan, const std::vector<std::string>& rooms, Vec2 s
     addWalls(plan.boundary);
     for (const Ring& o : plan.obstacles)
         addWalls(o);
-    model.transits = std::make_unique<Transits>(walls, c);
-    Transits& transits = *model.transits;
-
     std::vector<Edge> edges;
     std::vector<std::pair<int, int>> links;
     const std::vector<CellShape> shapes =
         decompose(regionRings(plan, rooms, model.frame), edges, links);
+    if (maxCells > 0 && static_cast<int>(shapes.size()) > maxCells)
+        throw TourError(std::string(what) + ": " + std::to_string(shapes.size()) +
+                        " cells exceed its limit of " + std::to_string(maxCells) +
+                        " (its transits grow with the square of the cells); plan fewer rooms "
+                        "at a time");
+    model.transits = std::make_unique<Transits>(walls, c, options.cancelled);
+    Transits& transits = *model.transits;
     model.cellCount = static_cast<int>(shapes.size());
     std::vector<int> kept(shapes.size(), -1); // shape -> model cell
     for (const CellShape& shape : shapes) {
@@ -320,7 +325,6 @@ Model buildModel(const Plan& plan, const std::vector<std::string>& rooms, Vec2 s
             model.links.push_back({kept[a], kept[b]});
     model.start = transits.addPoint(model.frame.toLocal(start));
     model.end = transits.addPoint(model.frame.toLocal(end));
-    transits.solve();
     return model;
 }
 

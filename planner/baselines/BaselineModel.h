@@ -5,6 +5,7 @@
 #include "baselines/IndependentBaselines.h"
 
 #include <array>
+#include <functional>
 #include <memory>
 
 namespace fc::baselines::detail {
@@ -13,7 +14,9 @@ namespace fc::baselines::detail {
 // outside the walls' corners, grown by the clearance.
 class Transits {
 public:
-    Transits(std::vector<Segment> walls, double clearance);
+    // cancelled (may be empty) is asked while the graph and the tables are built; when it
+    // says so they throw TourError("cancelled").
+    Transits(std::vector<Segment> walls, double clearance, std::function<bool()> cancelled = {});
     ~Transits();
 
     // Whether the robot centre may move straight from p to q (clearance kept from walls).
@@ -21,7 +24,8 @@ public:
     bool clear(Vec2 p) const;
     // Registers a point; returns its index for distance() and path().
     int addPoint(Vec2 p);
-    // After the last addPoint: shortest distances between all registered points.
+    // After the last addPoint: shortest distances between all registered points (what the
+    // GA and the DP need; reeb-cpp routes step by step instead).
     void solve();
     double distance(int from, int to) const; // INFINITY when none
     Polyline path(int from, int to) const;   // from..to; empty when none
@@ -33,6 +37,8 @@ private:
     struct Graph;
     std::vector<Segment> walls_;
     double clearance_;
+    std::function<bool()> cancelled_;
+    void throwIfCancelled() const;
     std::vector<Vec2> nodes_;
     std::unique_ptr<Graph> graph_;
     std::vector<Vec2> points_;
@@ -74,8 +80,9 @@ struct Model {
 
 // Decomposes the rooms' free space, lays out every cell's options and registers their end
 // points, the start and the end with the transits. Throws TourError.
+// Above maxCells cells (0: no limit) it refuses at once, naming `what` (the baseline).
 Model buildModel(const Plan& plan, const std::vector<std::string>& rooms, Vec2 start, Vec2 end,
-                 const Options& options);
+                 const Options& options, int maxCells = 0, const char* what = "baseline");
 
 // A cell order with options, its cost in the model, and the path it makes (world frame).
 double tourCost(const Model& model, const std::vector<int>& order, const std::vector<int>& options);

@@ -39,15 +39,23 @@ Vec2 unit(Vec2 v) {
 
 } // namespace
 
-Transits::Transits(std::vector<Segment> walls, double clearance)
-    : walls_(std::move(walls)), clearance_(clearance), graph_(std::make_unique<Graph>()) {
+Transits::Transits(std::vector<Segment> walls, double clearance, std::function<bool()> cancelled)
+    : walls_(std::move(walls)), clearance_(clearance), cancelled_(std::move(cancelled)),
+      graph_(std::make_unique<Graph>()) {
     placeNodes();
     const int n = static_cast<int>(nodes_.size());
     graph_->g = Graph::Type(n + 1); // the last vertex: the source of each point's search
-    for (int i = 0; i < n; ++i)
+    for (int i = 0; i < n; ++i) {
+        throwIfCancelled();
         for (int j = i + 1; j < n; ++j)
             if (clear(nodes_[i], nodes_[j]))
                 boost::add_edge(i, j, fc::distance(nodes_[i], nodes_[j]), graph_->g);
+    }
+}
+
+void Transits::throwIfCancelled() const {
+    if (cancelled_ && cancelled_())
+        throw TourError("cancelled");
 }
 
 Transits::~Transits() = default;
@@ -129,6 +137,7 @@ void Transits::solve() {
     nodeDistance_.assign(count, {});
     nodeParent_.assign(count, {});
     for (int i = 0; i < count; ++i) {
+        throwIfCancelled();
         seen[i] = visibleNodes(points_[i]);
         boost::clear_vertex(n, g);
         for (const auto& [node, length] : seen[i])
@@ -147,7 +156,8 @@ void Transits::solve() {
     }
     boost::clear_vertex(n, g);
     distance_.assign(count, std::vector<double>(count, INFINITY));
-    for (int i = 0; i < count; ++i)
+    for (int i = 0; i < count; ++i) {
+        throwIfCancelled();
         for (int j = 0; j < count; ++j) {
             if (i == j) {
                 distance_[i][j] = 0;
@@ -163,6 +173,7 @@ void Transits::solve() {
                 best = std::min(best, nodeDistance_[i][node] + length);
             distance_[i][j] = best;
         }
+    }
 }
 
 double Transits::distance(int from, int to) const {

@@ -135,6 +135,22 @@ TEST(TungLiu, SeededAndCancellable) {
                                           defaultOptions(), 16));
 }
 
+// Floors beyond a baseline's size refuse at once, with the reason, instead of running for
+// minutes where nothing could stop them.
+TEST(TungLiu, LargeFloorsAreRefusedAtOnce) {
+    const Plan floor = generateOfficeFloor(200, 1);
+    const Vec2 p{floor.bounds().minX + 1.0, floor.bounds().minY + 1.0};
+    for (auto plan : {baselines::planTungLiuGa, baselines::planReebPostman}) {
+        try {
+            plan(floor, {}, p, p, defaultOptions());
+            ADD_FAILURE() << "planned a floor of 200 rooms";
+        } catch (const baselines::TourError& e) {
+            EXPECT_NE(std::string(e.what()).find("exceed its limit"), std::string::npos)
+                << e.what();
+        }
+    }
+}
+
 // A room subset: only the chosen rooms' floor is swept, every transit stays clear.
 TEST(TungLiu, RoomSubsetsSweepOnlyTheirRooms) {
     const Plan plan = samplePlan("office");
