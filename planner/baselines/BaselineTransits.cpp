@@ -75,14 +75,20 @@ bool Transits::clear(Vec2 p, Vec2 q) const {
 // Around every corner the free space wraps (where a path can bend), nodes on a polygon
 // circumscribing the clearance arc: one at a right angle, more around sharper corners.
 void Transits::placeNodes() {
-    // Walls arrive ring by ring, each ring's segments in order and closed: corners are the
-    // ends shared by consecutive segments of one ring.
+    // Walls arrive ring by ring, each ring's segments in order and closed: a segment's
+    // successor is the next one, or its ring's first one after the ring's last.
+    std::size_t ringStart = 0;
     for (std::size_t i = 0; i < walls_.size(); ++i) {
+        if (i > 0 && fc::distance(walls_[i - 1].b, walls_[i].a) > 1e-12)
+            ringStart = i;
         const Segment& in = walls_[i];
-        for (std::size_t k = 0; k < walls_.size(); ++k) {
-            const Segment& out = walls_[k];
-            if (k == i || fc::distance(out.a, in.b) > 1e-12)
-                continue;
+        const bool ringGoesOn =
+            i + 1 < walls_.size() && fc::distance(walls_[i + 1].a, in.b) <= 1e-12;
+        const std::size_t k = ringGoesOn ? i + 1 : ringStart;
+        if (k == i || fc::distance(walls_[k].a, in.b) > 1e-12)
+            continue;
+        const Segment& out = walls_[k];
+        {
             const Vec2 corner = in.b;
             const Vec2 d1 = unit(in.b - in.a), d2 = unit(out.b - out.a);
             // The two sides' normals; a node is needed on whichever side the corner is
@@ -205,16 +211,18 @@ Polyline Transits::path(int from, int to) const {
 Polyline Transits::route(Vec2 p, Vec2 q) const {
     if (clear(p, q))
         return {p, q};
-    // A one-off search: the registered points' tables are not touched.
+    // A one-off search from the source vertex, wired to p for this search only (the graph is
+    // not copied: on a large floor that cost more than the search); the registered points'
+    // tables are not touched.
     const int n = static_cast<int>(nodes_.size());
-    Graph::Type g = graph_->g;
-    boost::clear_vertex(n, g);
+    Graph::Type& g = graph_->g;
     for (const auto& [node, length] : visibleNodes(p))
         boost::add_edge(n, node, length, g);
     std::vector<double> dist(n + 1);
     std::vector<Graph::Type::vertex_descriptor> parent(n + 1);
     boost::dijkstra_shortest_paths(g, n,
                                    boost::predecessor_map(parent.data()).distance_map(dist.data()));
+    boost::clear_vertex(n, g);
     int best = -1;
     double bestCost = INFINITY;
     for (const auto& [node, length] : visibleNodes(q))
