@@ -31,17 +31,20 @@ commands:
                 --angle auto: the shortest estimated time among the angles that cover
                 everything reachable; losses above 0.5% of the floor are warned on stderr,
                 and with --strict the exit code is 3)
-                (dqn needs --model, a file written by train; it plans at its sweep angle)
+                (dqn without --model uses the built-in generalist model, trained on
+                generated floors; with --model FILE, a file written by train, it plans
+                at that model's sweep angle)
                 (--out format by extension: .geojson .csv .json .yaml)
   graph PLAN    write the corner graph: [--width W] [--angle DEG] --out FILE.json
   compare PLAN  run several solvers on the same query: [--solvers a,b,..] [--json]
-                and the plan options above (dqn is included when --model is given);
+                and the plan options above;
                 then the paper's ratios: our best solver's extra distance and turns
                 divided by each baseline's (reeb-cpp, adjacency-ga)
   train PLAN    train the Double-DQN planner for this plan: --out MODEL
                 [--episodes N] [--seconds S] (default 300 s when neither is given)
                 [--seed N] [--setting graph|improved|paper] [--resume] [--evaluate-every N]
-                (graph is the default) and the robot and --angle options above;
+                (graph is the default; it starts from the built-in generalist model
+                unless --from-scratch) and the robot and --angle options above;
                 prints progress; Ctrl-C stops after the current episode and saves
                 what was learnt
   tile PLAN     tiling robot: tile the floor with its five shapes and order the tiles by
@@ -254,9 +257,7 @@ int commandCompare(const Arguments& args) {
     const Project project = loadProjectFile(path);
     std::vector<std::string> solvers = args.list("--solvers");
     if (solvers.empty())
-        for (const std::string& name : solverNames())
-            if (name != "dqn" || args.has("--model")) // dqn needs a trained model
-                solvers.push_back(name);
+        solvers = solverNames(); // dqn without --model: the built-in generalist
     const bool json = args.has("--json");
     PlanRequest request;
     try {
@@ -307,7 +308,7 @@ int run(int argc, char** argv) {
     try {
         const Arguments args(argc, argv, 2,
                              {"--json", "--no-transition-cells", "--help", "--resume", "--strict",
-                              "--no-cleaning", "--repair"});
+                              "--no-cleaning", "--repair", "--from-scratch"});
         if (args.has("--help")) {
             std::cout << kUsage;
             return 0;

@@ -2,6 +2,7 @@
 // Ctrl-C stops after the current episode and saves; a second Ctrl-C aborts.
 #include "CliCommon.h"
 #include "learning/dqn/DqnTrainer.h"
+#include "learning/dqn/GeneralistModel.h"
 
 #include <atomic>
 #include <chrono>
@@ -52,7 +53,7 @@ const char* stopName(TrainingStop stop) {
 int commandTrain(const Arguments& args) {
     args.allowOnly({"--out", "--episodes", "--seconds", "--seed", "--setting", "--resume",
                     "--evaluate-every", "--width", "--robot-diameter", "--cleaning-diameter",
-                    "--angle", "--no-transition-cells"});
+                    "--angle", "--no-transition-cells", "--from-scratch"});
     const std::string& path = planPath(args);
     const auto out = args.text("--out");
     if (!out)
@@ -92,6 +93,13 @@ int commandTrain(const Arguments& args) {
     } else {
         TrainingOptions options = TrainingOptions::named(setting, seed);
         options.evaluationInterval = static_cast<int>(args.integer("--evaluate-every").value_or(0));
+        // The graph setting fine-tunes the generalist unless told otherwise; the image
+        // settings have no generalist (their network is tied to one graph's size).
+        if (setting == "graph" && !args.has("--from-scratch")) {
+            options.initialModel = generalistModel();
+            std::cout << "starting from " << kGeneralistModelName << " (--from-scratch to "
+                      << "start from random weights)\n";
+        }
         trainer = std::make_unique<DqnTrainer>(prepared.graph, options, angle,
                                                prepared.robot.coverageWidth);
     }

@@ -184,7 +184,11 @@ expect_bad_input "truncated model" "$plans/simple.geojson" --solver dqn --model 
 cp "$work/err" "$work/refusal"
 check "truncated named as such" grep -q "truncated" "$work/refusal"
 expect_bad_input "plan file as model" "$plans/simple.geojson" --solver dqn --model "$plans/simple.geojson"
-expect_bad_input "dqn without a model" "$plans/simple.geojson" --solver dqn
+check "dqn without a model plans with the generalist" cli plan "$plans/room-obstacle.geojson" --solver dqn
+check "generalist dqn metrics" metrics_ok
+check "compare includes dqn without a model" cli compare "$plans/simple.geojson"
+check "compare lists dqn with the generalist" grep -q '^dqn ' "$work/last"
+check "train from scratch" cli train "$plans/simple.geojson" --out "$work/scratch.fcdqn" --episodes 5 --from-scratch
 expect_bad_input "missing model" "$plans/simple.geojson" --solver dqn --model "$work/none.fcdqn"
 "$cli" train "$plans/simple.geojson" --episodes 3 >"$work/out" 2>"$work/err"
 check "train without --out is bad input" test $? -eq 2

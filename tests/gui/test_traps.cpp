@@ -212,12 +212,10 @@ void TrapsTest::tilingModeKeepsTheWindowOnTheScreen() {
     QVERIFY(!window->tilingMode()->isActive());
 }
 
-// "solver dqn needs a trained model (--model FILE; make one with floorcover-cli train)" and
 // "use `--solver heuristic`" told a supervisor which command-line flag to pass.
 void TrapsTest::plannerMessagesSpeakOfTheEditor() {
     for (const char* cli :
-         {"solver dqn needs a trained model (--model FILE; make one with floorcover-cli train)",
-          "exact solver: 174 required cells exceed its limit of 40; use `--solver heuristic` for "
+         {"exact solver: 174 required cells exceed its limit of 40; use `--solver heuristic` for "
           "this query",
           "exact solver: 30 required cells: no proof of optimality within its budget (2,000,000 "
           "states or 60 s; the best walk known is within 1.2% of optimal); use `--solver "

@@ -24,10 +24,8 @@ namespace fc::ui {
 namespace {
 
 std::vector<SolverRun> planAll(const PlanRequest& base, TaskFeedback& feedback) {
-    std::vector<std::string> names;
-    for (const std::string& name : solverNames())
-        if (name != "dqn" || !base.modelPath.empty())
-            names.push_back(name);
+    // dqn without a trained model plans with the built-in generalist.
+    const std::vector<std::string> names = solverNames();
     std::vector<SolverRun> runs;
     for (std::size_t i = 0; i < names.size(); ++i) {
         feedback.throwIfCancelled();

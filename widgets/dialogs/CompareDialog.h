@@ -30,7 +30,7 @@ struct SolverRun {
 class CompareDialog : public QDialog {
     Q_OBJECT
 public:
-    // dqn is compared only when the request names a model.
+    // dqn uses the request's model, or the built-in generalist when it names none.
     explicit CompareDialog(PlanRequest request, QWidget* parent = nullptr);
     ~CompareDialog() override;
 

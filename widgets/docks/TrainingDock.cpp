@@ -1,8 +1,10 @@
 #include "docks/TrainingDock.h"
 
 #include "document/PlannerMessages.h"
+#include "learning/dqn/GeneralistModel.h"
 #include "tasks/Task.h"
 
+#include <QCheckBox>
 #include <QComboBox>
 #include <QDir>
 #include <QDoubleSpinBox>
@@ -62,6 +64,13 @@ void TrainingDock::buildUi() {
                             "walk. Graph state: the same with per-corner features and a "
                             "per-corner network (faster on large floors). Paper: the published "
                             "setting."));
+    fromGeneralist_ = new QCheckBox(tr("From the generalist"), body);
+    fromGeneralist_->setChecked(true);
+    fromGeneralist_->setToolTip(
+        tr("Start from the built-in generalist model, trained on generated floors (what solver "
+           "dqn uses before any training), and fine-tune it for this plan. Off: start from "
+           "random weights. Graph state only."));
+    connect(setting_, &QComboBox::currentIndexChanged, this, [this] { setState(state_); });
     budget_ = new QDoubleSpinBox(body);
     budget_->setRange(5.0, 24 * 3600.0);
     budget_->setValue(300.0);
@@ -75,6 +84,7 @@ void TrainingDock::buildUi() {
     pauseButton_->setToolTip(tr("Pause training and keep the model so far; Resume goes on."));
     stopButton_->setToolTip(tr("End training; the model so far is kept for solver dqn."));
     controls->addWidget(setting_);
+    controls->addWidget(fromGeneralist_);
     controls->addWidget(budget_);
     controls->addWidget(startButton_);
     controls->addWidget(pauseButton_);
@@ -191,6 +201,8 @@ void TrainingDock::start() {
     TrainingOptions options = options_;
     if (!customOptions_)
         options = TrainingOptions::named(setting_->currentData().toString().toStdString());
+    const bool fromGeneralist = fromGeneralist_->isChecked() && fromGeneralist_->isEnabled() &&
+                                options.environment.graphState;
     clearPlot();
     episodes_ = 0;
     runStartSeconds_ = 0.0;
@@ -203,8 +215,12 @@ void TrainingDock::start() {
     session_ = std::make_shared<DqnSession>();
     runTraining(tasks_->run(
         tr("Training the DQN"),
-        [session = session_, prepared = prepared_, options, seconds](TaskFeedback& feedback) {
-            return startDqn(*session, *prepared, options, seconds, feedback);
+        [session = session_, prepared = prepared_, options, seconds,
+         fromGeneralist](TaskFeedback& feedback) {
+            TrainingOptions run = options;
+            if (fromGeneralist)
+                run.initialModel = generalistModel(); // parsed once, off the GUI thread
+            return startDqn(*session, *prepared, run, seconds, feedback);
         },
         TaskOptions{QString(), true}));
 }
@@ -453,6 +469,8 @@ void TrainingDock::setState(State state) {
     pauseButton_->setText(state == State::Paused ? tr("Resume") : tr("Pause"));
     stopButton_->setEnabled(running || state == State::Paused);
     setting_->setEnabled(!running);
+    fromGeneralist_->setEnabled(!running &&
+                                setting_->currentData().toString() == QLatin1String("graph"));
     saveButton_->setEnabled(!evaluating_ && (state == State::Paused || state == State::Finished));
     loadButton_->setEnabled(!running);
     evaluateButton_->setEnabled(!running && (state == State::Paused || state == State::Finished));

@@ -15,6 +15,7 @@
 #include <memory>
 #include <optional>
 
+class QCheckBox;
 class QComboBox;
 class QCustomPlot;
 class QDoubleSpinBox;
@@ -108,6 +109,7 @@ private:
     std::optional<double> lastGap_; // the latest policy gap on the curve, percent
 
     QComboBox* setting_ = nullptr;
+    QCheckBox* fromGeneralist_ = nullptr;
     QDoubleSpinBox* budget_ = nullptr;
     QPushButton* startButton_ = nullptr;
     QPushButton* pauseButton_ = nullptr;

@@ -33,12 +33,6 @@ std::vector<MessageForm> planningMessageForms() {
                                       "The exact solver could not prove the best order of %1 "
                                       "cells within its budget (%2). Choose the heuristic solver "
                                       "in the Planning panel.")),
-        messageForm(R"re(^solver dqn needs a trained model \(--model FILE; make one with )re"
-                    R"re(floorcover-cli train\)$)re",
-                    QT_TRANSLATE_NOOP("PlannerMessages",
-                                      "The dqn solver needs a trained model: train one in the "
-                                      "Training panel (or load one there), or choose another "
-                                      "solver.")),
 
         // The plan's checks (model/Validation.cpp, model/ValidationSupport.cpp).
         messageForm(

@@ -279,7 +279,7 @@ void PlanningController::startDraft() {
         draft_ = true;
         releaseOffThread(stale_);
         // The message of an earlier query that failed no longer applies; a plan still
-        // failing (dqn without a model) says so again when it ends.
+        // failing (e.g. dqn with a model of another plan) says so again when it ends.
         setError(QString());
         errorFromPrepare_ = false;
         emit resultChanged();

@@ -36,6 +36,7 @@ nlohmann::json toJson(const DqnModelInfo& m) {
             {"setting", m.setting},
             {"graph",
              {{"fingerprint", std::to_string(m.graphFingerprint)},
+              {"generalist", m.generalist},
               {"nodes", m.nodeCount},
               {"cells", m.cellCount},
               {"sweep_angle_deg", m.stripeAngleDeg},
@@ -70,6 +71,7 @@ nlohmann::json toJson(const DqnModelInfo& m) {
               {"cost_channels", e.costChannels},
               {"state", e.graphState ? "graph" : "image"},
               {"graph_features", e.graphState ? e.graphFeatures : 0}}},
+            {"provenance", m.provenance},
             {"n_step", m.nStep},
             {"refinement", refinementName(m.refinement)},
             {"training",
@@ -85,6 +87,8 @@ DqnModelInfo fromJson(const nlohmann::json& j) {
     m.setting = j.at("setting").get<std::string>();
     const auto& g = j.at("graph");
     m.graphFingerprint = std::stoull(g.at("fingerprint").get<std::string>());
+    m.generalist = g.value("generalist", false);
+    m.provenance = j.value("provenance", std::string());
     m.nodeCount = g.at("nodes").get<int>();
     m.cellCount = g.at("cells").get<int>();
     m.stripeAngleDeg = g.at("sweep_angle_deg").get<double>();
@@ -160,6 +164,8 @@ DqnModelInfo fromJson(const nlohmann::json& j) {
         p.inputChannels != CoverageEnvironment::channelCountFor(o) || m.episodes < 0 ||
         m.steps < 0 || m.trainSteps < 0)
         throw std::invalid_argument("sizes and counts out of range");
+    if (m.generalist && p.network != QNetworkKind::Graph)
+        throw std::invalid_argument("only a graph network can be a generalist");
     return m;
 }
 
@@ -302,7 +308,7 @@ DqnModelInfo loadDqnModelInfo(const std::string& path) {
 
 void checkModelFitsGraph(const DqnModelInfo& info, const CornerGraph& graph,
                          const std::string& source) {
-    if (info.graphFingerprint == graphFingerprint(graph))
+    if (info.generalist || info.graphFingerprint == graphFingerprint(graph))
         return;
     std::ostringstream msg;
     msg << source << ": the model was trained for another floor plan or robot profile (it knows "

@@ -26,6 +26,12 @@ struct DqnModelInfo {
     EnvironmentOptions environment;
     int nStep = 1;
     OrderRefinement refinement = OrderRefinement::None; // applied by the dqn solver
+    // A generalist (graph network only) was trained on many generated floors and fits every
+    // corner graph: no fingerprint is checked; nodeCount and cellCount are then those of its
+    // largest training floor, the sweep angle is not imposed, and `provenance` says how to
+    // make it again.
+    bool generalist = false;
+    std::string provenance;
     // The graph: its fingerprint decides; the rest makes error messages useful.
     std::uint64_t graphFingerprint = 0;
     int nodeCount = 0;
@@ -59,7 +65,7 @@ DqnModel loadDqnModelFile(const std::string& path);
 DqnModelInfo loadDqnModelInfo(const std::string& path);
 
 // Throws InputError ("... was trained for another floor plan ...") unless the model was
-// trained on this graph.
+// trained on this graph or is a generalist.
 void checkModelFitsGraph(const DqnModelInfo& info, const CornerGraph& graph,
                          const std::string& source);
 

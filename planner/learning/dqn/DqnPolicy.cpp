@@ -16,9 +16,10 @@ Solution solveWithPolicy(const DqnAgent& agent, const CornerGraph& graph, const 
     CoverageEnvironment env(graph, environment);
     if (environment.graphState != (agent.parameters().network == QNetworkKind::Graph))
         throw SolverError("dqn: the model's network does not fit its state kind (image/graph)");
-    if (env.size() != agent.imageSize() || env.actionCount() != agent.actionCount() ||
-        env.channelCount() != agent.parameters().inputChannels ||
-        env.observationSize() != agent.observationSize())
+    const bool sizeFits = agent.sizeFree() || (env.size() == agent.imageSize() &&
+                                               env.actionCount() == agent.actionCount() &&
+                                               env.observationSize() == agent.observationSize());
+    if (!sizeFits || env.channelCount() != agent.parameters().inputChannels)
         throw SolverError("dqn: the model was trained on a graph of another size");
     std::vector<float> observation;
     try {

@@ -3,6 +3,7 @@
 #include "graph/PreparedPlan.h"
 #include "learning/dqn/DqnModelFile.h"
 #include "learning/dqn/DqnPolicy.h"
+#include "learning/dqn/GeneralistModel.h"
 #include "model/Plan.h"
 #include "solvers/SolverRegistry.h"
 
@@ -22,10 +23,10 @@ struct CachedModel {
 
 // Loading the weights costs more than a query; the GUI and the benchmarks plan many
 // queries with one model.
+// No path: the generalist compiled in (GeneralistModel.h).
 std::shared_ptr<const DqnModel> cachedModel(const std::string& path) {
     if (path.empty())
-        throw InputError("solver dqn needs a trained model (--model FILE; make one with "
-                         "floorcover-cli train)");
+        return generalistModel();
     static std::mutex mutex;
     static std::map<std::string, CachedModel> cache;
     std::error_code error;
@@ -45,7 +46,8 @@ std::shared_ptr<const DqnModel> cachedModel(const std::string& path) {
 Solution solveDqn(const PreparedPlan& prepared, const Query& query, const std::string& modelPath,
                   const SolveControl& control) {
     const std::shared_ptr<const DqnModel> model = cachedModel(modelPath);
-    checkModelFitsGraph(model->info, prepared.graph, modelPath);
+    checkModelFitsGraph(model->info, prepared.graph,
+                        modelPath.empty() ? kGeneralistModelName : modelPath);
     return solveWithPolicy(*model->agent, prepared.graph, query, model->info.environment,
                            model->info.refinement, control);
 }
@@ -57,9 +59,13 @@ void registerDqnSolver() {
     solver.name = "dqn";
     solver.solve = solveDqn;
     solver.sweepAngle = [](const std::string& modelPath) -> std::optional<double> {
+        // A generalist plans at whatever angle the floor is swept at (per room by default).
         if (modelPath.empty())
             return std::nullopt;
-        return loadDqnModelInfo(modelPath).stripeAngleDeg;
+        const DqnModelInfo info = loadDqnModelInfo(modelPath);
+        if (info.generalist)
+            return std::nullopt;
+        return info.stripeAngleDeg;
     };
     registerSolver(std::move(solver));
 }

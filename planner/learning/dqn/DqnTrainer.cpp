@@ -6,6 +6,7 @@
 #include <cmath>
 #include <limits>
 #include <numeric>
+#include <sstream>
 #include <stdexcept>
 
 namespace fc {
@@ -91,23 +92,73 @@ TrainingOptions TrainingOptions::named(const std::string& setting, std::uint64_t
 
 DqnTrainer::DqnTrainer(const CornerGraph& graph, TrainingOptions options, double stripeAngleDeg,
                        double coverageWidth)
-    : graph_(std::make_unique<CornerGraph>(graph)), options_(std::move(options)),
-      stripeAngleDeg_(stripeAngleDeg), coverageWidth_(coverageWidth), rng_(options_.agent.seed) {
+    : options_(std::move(options)), stripeAngleDeg_(stripeAngleDeg), coverageWidth_(coverageWidth),
+      rng_(options_.agent.seed) {
     if (options_.nStep < 1)
         throw std::invalid_argument("DqnTrainer: n-step must be at least 1");
     if (options_.environment.graphState != (options_.agent.network == QNetworkKind::Graph))
         throw std::invalid_argument(
             "DqnTrainer: the graph state needs the graph network and the image the CNN");
-    environment_ = std::make_unique<CoverageEnvironment>(*graph_, options_.environment);
+    floors_.push_back(std::make_unique<CornerGraph>(graph));
+    environments_.push_back(
+        std::make_unique<CoverageEnvironment>(*floors_.front(), options_.environment));
+    useFloor(0);
+    options_.agent.inputChannels = environment_->channelCount();
+    const std::shared_ptr<const DqnModel> initial = options_.initialModel;
+    if (initial) {
+        const DqnModelInfo& from = initial->info;
+        if (from.agent.network != QNetworkKind::Graph || !options_.environment.graphState ||
+            from.environment.graphFeatures != options_.environment.graphFeatures)
+            throw InputError("fine-tuning needs a graph-setting model with the same features");
+        // The network's shape and the state are the model's; the schedule is this run's.
+        options_.agent.hiddenUnits = from.agent.hiddenUnits;
+        options_.agent.epsilonStart =
+            std::min(options_.agent.epsilonStart, options_.fineTuneEpsilon);
+        options_.environment = from.environment;
+        options_.refinement = from.refinement;
+        initialProvenance_ = from.generalist ? "fine-tuned from the generalist model (" +
+                                                   std::to_string(from.episodes) + " episodes)"
+                                             : "fine-tuned from a model of this plan";
+    }
+    agent_ = std::make_unique<DqnAgent>(environment_->size(), environment_->actionCount(),
+                                        options_.agent);
+    if (initial) {
+        std::stringstream weights;
+        initial->agent->saveWeights(weights);
+        agent_->loadWeights(weights);
+    }
+    options_.initialModel.reset(); // the weights are copied; do not keep the model alive
+}
+
+DqnTrainer::DqnTrainer(std::vector<CornerGraph> floors, TrainingOptions options,
+                       double coverageWidth, std::string provenance)
+    : generalist_(true), provenance_(std::move(provenance)), options_(std::move(options)),
+      stripeAngleDeg_(0.0), coverageWidth_(coverageWidth), rng_(options_.agent.seed) {
+    if (floors.empty())
+        throw std::invalid_argument("DqnTrainer: a generalist needs at least one floor");
+    if (!options_.environment.graphState || options_.agent.network != QNetworkKind::Graph)
+        throw std::invalid_argument("DqnTrainer: only the graph setting trains a generalist");
+    if (options_.nStep < 1)
+        throw std::invalid_argument("DqnTrainer: n-step must be at least 1");
+    std::size_t largest = 0;
+    for (CornerGraph& floor : floors) {
+        floors_.push_back(std::make_unique<CornerGraph>(std::move(floor)));
+        environments_.push_back(
+            std::make_unique<CoverageEnvironment>(*floors_.back(), options_.environment));
+        if (floors_.back()->nodes.size() > floors_[largest]->nodes.size())
+            largest = floors_.size() - 1;
+    }
+    useFloor(largest);
     options_.agent.inputChannels = environment_->channelCount();
     agent_ = std::make_unique<DqnAgent>(environment_->size(), environment_->actionCount(),
                                         options_.agent);
 }
 
-DqnTrainer::DqnTrainer(const CornerGraph& graph, DqnModel model, const std::string& source)
-    : graph_(std::make_unique<CornerGraph>(graph)) {
+DqnTrainer::DqnTrainer(const CornerGraph& graph, DqnModel model, const std::string& source) {
     checkModelFitsGraph(model.info, graph, source);
     const DqnModelInfo& info = model.info;
+    generalist_ = info.generalist;
+    provenance_ = info.provenance;
     options_.setting = info.setting;
     options_.agent = info.agent;
     options_.environment = info.environment;
@@ -119,8 +170,20 @@ DqnTrainer::DqnTrainer(const CornerGraph& graph, DqnModel model, const std::stri
     seconds_ = info.trainingSeconds;
     // A different stream than the first run's, still a function of the seed and progress.
     rng_.seed(info.agent.seed + static_cast<std::uint64_t>(info.episodes) * 7919U);
-    environment_ = std::make_unique<CoverageEnvironment>(*graph_, options_.environment);
+    floors_.push_back(std::make_unique<CornerGraph>(graph));
+    environments_.push_back(
+        std::make_unique<CoverageEnvironment>(*floors_.front(), options_.environment));
+    useFloor(0);
     agent_ = std::move(model.agent);
+}
+
+void DqnTrainer::useFloor(std::size_t index) {
+    graph_ = floors_[index].get();
+    environment_ = environments_[index].get();
+}
+
+const CornerGraph& DqnTrainer::floorOfQuery(std::size_t query) const {
+    return *floors_[evaluationFloors_.empty() ? 0 : evaluationFloors_[query]];
 }
 
 DqnTrainer::~DqnTrainer() = default;
@@ -156,6 +219,10 @@ void DqnTrainer::flush(std::deque<PendingStep>& pending, const std::vector<float
 }
 
 double DqnTrainer::runEpisode(double& lossSum, int& lossCount) {
+    if (floors_.size() > 1) {
+        std::uniform_int_distribution<std::size_t> pick(0, floors_.size() - 1);
+        useFloor(pick(rng_));
+    }
     CoverageEnvironment& env = *environment_;
     std::vector<float> observation = env.reset(rng_);
     std::deque<PendingStep> pending;
@@ -240,21 +307,35 @@ EvaluationReport DqnTrainer::evaluate(const SolveControl& control) {
             control.progress(static_cast<double>(++done) / static_cast<double>(steps));
     };
     if (evaluationQueries_.empty()) {
-        const QuerySet kind = roomCount(*graph_) > 1 ? QuerySet::RoomSubsets : QuerySet::AllCells;
-        std::vector<Query> queries = randomQueries(*graph_, std::max(1, options_.evaluationQueries),
-                                                   options_.agent.seed ^ 0x5eedULL, kind);
+        // Spread over the floors (a generalist), each floor's queries from its own seed.
+        const int total = std::max(1, options_.evaluationQueries);
+        std::vector<Query> queries;
+        std::vector<std::size_t> floorOf;
+        for (int i = 0; i < total; ++i) {
+            const std::size_t floor = static_cast<std::size_t>(i) % floors_.size();
+            const CornerGraph& g = *floors_[floor];
+            const QuerySet kind = roomCount(g) > 1 ? QuerySet::RoomSubsets : QuerySet::AllCells;
+            const int round = i / static_cast<int>(floors_.size());
+            std::vector<Query> drawn = randomQueries(
+                g, round + 1, (options_.agent.seed ^ 0x5eedULL) + floor * 104729ULL, kind);
+            queries.push_back(drawn.back());
+            floorOf.push_back(floor);
+        }
         std::vector<double> costs;
         int exactCount = 0;
-        for (const Query& q : queries) {
+        for (std::size_t i = 0; i < queries.size(); ++i) {
             throwIfCancelled();
+            const Query& q = queries[i];
+            const CornerGraph& g = *floors_[floorOf[i]];
             const int cells = static_cast<int>(std::count(q.required.begin(), q.required.end(), 1));
             const bool exact = cells <= kExactReferenceCells;
             exactCount += exact ? 1 : 0;
-            costs.push_back(exact ? solveExact(*graph_, q, {}, inner).graphCost
-                                  : solveHeuristic(*graph_, q, inner).graphCost);
+            costs.push_back(exact ? solveExact(g, q, {}, inner).graphCost
+                                  : solveHeuristic(g, q, inner).graphCost);
             advance();
         }
         evaluationQueries_ = std::move(queries); // only complete references are kept
+        evaluationFloors_ = std::move(floorOf);
         referenceCosts_ = std::move(costs);
         referenceName_ = exactCount == static_cast<int>(evaluationQueries_.size()) ? "exact"
                          : exactCount == 0                                         ? "heuristic"
@@ -269,10 +350,10 @@ EvaluationReport DqnTrainer::evaluate(const SolveControl& control) {
         const Clock::time_point start = Clock::now();
         try {
             const Solution raw =
-                solveWithPolicy(*agent_, *graph_, evaluationQueries_[i], options_.environment,
-                                OrderRefinement::None, inner);
+                solveWithPolicy(*agent_, floorOfQuery(i), evaluationQueries_[i],
+                                options_.environment, OrderRefinement::None, inner);
             const Solution refined =
-                refineCellOrder(*graph_, evaluationQueries_[i], raw, options_.refinement,
+                refineCellOrder(floorOfQuery(i), evaluationQueries_[i], raw, options_.refinement,
                                 kPolicyRefinementBudget, inner);
             report.meanMilliseconds += 1000.0 * secondsSince(start);
             const double reference = std::max(referenceCosts_[i], 1e-9);
@@ -302,9 +383,16 @@ DqnModelInfo DqnTrainer::modelInfo() const {
     info.environment = options_.environment;
     info.nStep = options_.nStep;
     info.refinement = options_.refinement;
-    info.graphFingerprint = graphFingerprint(*graph_);
-    info.nodeCount = static_cast<int>(graph_->nodes.size());
-    info.cellCount = static_cast<int>(graph_->cells.size());
+    info.generalist = generalist_;
+    info.provenance = provenance_.empty() ? initialProvenance_ : provenance_;
+    // A generalist records its largest floor (only for messages) and no fingerprint.
+    const CornerGraph* shown = graph_;
+    for (const auto& floor : floors_)
+        if (floor->nodes.size() > shown->nodes.size())
+            shown = floor.get();
+    info.graphFingerprint = generalist_ ? 0 : graphFingerprint(*graph_);
+    info.nodeCount = static_cast<int>(shown->nodes.size());
+    info.cellCount = static_cast<int>(shown->cells.size());
     info.stripeAngleDeg = stripeAngleDeg_;
     info.coverageWidth = coverageWidth_;
     info.episodes = episodes_;

@@ -28,6 +28,11 @@ struct TrainingOptions {
     int evaluationInterval = 0;                         // episodes; 0 = no evaluation
     int evaluationQueries = 20;
     int movingAverageWindow = 100;
+    // Fine-tuning: the weights to start from (a generalist, or any graph model with the same
+    // network); exploration then starts at fineTuneEpsilon instead of epsilonStart, so that
+    // the first episodes follow the policy that is being refined. Null: from scratch.
+    std::shared_ptr<const DqnModel> initialModel;
+    double fineTuneEpsilon = 0.3;
 
     // The paper's setting: its network, optimiser and schedule, no masking, one-step targets,
     // the paper's rewards, the learnt walk as it is.
@@ -75,6 +80,11 @@ public:
     // Resumes a saved model (throws InputError when it was trained for another graph). The
     // replay memory is not saved: it refills from the restored policy.
     DqnTrainer(const CornerGraph& graph, DqnModel model, const std::string& source);
+    // A generalist: one graph-setting model for every floor of `floors` (each episode draws
+    // one; evaluation queries are spread over them). Throws std::invalid_argument for an
+    // empty set or the image setting.
+    DqnTrainer(std::vector<CornerGraph> floors, TrainingOptions options, double coverageWidth,
+               std::string provenance);
     ~DqnTrainer();
 
     // Trains until `episodes` more episodes (<= 0: no limit) or `seconds` more seconds (<= 0:
@@ -94,6 +104,7 @@ public:
     void save(const std::string& path) const;
     const DqnAgent& agent() const { return *agent_; }
     const CornerGraph& graph() const { return *graph_; }
+    bool generalist() const { return generalist_; }
     const TrainingOptions& options() const { return options_; }
     long episodes() const { return episodes_; }
 
@@ -108,17 +119,28 @@ private:
                const std::vector<char>& nextMask, bool done, bool all, double& lossSum,
                int& lossCount);
 
-    std::unique_ptr<CornerGraph> graph_; // stable address for the environment
+    void useFloor(std::size_t index);
+    const CornerGraph& floorOfQuery(std::size_t query) const;
+
+    // The floors trained on (one unless a generalist); graph_ and environment_ are the
+    // current episode's.
+    std::vector<std::unique_ptr<CornerGraph>> floors_; // stable addresses
+    std::vector<std::unique_ptr<CoverageEnvironment>> environments_;
+    CornerGraph* graph_ = nullptr;
+    bool generalist_ = false;
+    std::string provenance_;
+    std::string initialProvenance_; // fine-tuning: where the weights came from
     TrainingOptions options_;
     double stripeAngleDeg_ = 90.0;
     double coverageWidth_ = 1.0;
-    std::unique_ptr<CoverageEnvironment> environment_;
+    CoverageEnvironment* environment_ = nullptr;
     std::unique_ptr<DqnAgent> agent_;
     std::mt19937_64 rng_;
     long episodes_ = 0;
     double seconds_ = 0.0;
     std::deque<double> recentRewards_;
     std::vector<Query> evaluationQueries_;
+    std::vector<std::size_t> evaluationFloors_; // floor index per evaluation query
     std::vector<double> referenceCosts_;
     std::string referenceName_;
 };

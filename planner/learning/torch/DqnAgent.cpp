@@ -111,9 +111,16 @@ std::vector<float> DqnAgent::targetQValues(const std::vector<float>& observation
 
 std::vector<float> DqnAgent::evaluate(bool target, const std::vector<float>& observations,
                                       int batch) const {
-    const auto length = static_cast<std::int64_t>(observationSize());
-    if (batch <= 0 || static_cast<std::int64_t>(observations.size()) != batch * length)
+    // The graph network takes any corner count (sizeFree); the image network its own size.
+    const std::size_t perSample =
+        batch > 0 ? observations.size() / static_cast<std::size_t>(batch) : 0;
+    const bool fits =
+        sizeFree()
+            ? perSample > 0 && perSample % static_cast<std::size_t>(params_.inputChannels) == 0
+            : perSample == observationSize();
+    if (batch <= 0 || !fits || perSample * static_cast<std::size_t>(batch) != observations.size())
         throw std::invalid_argument("DqnAgent::qValues: observation size mismatch");
+    const auto length = static_cast<std::int64_t>(perSample);
     torch::NoGradGuard noGrad;
     const torch::Tensor input =
         torch::from_blob(const_cast<float*>(observations.data()), {batch, length}, torch::kFloat32);
@@ -125,56 +132,97 @@ std::vector<float> DqnAgent::evaluate(bool target, const std::vector<float>& obs
 int DqnAgent::greedyAction(const std::vector<float>& observation,
                            const std::vector<char>& mask) const {
     const std::vector<float> q = qValues(observation, 1);
+    const int actions = static_cast<int>(q.size());
     int best = -1;
-    if (params_.maskActions && static_cast<int>(mask.size()) == actionCount_)
-        best = maskedArgmax(q.data(), mask.data(), actionCount_);
+    if (params_.maskActions && static_cast<int>(mask.size()) == actions)
+        best = maskedArgmax(q.data(), mask.data(), actions);
     if (best < 0)
-        best = maskedArgmax(q.data(), nullptr, actionCount_);
+        best = maskedArgmax(q.data(), nullptr, actions);
     return best;
 }
 
 int DqnAgent::act(const std::vector<float>& observation, const std::vector<char>& mask,
                   double epsilon, std::mt19937_64& rng) const {
-    if (params_.maskActions && static_cast<int>(mask.size()) != actionCount_)
+    const int actions = actionsIn(observation);
+    if (params_.maskActions && static_cast<int>(mask.size()) != actions)
         throw std::invalid_argument("DqnAgent::act: mask size differs from the action count");
     std::uniform_real_distribution<double> coin(0.0, 1.0);
     if (coin(rng) < epsilon)
-        return uniformChoice(mask, actionCount_, params_.maskActions, rng);
+        return uniformChoice(mask, actions, params_.maskActions, rng);
     return greedyAction(observation, mask);
 }
 
+int DqnAgent::actionsIn(const std::vector<float>& observation) const {
+    if (!sizeFree())
+        return actionCount_;
+    return static_cast<int>(observation.size() / static_cast<std::size_t>(params_.inputChannels));
+}
+
 void DqnAgent::remember(Transition transition) {
-    const std::size_t pixels = observationSize();
-    if (transition.observation.size() != pixels || transition.nextObservation.size() != pixels ||
-        transition.nextMask.size() != static_cast<std::size_t>(actionCount_) ||
-        transition.action < 0 || transition.action >= actionCount_)
+    const auto channels = static_cast<std::size_t>(params_.inputChannels);
+    const bool fits =
+        sizeFree()
+            ? !transition.observation.empty() && transition.observation.size() % channels == 0 &&
+                  transition.nextObservation.size() == transition.nextMask.size() * channels &&
+                  transition.action < actionsIn(transition.observation)
+            : transition.observation.size() == observationSize() &&
+                  transition.nextObservation.size() == observationSize() &&
+                  transition.nextMask.size() == static_cast<std::size_t>(actionCount_) &&
+                  transition.action < actionCount_;
+    if (!fits || transition.action < 0)
         throw std::invalid_argument("DqnAgent::remember: transition does not fit the agent");
     memory_.push(std::move(transition));
 }
+
+namespace {
+
+// Observations of one batch laid out back to back, each padded to `corners` corners with
+// zero rows (invalid corners, which the graph network ignores); masks padded with 0.
+void appendPadded(const std::vector<float>& from, std::size_t length, std::vector<float>& to) {
+    const std::size_t at = to.size();
+    to.resize(at + length, 0.0f);
+    std::copy(from.begin(), from.end(), to.begin() + static_cast<std::ptrdiff_t>(at));
+}
+
+} // namespace
 
 double DqnAgent::trainStep() {
     useOneThread();
     const auto batch = static_cast<std::size_t>(params_.batchSize);
     const std::vector<std::size_t> indices = memory_.sample(batch, rng_);
-    const std::size_t pixels = observationSize();
-    const auto actions = static_cast<std::size_t>(actionCount_);
+    const auto channels = static_cast<std::size_t>(params_.inputChannels);
+    // Graph network: transitions of graphs of different sizes share a batch, padded to the
+    // largest (separately for the states and the next states).
+    std::size_t pixels = observationSize();
+    std::size_t nextPixels = pixels;
+    if (sizeFree()) {
+        pixels = nextPixels = 0;
+        for (std::size_t index : indices) {
+            pixels = std::max(pixels, memory_.at(index).observation.size());
+            nextPixels = std::max(nextPixels, memory_.at(index).nextObservation.size());
+        }
+        nextPixels = std::max(nextPixels, channels); // a terminal state may have no corner
+    }
+    const std::size_t actions =
+        sizeFree() ? nextPixels / channels : static_cast<std::size_t>(actionCount_);
 
-    std::vector<float> observations(batch * pixels);
-    std::vector<float> nextObservations(batch * pixels);
+    std::vector<float> observations;
+    std::vector<float> nextObservations;
+    observations.reserve(batch * pixels);
+    nextObservations.reserve(batch * nextPixels);
     std::vector<std::int64_t> chosen(batch);
     DoubleDqnBatch targetsInput;
-    targetsInput.actionCount = actionCount_;
+    targetsInput.actionCount = static_cast<int>(actions);
     targetsInput.rewards.resize(batch);
     targetsInput.dones.resize(batch);
     targetsInput.steps.resize(batch);
-    targetsInput.nextMask.resize(batch * actions);
+    targetsInput.nextMask.assign(batch * actions, 0);
     for (std::size_t i = 0; i < batch; ++i) {
         const Transition& t = memory_.at(indices[i]);
-        std::copy(t.observation.begin(), t.observation.end(), observations.begin() + i * pixels);
-        std::copy(t.nextObservation.begin(), t.nextObservation.end(),
-                  nextObservations.begin() + i * pixels);
+        appendPadded(t.observation, pixels, observations);
+        appendPadded(t.nextObservation, nextPixels, nextObservations);
         std::copy(t.nextMask.begin(), t.nextMask.end(),
-                  targetsInput.nextMask.begin() + i * actions);
+                  targetsInput.nextMask.begin() + static_cast<std::ptrdiff_t>(i * actions));
         chosen[i] = t.action;
         targetsInput.rewards[i] = t.reward;
         targetsInput.dones[i] = t.done ? 1.0f : 0.0f;
@@ -183,8 +231,8 @@ double DqnAgent::trainStep() {
 
     const auto b = static_cast<std::int64_t>(batch);
     const auto length = static_cast<std::int64_t>(pixels);
-    const torch::Tensor next =
-        torch::from_blob(nextObservations.data(), {b, length}, torch::kFloat32);
+    const torch::Tensor next = torch::from_blob(
+        nextObservations.data(), {b, static_cast<std::int64_t>(nextPixels)}, torch::kFloat32);
     {
         torch::NoGradGuard noGrad;
         const torch::Tensor onlineQ = impl_->online->forward(next).contiguous();

@@ -75,7 +75,8 @@ public:
     // Greedy action (epsilon 0).
     int greedyAction(const std::vector<float>& observation, const std::vector<char>& mask) const;
 
-    // Online Q values for `batch` observations laid out back to back: batch x actionCount.
+    // Online Q values for `batch` observations laid out back to back: batch x actionCount
+    // (graph network: batch x the observations' corner count, the same for all of them).
     std::vector<float> qValues(const std::vector<float>& observations, int batch) const;
     // The same from the target network.
     std::vector<float> targetQValues(const std::vector<float>& observations, int batch) const;
@@ -110,6 +111,12 @@ public:
     // Floats per observation: inputChannels x SIZE x SIZE, or actionCount x inputChannels.
     std::size_t observationSize() const;
     int actionCount() const { return actionCount_; }
+    // The graph network scores graphs of any corner count: its observations, masks and
+    // transitions may have any number of corners (actionCount is then the size it was made
+    // for, nothing more), and one model serves every floor plan (a generalist).
+    bool sizeFree() const { return params_.network == QNetworkKind::Graph; }
+    // Actions of one observation: its corners for the graph network, else actionCount.
+    int actionsIn(const std::vector<float>& observation) const;
     const DqnHyperParameters& parameters() const { return params_; }
     const ReplayMemory& memory() const { return memory_; }
 

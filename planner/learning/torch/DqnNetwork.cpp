@@ -43,11 +43,15 @@ torch::Tensor QNetworkImpl::forward(torch::Tensor x) {
 // Only the valid corners (feature 0) are encoded and scored: the others are never chosen
 // (masked acting and argmax) and get Q = 0. Rows of all samples are stacked, so the cost
 // follows the valid corners of the batch, not batch x corners.
+// The corner count comes from the input, not the constructor: the weights are shared by all
+// corners, so one network scores graphs of any size (a generalist model; batches of several
+// graphs are padded with invalid corners).
 torch::Tensor QNetworkImpl::forwardGraph(torch::Tensor x) {
     const std::int64_t batch = x.size(0);
-    const torch::Tensor flat = x.reshape({batch * actionCount_, channels_});
+    const std::int64_t corners = x.size(1) / channels_;
+    const torch::Tensor flat = x.reshape({batch * corners, channels_});
     const torch::Tensor rows = (flat.select(1, 0) > 0.5f).nonzero().squeeze(1);
-    const torch::Tensor owner = torch::div(rows, actionCount_, "floor");
+    const torch::Tensor owner = torch::div(rows, corners, "floor");
     torch::Tensor h = torch::relu(encode1_->forward(flat.index_select(0, rows)));
     h = torch::relu(encode2_->forward(h)); // [valid rows, hidden]
     const std::int64_t hidden = h.size(1);
@@ -55,17 +59,15 @@ torch::Tensor QNetworkImpl::forwardGraph(torch::Tensor x) {
     const torch::Tensor count =
         torch::zeros({batch}).index_add(0, owner, torch::ones({rows.size(0)})).clamp_min(1.0f);
     // Encodings are >= 0 (ReLU), so zeros stand in for the other corners in the max.
-    const torch::Tensor max = std::get<0>(torch::zeros({batch * actionCount_, hidden})
+    const torch::Tensor max = std::get<0>(torch::zeros({batch * corners, hidden})
                                               .index_copy(0, rows, h)
-                                              .reshape({batch, actionCount_, hidden})
+                                              .reshape({batch, corners, hidden})
                                               .max(1));
     const torch::Tensor context =
         context_->forward(torch::cat({sum / count.unsqueeze(1), max}, 1)); // [batch, hidden]
     torch::Tensor q = torch::relu(head1_->forward(h) + context.index_select(0, owner));
     q = head2_->forward(q).squeeze(1);
-    return torch::zeros({batch * actionCount_})
-        .index_copy(0, rows, q)
-        .reshape({batch, actionCount_});
+    return torch::zeros({batch * corners}).index_copy(0, rows, q).reshape({batch, corners});
 }
 
 torch::Tensor QNetworkImpl::forwardImage(torch::Tensor x) {

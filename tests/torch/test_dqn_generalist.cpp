@@ -1,0 +1,186 @@
+// The generalist DQN model (issue 17, items 1 and 2): a graph network that scores graphs of
+// any size, trained on several floors at once, compiled into the program, used by solver dqn
+// without a model file, and the start of fine-tuning.
+#include "DqnTestSupport.h"
+#include "learning/dqn/DqnPolicy.h"
+#include "learning/dqn/DqnSolver.h"
+#include "learning/dqn/GeneralistModel.h"
+#include "model/SyntheticPlans.h"
+
+#include <cmath>
+#include <gtest/gtest.h>
+#include <sstream>
+
+using namespace fc;
+
+namespace {
+
+using fc::test::preparedSample;
+using fc::test::smallOptions;
+
+// A graph-network observation of `corners` corners: feature 0 marks the valid ones.
+std::vector<float> graphObservation(int corners, int channels, std::uint64_t seed) {
+    std::mt19937_64 rng(seed);
+    std::uniform_real_distribution<float> value(0.0f, 1.0f);
+    std::vector<float> obs(static_cast<std::size_t>(corners * channels));
+    for (int c = 0; c < corners; ++c) {
+        obs[static_cast<std::size_t>(c * channels)] = c % 3 == 2 ? 0.0f : 1.0f;
+        for (int f = 1; f < channels; ++f)
+            obs[static_cast<std::size_t>(c * channels + f)] = value(rng);
+    }
+    return obs;
+}
+
+std::vector<char> maskOf(const std::vector<float>& obs, int channels) {
+    std::vector<char> mask(obs.size() / static_cast<std::size_t>(channels));
+    for (std::size_t c = 0; c < mask.size(); ++c)
+        mask[c] = obs[c * static_cast<std::size_t>(channels)] > 0.5f ? 1 : 0;
+    return mask;
+}
+
+DqnHyperParameters graphParameters() {
+    DqnHyperParameters p;
+    p.network = QNetworkKind::Graph;
+    p.inputChannels = 6;
+    p.hiddenUnits = 16;
+    p.batchSize = 8;
+    p.learningStarts = 4;
+    p.targetSyncInterval = 10;
+    p.seed = 3;
+    return p;
+}
+
+std::vector<CornerGraph> generatedFloors() {
+    std::vector<CornerGraph> floors;
+    for (const Plan& plan : {generateHallWithObstacles(14.0, 9.0, 2, 3), generateOfficeFloor(3, 4)})
+        floors.push_back(preparePlan(plan, RobotProfile{}, 90.0).graph);
+    return floors;
+}
+
+} // namespace
+
+// The same network scores a graph of 5 corners and one of 9, and padding a state with invalid
+// corners (as mixed batches are) changes no Q value of its own corners.
+TEST(GraphAgent, ScoresGraphsOfAnySizeAndTrainsOnMixedBatches) {
+    const DqnHyperParameters p = graphParameters();
+    DqnAgent agent(3, 9, p);
+    ASSERT_TRUE(agent.sizeFree());
+    const std::vector<float> small = graphObservation(5, p.inputChannels, 1);
+    const std::vector<float> large = graphObservation(9, p.inputChannels, 2);
+    const std::vector<float> qSmall = agent.qValues(small, 1);
+    ASSERT_EQ(qSmall.size(), 5u);
+    EXPECT_EQ(agent.qValues(large, 1).size(), 9u);
+    std::vector<float> padded = small;
+    padded.resize(large.size(), 0.0f);
+    const std::vector<float> qPadded = agent.qValues(padded, 1);
+    for (std::size_t a = 0; a < qSmall.size(); ++a)
+        EXPECT_NEAR(qSmall[a], qPadded[a], 1e-5f) << "corner " << a;
+    for (std::size_t a = qSmall.size(); a < qPadded.size(); ++a)
+        EXPECT_EQ(qPadded[a], 0.0f);
+    const int chosen = agent.greedyAction(small, maskOf(small, p.inputChannels));
+    ASSERT_GE(chosen, 0);
+    EXPECT_TRUE(maskOf(small, p.inputChannels)[static_cast<std::size_t>(chosen)]);
+
+    // Transitions of both sizes in one memory; batches mix them.
+    double lossSum = 0.0;
+    int losses = 0;
+    for (int i = 0; i < 40; ++i) {
+        const bool big = i % 2 == 1;
+        Transition t;
+        t.observation = big ? large : small;
+        t.action = 0;
+        t.reward = -0.5f;
+        t.nextObservation = big ? small : large; // sizes may differ between the two sides
+        t.nextMask = maskOf(t.nextObservation, p.inputChannels);
+        t.done = i % 5 == 4;
+        const double loss = agent.observe(std::move(t));
+        if (!std::isnan(loss)) {
+            EXPECT_TRUE(std::isfinite(loss));
+            lossSum += loss;
+            ++losses;
+        }
+    }
+    EXPECT_GT(losses, 30);
+    EXPECT_TRUE(std::isfinite(lossSum));
+    Transition wrong;
+    wrong.observation = small;
+    wrong.action = 7; // beyond its 5 corners
+    wrong.nextObservation = large;
+    wrong.nextMask = maskOf(large, p.inputChannels);
+    EXPECT_THROW(agent.remember(std::move(wrong)), std::invalid_argument);
+}
+
+// A generalist trains on several floors, is saved as such, and plans a floor it never saw
+// (no fingerprint refuses it), always finishing.
+TEST(Generalist, TrainsOnSeveralFloorsAndPlansAnUnseenFloor) {
+    TrainingOptions options = smallOptions(TrainingOptions::graph(2));
+    options.evaluationQueries = 6;
+    DqnTrainer trainer(generatedFloors(), options, 1.0, "a test");
+    EXPECT_TRUE(trainer.generalist());
+    EXPECT_EQ(trainer.train(40, 0.0), TrainingStop::EpisodeLimit);
+    const EvaluationReport report = trainer.evaluate();
+    EXPECT_EQ(report.queries, 6);
+    EXPECT_EQ(report.failures, 0);
+
+    std::istringstream in(fc::test::serialized(trainer));
+    const DqnModel model = readDqnModel(in, "memory");
+    EXPECT_TRUE(model.info.generalist);
+    EXPECT_EQ(model.info.provenance, "a test");
+    EXPECT_EQ(model.info.graphFingerprint, 0u);
+    const PreparedPlan unseen = preparedSample("room-obstacle");
+    EXPECT_NO_THROW(checkModelFitsGraph(model.info, unseen.graph, "memory"));
+    const std::vector<Query> queries = randomQueries(unseen.graph, 3, 5, QuerySet::AllCells);
+    for (const Query& q : queries) {
+        const Solution s = solveWithPolicy(*model.agent, unseen.graph, q, model.info.environment,
+                                           model.info.refinement);
+        EXPECT_TRUE(evaluateWalk(unseen.graph, q, s.walk).coversAllRequired);
+    }
+    // Only the graph setting makes a generalist.
+    EXPECT_THROW(DqnTrainer(generatedFloors(), smallOptions(TrainingOptions::improved(1)), 1.0, ""),
+                 std::invalid_argument);
+    EXPECT_THROW(DqnTrainer(std::vector<CornerGraph>{}, options, 1.0, ""), std::invalid_argument);
+}
+
+// The model compiled in loads, says how it was made, and solver dqn plans a sample plan with
+// it when no model file is given, at the floor's own sweep angles.
+TEST(Generalist, BuiltInModelPlansWithoutAModelFile) {
+    const std::shared_ptr<const DqnModel> model = generalistModel();
+    ASSERT_TRUE(model);
+    EXPECT_TRUE(model->info.generalist);
+    EXPECT_NE(model->info.provenance.find("floorcover-train-generalist"), std::string::npos);
+    EXPECT_GT(model->info.episodes, 0);
+    EXPECT_EQ(generalistModel().get(), model.get()); // parsed once
+
+    registerDqnSolver();
+    PlanRequest request;
+    request.plan = fc::test::samplePlan("room-obstacle");
+    request.solver = "dqn";
+    const PlanResult result = planCoverage(request);
+    EXPECT_EQ(result.solution.solver, "dqn");
+    EXPECT_GE(result.metrics.coverage, 0.99);
+}
+
+// Fine-tuning starts from the generalist's weights (the same Q values before any step),
+// explores less at first, and makes a model of this plan that says where it came from.
+TEST(Generalist, FineTuningStartsFromItsWeights) {
+    const PreparedPlan plan = preparedSample("simple");
+    TrainingOptions options = TrainingOptions::graph(4);
+    options.initialModel = generalistModel();
+    DqnTrainer trainer(plan.graph, options, 90.0, 1.0);
+    EXPECT_FALSE(trainer.options().initialModel); // not kept alive
+    EXPECT_LE(trainer.agent().epsilon(), options.fineTuneEpsilon + 1e-12);
+    CoverageEnvironment env(plan.graph, trainer.options().environment);
+    std::mt19937_64 rng(8);
+    const std::vector<float> obs = env.reset(rng);
+    EXPECT_EQ(trainer.agent().qValues(obs, 1), generalistModel()->agent->qValues(obs, 1));
+    trainer.train(5, 0.0);
+    const DqnModelInfo info = trainer.modelInfo();
+    EXPECT_FALSE(info.generalist);
+    EXPECT_EQ(info.graphFingerprint, graphFingerprint(plan.graph));
+    EXPECT_NE(info.provenance.find("generalist"), std::string::npos);
+
+    // An image-setting run cannot start from it.
+    TrainingOptions image = TrainingOptions::improved(4);
+    image.initialModel = generalistModel();
+    EXPECT_THROW(DqnTrainer(plan.graph, image, 90.0, 1.0), InputError);
+}
