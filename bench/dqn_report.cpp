@@ -4,18 +4,21 @@
 //   floorcover-dqn-report [--seconds S] [--seed N] [--queries N] [--cases a,b]
 //                         [--settings paper,improved,improved+gamma=1,...] --out DIR
 //   floorcover-dqn-report --model FILE --cases NAME [--refine none|corners|local-search]
+//   floorcover-dqn-report --model generalist --cases a,b   (the built-in generalist)
 // A case is a sample plan's name or generated-office-N (a generated floor of N rooms).
 // A setting is "paper", "improved" or "graph", optionally followed by "+key=value" changes (an
 // ablation): state=image|graph (the state and its network), mask=0|1, reward=paper|cost, nstep=N,
 // gamma=G, lr=R, eps=STEPS, net=paper|small, refine=none|corners|local-search, cost=SCALE (reward
 // per longest edge), sync=STEPS, batch=N, features=0|1, graphfeatures=14|16, conv=C (all three
-// layers), hidden=N. Writes DIR/curves-<case>-<setting>.csv and prints a Markdown table
-// (docs/dqn.md). Time is the training thread's CPU time, so a busy machine does not change the
-// figures.
+// layers), hidden=N, init=generalist (fine-tune the built-in generalist). Writes
+// DIR/curves-<case>-<setting>.csv and prints a Markdown table (docs/dqn.md). Time is the training
+// thread's CPU time, so a busy machine does not change the figures.
 #include "formats/PlanIO.h"
 #include "learning/dqn/DqnModelFile.h"
 #include "learning/dqn/DqnPolicy.h"
 #include "learning/dqn/DqnTrainer.h"
+#include "learning/dqn/GeneralistModel.h"
+#include "learning/dqn/PolicyBeam.h"
 #include "model/SyntheticPlans.h"
 #include "pipeline/Planner.h"
 
@@ -121,6 +124,8 @@ TrainingOptions settingOptions(const std::string& setting, std::uint64_t seed) {
             o.environment.graphFeatures = std::stoi(value);
         else if (key == "refine")
             o.refinement = refinementFromName(value);
+        else if (key == "init" && value == "generalist")
+            o.initialModel = generalistModel(); // fine-tuning (issue 17, item 2)
         else
             throw std::invalid_argument("unknown setting change " + key);
     }
@@ -140,6 +145,9 @@ struct FinalFigures {
     int queries = 0, failures = 0, exactReferences = 0;
     double meanGap = 0, maxGap = 0, meanRefinedGap = 0, maxRefinedGap = 0, greedyGap = 0;
     double refinedGreedyGap = 0; // greedy's walk under the same refinement: what the policy adds
+    double beamGap = 0,
+           refinedBeamGap = 0; // the policy's beam search (PolicyBeam.h), alone / refined
+    double beamMs = 0;         // the beam + refinement per query
     double meanMs = 0, maxMs = 0;
 };
 
@@ -181,6 +189,14 @@ FinalFigures measure(const DqnAgent& agent, const CornerGraph& graph,
                     reference -
                 1.0;
             f.refinedGreedyGap += greedyRefined;
+            const double tBeam = threadCpuSeconds();
+            const Solution beamWalk =
+                policyBeamWalk(agent, graph, q, environment, kPolicyBeamWidth);
+            const Solution beamRefined =
+                refineCellOrder(graph, q, beamWalk, refinement, kPolicyRefinementBudget);
+            f.beamMs += 1000.0 * (threadCpuSeconds() - tBeam);
+            f.beamGap += beamWalk.graphCost / reference - 1.0;
+            f.refinedBeamGap += beamRefined.graphCost / reference - 1.0;
             if (std::getenv("FC_DQN_REPORT_QUERIES"))
                 std::fprintf(stderr,
                              "query cells=%d ref=%.1f policy=%.3f dqn=%.3f greedy=%.3f "
@@ -197,6 +213,9 @@ FinalFigures measure(const DqnAgent& agent, const CornerGraph& graph,
     f.meanRefinedGap /= ok;
     f.greedyGap /= ok;
     f.refinedGreedyGap /= ok;
+    f.beamGap /= ok;
+    f.refinedBeamGap /= ok;
+    f.beamMs /= ok;
     f.meanMs /= ok;
     return f;
 }
@@ -223,10 +242,11 @@ void printRow(const std::string& name, const std::string& setting, long episodes
                             : f.exactReferences == 0       ? "heuristic"
                                                            : "exact/heuristic";
     std::printf("| %s | %s | %ld | %ld | %.2f%% | %.1f%% | %.2f%% | %.2f%% | %.2f%% | %.2f%% | "
-                "%d/%d | %s | %.1f (%.1f) |\n",
+                "%.2f%% | %.2f%% | %d/%d | %s | %.1f (%.1f) | %.1f |\n",
                 name.c_str(), setting.c_str(), episodes, steps, 100 * f.meanGap, 100 * f.maxGap,
                 100 * f.meanRefinedGap, 100 * f.maxRefinedGap, 100 * f.greedyGap,
-                100 * f.refinedGreedyGap, f.failures, f.queries, reference, f.meanMs, f.maxMs);
+                100 * f.refinedGreedyGap, 100 * f.beamGap, 100 * f.refinedBeamGap, f.failures,
+                f.queries, reference, f.meanMs, f.maxMs, f.beamMs);
     std::fflush(stdout);
 }
 
@@ -237,21 +257,35 @@ Case caseOf(const std::string& name) {
 }
 
 // --model FILE: measures a saved model on its case (no training), e.g. to compare inference
-// options on one trained policy.
+// options on one trained policy. --model generalist: the built-in generalist on every case
+// (no per-plan training at all).
 int measureSavedModel(const Options& o) {
-    if (o.cases.size() != 1)
+    const bool generalist = o.model == "generalist";
+    if (o.cases.size() != 1 && !generalist)
         throw std::invalid_argument("--model needs exactly one case (--cases NAME)");
-    const std::string& name = o.cases.front();
-    const Project project = loadCase(name, o.seed);
-    const DqnModel model = loadDqnModelFile(o.model);
-    const PreparedPlan prepared =
-        preparePlan(project.plan, project.robot, model.info.stripeAngleDeg);
-    checkModelFitsGraph(model.info, prepared.graph, o.model);
-    const OrderRefinement refinement =
-        o.refinement.empty() ? model.info.refinement : refinementFromName(o.refinement);
-    const FinalFigures f = measure(*model.agent, prepared.graph, model.info.environment, refinement,
-                                   caseOf(name), o.queries, o.seed);
-    printRow(name, model.info.setting + " (saved)", model.info.episodes, model.info.steps, f);
+    std::shared_ptr<const DqnModel> model;
+    if (generalist) {
+        const double before = threadCpuSeconds();
+        model = generalistModel();
+        std::fprintf(stderr, "generalist loaded in %.3f s: %s\n", threadCpuSeconds() - before,
+                     model->info.provenance.c_str());
+    } else {
+        model = std::make_shared<DqnModel>(loadDqnModelFile(o.model));
+    }
+    for (const std::string& name : o.cases) {
+        const Project project = loadCase(name, o.seed);
+        const PreparedPlan prepared = preparePlan(project.plan, project.robot,
+                                                  generalist ? 90.0 : model->info.stripeAngleDeg);
+        checkModelFitsGraph(model->info, prepared.graph, o.model);
+        const OrderRefinement refinement =
+            o.refinement.empty() ? model->info.refinement : refinementFromName(o.refinement);
+        const FinalFigures f = measure(*model->agent, prepared.graph, model->info.environment,
+                                       refinement, caseOf(name), o.queries, o.seed);
+        printRow(name,
+                 generalist ? "generalist (no training on this plan)"
+                            : model->info.setting + " (saved)",
+                 model->info.episodes, model->info.steps, f);
+    }
     return 0;
 }
 
@@ -283,9 +317,9 @@ int main(int argc, char** argv) {
         }
     }
     std::printf("| plan | setting | episodes | env steps | gap (policy) | max gap | gap (dqn "
-                "solver) | max | greedy gap | greedy refined | failures | reference | ms/query "
-                "(max) |\n");
-    std::printf("|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---|---:|\n");
+                "solver) | max | greedy gap | greedy refined | beam 4 | beam 4 refined | failures "
+                "| reference | ms/query (max) | beam ms |\n");
+    std::printf("|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---|---:|---:|\n");
     if (!o.model.empty())
         return measureSavedModel(o);
     std::error_code created; // the curves and models go there; a missing folder is made

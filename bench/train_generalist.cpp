@@ -4,7 +4,7 @@
 // round pillars, pillar halls, office floors of 4-16 rooms and halls with obstacles. Each
 // episode draws one floor, a random start and end and a random set of cells still to cover.
 //   floorcover-train-generalist [--floors N] [--episodes N | --seconds S] [--seed N]
-//                               [--evaluate-every N] --out FILE
+//                               [--evaluate-every N] [--hidden N] [--lr R] --out FILE
 // One thread; with --episodes the model is the same bit for bit on every run.
 #include "PlanGenerator.h"
 #include "learning/dqn/DqnModelFile.h"
@@ -30,6 +30,8 @@ struct Options {
     double seconds = 0.0;
     std::uint64_t seed = 1;
     int evaluateEvery = 0;
+    int hidden = 0;            // 0: the graph setting's
+    double learningRate = 0.0; // 0: the graph setting's
     std::string out;
 };
 
@@ -83,6 +85,12 @@ std::vector<CornerGraph> trainingFloors(const Options& o) {
     return floors;
 }
 
+std::string argumentText(double value) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%g", value);
+    return text;
+}
+
 bool parse(int argc, char** argv, Options& o) {
     for (int i = 1; i < argc; ++i) {
         const std::string arg = argv[i];
@@ -97,6 +105,10 @@ bool parse(int argc, char** argv, Options& o) {
             o.seed = std::strtoull(argv[++i], nullptr, 10);
         else if (arg == "--evaluate-every" && hasValue)
             o.evaluateEvery = std::atoi(argv[++i]);
+        else if (arg == "--hidden" && hasValue)
+            o.hidden = std::atoi(argv[++i]);
+        else if (arg == "--lr" && hasValue)
+            o.learningRate = std::atof(argv[++i]);
         else if (arg == "--out" && hasValue)
             o.out = argv[++i];
         else
@@ -111,7 +123,7 @@ int main(int argc, char** argv) {
     Options o;
     if (!parse(argc, argv, o)) {
         std::cerr << "usage: floorcover-train-generalist [--floors N] [--episodes N | --seconds "
-                     "S] [--seed N] [--evaluate-every N] --out FILE\n";
+                     "S] [--seed N] [--evaluate-every N] [--hidden N] [--lr R] --out FILE\n";
         return 2;
     }
     std::vector<CornerGraph> floors = trainingFloors(o);
@@ -125,10 +137,18 @@ int main(int argc, char** argv) {
     // Many floors: a longer memory and exploration schedule than one plan's.
     options.agent.replayCapacity = 20'000;
     options.agent.epsilonDecaySteps = 30'000;
+    if (o.hidden > 0)
+        options.agent.hiddenUnits = o.hidden;
+    if (o.learningRate > 0.0)
+        options.agent.learningRate = o.learningRate;
     std::string provenance = "floorcover-train-generalist --floors " + std::to_string(o.floors) +
                              " --seed " + std::to_string(o.seed);
     provenance += o.episodes > 0 ? " --episodes " + std::to_string(o.episodes)
                                  : " --seconds " + std::to_string(o.seconds);
+    if (o.hidden > 0)
+        provenance += " --hidden " + std::to_string(o.hidden);
+    if (o.learningRate > 0.0)
+        provenance += " --lr " + argumentText(o.learningRate);
     DqnTrainer trainer(std::move(floors), options, RobotProfile{}.coverageWidth, provenance);
     const auto start = std::chrono::steady_clock::now();
     long shown = 0;
@@ -149,7 +169,7 @@ int main(int argc, char** argv) {
     const EvaluationReport report = trainer.evaluate();
     trainer.save(o.out);
     std::printf("trained %ld episodes in %.0f s on %d floors; policy alone %.2f%% above the "
-                "reference on %d held queries of the training floors (refined %.2f%%); saved %s\n",
+                "reference on %d queries of its training floors (refined %.2f%%); saved %s\n",
                 trainer.episodes(), seconds, o.floors, 100.0 * report.meanGap, report.queries,
                 100.0 * report.meanRefinedGap, o.out.c_str());
     return 0;

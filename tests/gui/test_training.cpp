@@ -12,6 +12,7 @@
 #include "tasks/Task.h"
 #include "tasks/TaskListWidget.h"
 
+#include <QCheckBox>
 #include <QComboBox>
 #include <QDoubleSpinBox>
 #include <QElapsedTimer>
@@ -128,11 +129,28 @@ void TrainingDockTest::trainsWithTheGraphStateSetting() {
     const DqnModelInfo info = loadDqnModelInfo(path.toStdString());
     QCOMPARE(info.setting, std::string("graph"));
     QVERIFY(info.environment.graphState);
+    // "From the generalist" is on by default: the model was fine-tuned from it.
+    QVERIFY2(info.provenance.find("generalist") != std::string::npos, info.provenance.c_str());
+    QVERIFY(!info.generalist);
     PlanRequest request;
     request.plan = loadProjectFile(std::string(FC_PLANS_DIR) + "/simple.geojson").plan;
     request.solver = "dqn";
     request.modelPath = path.toStdString();
     QVERIFY(planCoverage(request).metrics.coverage >= 0.99);
+
+    // Off: from random weights. The box only applies to the graph state.
+    auto* fromGeneralist = dock.findChild<QCheckBox*>();
+    QVERIFY(fromGeneralist != nullptr);
+    QVERIFY(fromGeneralist->isEnabled());
+    fromGeneralist->setChecked(false);
+    dock.start();
+    QTRY_VERIFY_WITH_TIMEOUT(dock.episodes() >= 5, 30000);
+    dock.stop();
+    QTRY_COMPARE_WITH_TIMEOUT(dock.state(), TrainingDock::State::Finished, 10000);
+    QVERIFY2(dock.saveModel(path), qPrintable(dock.lastError()));
+    QVERIFY(loadDqnModelInfo(path.toStdString()).provenance.empty());
+    setting->setCurrentIndex(setting->findData(QStringLiteral("improved")));
+    QVERIFY(!fromGeneralist->isEnabled());
 }
 
 void TrainingDockTest::refusesAModelOfAnotherPlanAndKeepsItsOwn() {

@@ -5,9 +5,11 @@
 #include "learning/dqn/DqnPolicy.h"
 #include "learning/dqn/DqnSolver.h"
 #include "learning/dqn/GeneralistModel.h"
+#include "learning/dqn/PolicyBeam.h"
 #include "model/SyntheticPlans.h"
 
 #include <cmath>
+#include <cstdio>
 #include <gtest/gtest.h>
 #include <sstream>
 
@@ -183,4 +185,36 @@ TEST(Generalist, FineTuningStartsFromItsWeights) {
     TrainingOptions image = TrainingOptions::improved(4);
     image.initialModel = generalistModel();
     EXPECT_THROW(DqnTrainer(plan.graph, image, 90.0, 1.0), InputError);
+}
+
+// The policy as a search guide: width 1 is the greedy rollout, step for step; a wider beam
+// covers every required cell, is never dearer than the rollout, and is cancellable.
+TEST(PolicyBeam, WidthOneIsTheRolloutAndWiderBeamsFinish) {
+    const std::shared_ptr<const DqnModel> model = generalistModel();
+    const PreparedPlan plan = preparedSample("room-obstacle");
+    double rolloutSum = 0.0, beamSum = 0.0;
+    for (const Query& q : randomQueries(plan.graph, 8, 3, QuerySet::AllCells)) {
+        const Solution rollout =
+            solveWithPolicy(*model->agent, plan.graph, q, model->info.environment);
+        const Solution one =
+            policyBeamWalk(*model->agent, plan.graph, q, model->info.environment, 1);
+        EXPECT_EQ(one.walk.nodes, rollout.walk.nodes);
+        EXPECT_DOUBLE_EQ(one.graphCost, rollout.graphCost);
+        const Solution four =
+            policyBeamWalk(*model->agent, plan.graph, q, model->info.environment, 4);
+        EXPECT_TRUE(evaluateWalk(plan.graph, q, four.walk).coversAllRequired);
+        EXPECT_LE(four.graphCost, rollout.graphCost + 1e-9);
+        rolloutSum += rollout.graphCost;
+        beamSum += four.graphCost;
+    }
+    std::printf("room-obstacle, 8 queries: rollout %.1f, beam of 4 %.1f (graph cost)\n", rolloutSum,
+                beamSum);
+    const Query q = randomQueries(plan.graph, 1, 4, QuerySet::AllCells).front();
+    SolveControl cancelled;
+    cancelled.cancelled = [] { return true; };
+    EXPECT_THROW(
+        policyBeamWalk(*model->agent, plan.graph, q, model->info.environment, 4, cancelled),
+        SolverError);
+    EXPECT_THROW(policyBeamWalk(*model->agent, plan.graph, q, model->info.environment, 0),
+                 std::invalid_argument);
 }

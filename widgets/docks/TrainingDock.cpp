@@ -84,12 +84,12 @@ void TrainingDock::buildUi() {
     pauseButton_->setToolTip(tr("Pause training and keep the model so far; Resume goes on."));
     stopButton_->setToolTip(tr("End training; the model so far is kept for solver dqn."));
     controls->addWidget(setting_);
-    controls->addWidget(fromGeneralist_);
     controls->addWidget(budget_);
     controls->addWidget(startButton_);
     controls->addWidget(pauseButton_);
     controls->addWidget(stopButton_);
     layout->addLayout(controls);
+    layout->addWidget(fromGeneralist_); // its own row: the dock stays as narrow as before
 
     progress_ = new QProgressBar(body);
     progress_->setRange(0, 1000);

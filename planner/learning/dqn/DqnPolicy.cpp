@@ -1,6 +1,7 @@
 #include "learning/dqn/DqnPolicy.h"
 
 #include "learning/CoverageEnvironment.h"
+#include "learning/dqn/PolicyBeam.h"
 #include "learning/torch/DqnTargets.h"
 
 #include <algorithm>
@@ -12,7 +13,7 @@ namespace fc {
 
 Solution solveWithPolicy(const DqnAgent& agent, const CornerGraph& graph, const Query& query,
                          const EnvironmentOptions& environment, OrderRefinement refinement,
-                         const SolveControl& control) {
+                         const SolveControl& control, int beamWidth) {
     CoverageEnvironment env(graph, environment);
     if (environment.graphState != (agent.parameters().network == QNetworkKind::Graph))
         throw SolverError("dqn: the model's network does not fit its state kind (image/graph)");
@@ -21,6 +22,10 @@ Solution solveWithPolicy(const DqnAgent& agent, const CornerGraph& graph, const 
                                                env.observationSize() == agent.observationSize());
     if (!sizeFits || env.channelCount() != agent.parameters().inputChannels)
         throw SolverError("dqn: the model was trained on a graph of another size");
+    if (beamWidth > 1)
+        return refineCellOrder(graph, query,
+                               policyBeamWalk(agent, graph, query, environment, beamWidth, control),
+                               refinement, kPolicyRefinementBudget, control);
     std::vector<float> observation;
     try {
         observation = env.reset(query);

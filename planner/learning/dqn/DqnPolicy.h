@@ -23,10 +23,12 @@ constexpr std::uint64_t kPolicyRefinementBudget = 100'000;
 // Throws SolverError for a query the environment cannot take (e.g. the end in another part
 // of the floor) or a graph of another size than the agent's.
 // `environment` must be the options the agent was trained with (they define the image).
+// beamWidth > 1: the walk is the policy's beam search's (PolicyBeam.h) instead of the greedy
+// rollout's, then refined the same way.
 Solution solveWithPolicy(const DqnAgent& agent, const CornerGraph& graph, const Query& query,
                          const EnvironmentOptions& environment,
                          OrderRefinement refinement = OrderRefinement::None,
-                         const SolveControl& control = {});
+                         const SolveControl& control = {}, int beamWidth = 1);
 
 enum class QuerySet {
     AllCells,   // every reachable cell of the start's part of the floor
