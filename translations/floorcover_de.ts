@@ -8,10 +8,6 @@
         <translation>Der exakte Löser konnte die beste Reihenfolge von %1 Zellen in seinem Budget (%2) nicht beweisen. Wählen Sie im Bereich Planung den heuristischen Löser.</translation>
     </message>
     <message>
-        <source>The dqn solver needs a trained model: train one in the Training panel (or load one there), or choose another solver.</source>
-        <translation>Der Löser dqn braucht ein trainiertes Modell: trainieren Sie eines im Bereich Training (oder laden Sie es dort), oder wählen Sie einen anderen Löser.</translation>
-    </message>
-    <message>
         <source>These rooms have %1 cells, and the exact solver orders at most %2. Choose the heuristic solver in the Planning panel.</source>
         <translation>Diese Räume haben %1 Zellen, der exakte Löser ordnet aber höchstens %2. Wählen Sie im Bereich Planung den heuristischen Löser.</translation>
     </message>
@@ -2767,12 +2763,12 @@ Abdeckungspfadplanung für Reinigungs- und Desinfektionsroboter.</translation>
         <translation>Sekunden, die der Roboter für eine 90°-Drehung braucht, für die geschätzte Dauer.</translation>
     </message>
     <message>
-        <source>How the order of the cells is chosen: heuristic is fast and close to the best; exact proves the best order on small floors; greedy is the quickest sketch; dqn uses the model trained in the Training panel.</source>
-        <translation>Wie die Reihenfolge der Zellen gewählt wird: heuristic ist schnell und nahe am Optimum; exact beweist die beste Reihenfolge auf kleinen Flächen; greedy ist die schnellste Skizze; dqn nutzt das im Bereich Training trainierte Modell.</translation>
-    </message>
-    <message>
         <source>The stripes&apos; direction in degrees (90 = vertical), for One angle for the floor.</source>
         <translation>Die Richtung der Bahnen in Grad (90 = senkrecht), für „Ein Winkel für die ganze Etage“.</translation>
+    </message>
+    <message>
+        <source>How the order of the cells is chosen: heuristic is fast and close to the best; exact proves the best order on small floors; greedy is the quickest sketch; dqn uses the model trained in the Training panel, or the built-in generalist model when none is.</source>
+        <translation>Wie die Reihenfolge der Zellen gewählt wird: heuristic ist schnell und nahe am Besten; exact beweist die beste Reihenfolge auf kleinen Flächen; greedy ist die schnellste Skizze; dqn nutzt das im Bereich Training trainierte Modell oder, wenn keines trainiert ist, das eingebaute allgemeine Modell.</translation>
     </message>
 </context>
 <context>
@@ -3301,6 +3297,14 @@ Abdeckungspfadplanung für Reinigungs- und Desinfektionsroboter.</translation>
     <message>
         <source> · policy alone %1 % above the reference</source>
         <translation> · Strategie allein %1 % über der Referenz</translation>
+    </message>
+    <message>
+        <source>From the generalist</source>
+        <translation>Vom allgemeinen Modell</translation>
+    </message>
+    <message>
+        <source>Start from the built-in generalist model, trained on generated floors (what solver dqn uses before any training), and fine-tune it for this plan. Off: start from random weights. Graph state only.</source>
+        <translation>Vom eingebauten allgemeinen Modell ausgehen, das auf erzeugten Grundrissen trainiert wurde (das nutzt der Solver dqn vor jedem Training), und es für diesen Plan nachtrainieren. Aus: mit zufälligen Gewichten beginnen. Nur für den Graph-Zustand.</translation>
     </message>
 </context>
 <context>

@@ -8,10 +8,6 @@
         <translation>Le solveur exact n’a pas pu prouver le meilleur ordre de %1 cellules dans son budget (%2). Choisissez le solveur heuristique dans le panneau Planification.</translation>
     </message>
     <message>
-        <source>The dqn solver needs a trained model: train one in the Training panel (or load one there), or choose another solver.</source>
-        <translation>Le solveur dqn a besoin d’un modèle entraîné : entraînez-en un dans le panneau Entraînement (ou chargez-le là), ou choisissez un autre solveur.</translation>
-    </message>
-    <message>
         <source>These rooms have %1 cells, and the exact solver orders at most %2. Choose the heuristic solver in the Planning panel.</source>
         <translation>Ces pièces ont %1 cellules, et le solveur exact en ordonne au plus %2. Choisissez le solveur heuristique dans le panneau Planification.</translation>
     </message>
@@ -2767,12 +2763,12 @@ Planification de trajets de couverture pour robots de nettoyage et de désinfect
         <translation>Secondes nécessaires au robot pour tourner de 90°, pour la durée estimée.</translation>
     </message>
     <message>
-        <source>How the order of the cells is chosen: heuristic is fast and close to the best; exact proves the best order on small floors; greedy is the quickest sketch; dqn uses the model trained in the Training panel.</source>
-        <translation>Comment l’ordre des cellules est choisi : heuristic est rapide et proche du meilleur ; exact prouve le meilleur ordre sur les petites surfaces ; greedy donne l’esquisse la plus rapide ; dqn utilise le modèle entraîné dans le panneau Entraînement.</translation>
-    </message>
-    <message>
         <source>The stripes&apos; direction in degrees (90 = vertical), for One angle for the floor.</source>
         <translation>La direction des bandes en degrés (90 = verticale), pour « Un angle pour tout l’étage ».</translation>
+    </message>
+    <message>
+        <source>How the order of the cells is chosen: heuristic is fast and close to the best; exact proves the best order on small floors; greedy is the quickest sketch; dqn uses the model trained in the Training panel, or the built-in generalist model when none is.</source>
+        <translation>Comment l’ordre des cellules est choisi : heuristic est rapide et proche du meilleur ; exact prouve le meilleur ordre sur les petits plans ; greedy est l’esquisse la plus rapide ; dqn utilise le modèle entraîné dans le panneau Entraînement, ou le modèle généraliste intégré s’il n’y en a pas.</translation>
     </message>
 </context>
 <context>
@@ -3301,6 +3297,14 @@ Planification de trajets de couverture pour robots de nettoyage et de désinfect
     <message>
         <source> · policy alone %1 % above the reference</source>
         <translation> · politique seule %1 % au-dessus de la référence</translation>
+    </message>
+    <message>
+        <source>From the generalist</source>
+        <translation>Depuis le généraliste</translation>
+    </message>
+    <message>
+        <source>Start from the built-in generalist model, trained on generated floors (what solver dqn uses before any training), and fine-tune it for this plan. Off: start from random weights. Graph state only.</source>
+        <translation>Partir du modèle généraliste intégré, entraîné sur des plans générés (celui qu’utilise le solveur dqn avant tout entraînement), et l’affiner pour ce plan. Désactivé : partir de poids aléatoires. État graphe seulement.</translation>
     </message>
 </context>
 <context>

@@ -1,0 +1,162 @@
+// floorcover-dqn-budget: solver dqn against heuristic at equal CPU budgets (issue 17,
+// item 3). Both are run as anytime methods by restarts, and each keeps the cheapest walk it
+// finished within the budget; a run still going at the deadline is cancelled and does not
+// count:
+//   heuristic  solveHeuristic with seeds 1, 2, 3, ... (each a different proxy search);
+//   dqn        the policy's beam search (PolicyBeam.h) at widths 1, 4, 8, 16, ..., each
+//              walk refined as solver dqn refines it.
+// Cost is the graph cost both optimise; queries are random room subsets with random start
+// and end corners (seeded).
+//   floorcover-dqn-budget [--cases ward,generated-office-100] [--budgets 1,5] [--queries N]
+//                         [--seed N] [--model FILE]   (default: the built-in generalist)
+#include "formats/PlanIO.h"
+#include "learning/dqn/DqnModelFile.h"
+#include "learning/dqn/DqnPolicy.h"
+#include "learning/dqn/GeneralistModel.h"
+#include "learning/dqn/PolicyBeam.h"
+#include "model/SyntheticPlans.h"
+#include "pipeline/Planner.h"
+
+#include <cstdio>
+#include <ctime>
+#include <iostream>
+#include <limits>
+#include <sstream>
+#include <string>
+#include <vector>
+
+using namespace fc;
+
+namespace {
+
+double cpuSeconds() {
+    timespec t{};
+    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
+    return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
+}
+
+std::vector<std::string> split(const std::string& text) {
+    std::vector<std::string> out;
+    std::stringstream in(text);
+    for (std::string item; std::getline(in, item, ',');)
+        if (!item.empty())
+            out.push_back(item);
+    return out;
+}
+
+Plan loadCase(const std::string& name, std::uint64_t seed) {
+    const std::string generated = "generated-office-";
+    if (name.rfind(generated, 0) == 0)
+        return generateOfficeFloor(std::stoi(name.substr(generated.size())), seed);
+    return loadProjectFile(std::string(FC_PLANS_DIR) + "/" + name + ".geojson").plan;
+}
+
+struct Anytime {
+    double cost = std::numeric_limits<double>::infinity(); // inf: nothing finished in time
+    int runs = 0;                                          // finished within the budget
+};
+
+// Runs attempt(i, control) for i = 0, 1, ... until the budget is spent; a run still going
+// at the deadline is cancelled (SolverError) and does not count.
+template <typename Attempt> Anytime withinBudget(double budget, Attempt attempt) {
+    const double deadline = cpuSeconds() + budget;
+    SolveControl control;
+    control.cancelled = [deadline] { return cpuSeconds() >= deadline; };
+    Anytime best;
+    for (int i = 0; cpuSeconds() < deadline; ++i) {
+        try {
+            const double cost = attempt(i, control);
+            if (cpuSeconds() > deadline)
+                break; // finished after the deadline without looking at the clock
+            best.cost = std::min(best.cost, cost);
+            ++best.runs;
+        } catch (const SolverError&) {
+            break; // cancelled at the deadline
+        }
+    }
+    return best;
+}
+
+int beamWidthOf(int attempt) {
+    return attempt == 0 ? 1 : 4 << (attempt - 1); // 1, 4, 8, 16, ...
+}
+
+} // namespace
+
+int main(int argc, char** argv) {
+    std::vector<std::string> cases{"ward", "generated-office-100"};
+    std::vector<double> budgets{1.0, 5.0};
+    int queryCount = 10;
+    std::uint64_t seed = 1;
+    std::string modelPath;
+    for (int i = 1; i + 1 < argc; i += 2) {
+        const std::string key = argv[i], value = argv[i + 1];
+        if (key == "--cases")
+            cases = split(value);
+        else if (key == "--budgets") {
+            budgets.clear();
+            for (const std::string& b : split(value))
+                budgets.push_back(std::stod(b));
+        } else if (key == "--queries")
+            queryCount = std::stoi(value);
+        else if (key == "--seed")
+            seed = std::stoull(value);
+        else if (key == "--model")
+            modelPath = value;
+        else {
+            std::cerr << "unknown option " << key << "\n";
+            return 2;
+        }
+    }
+    const std::shared_ptr<const DqnModel> model =
+        modelPath.empty() ? generalistModel()
+                          : std::make_shared<DqnModel>(loadDqnModelFile(modelPath));
+    std::printf("| plan | cells | budget (CPU s) | heuristic: mean cost | runs | dqn: mean cost | "
+                "runs | dqn vs heuristic | dqn cheaper | none in time (h / dqn) |\n");
+    std::printf("|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n");
+    for (const std::string& name : cases) {
+        const PreparedPlan prepared = preparePlan(loadCase(name, seed), RobotProfile{}, 90.0);
+        const CornerGraph& graph = prepared.graph;
+        checkModelFitsGraph(model->info, graph, modelPath.empty() ? "generalist" : modelPath);
+        const std::vector<Query> queries =
+            randomQueries(graph, queryCount, seed * 7919ULL + 3ULL, QuerySet::RoomSubsets);
+        for (double budget : budgets) {
+            double heuristicSum = 0.0, dqnSum = 0.0, ratioSum = 0.0;
+            int heuristicRuns = 0, dqnRuns = 0, both = 0, dqnCheaper = 0;
+            int heuristicNone = 0, dqnNone = 0;
+            for (const Query& query : queries) {
+                const Anytime h = withinBudget(budget, [&](int i, const SolveControl& control) {
+                    Query q = query;
+                    q.seed = static_cast<std::uint64_t>(i) + 1;
+                    return solveHeuristic(graph, q, control).graphCost;
+                });
+                const Anytime d = withinBudget(budget, [&](int i, const SolveControl& control) {
+                    return solveWithPolicy(*model->agent, graph, query, model->info.environment,
+                                           model->info.refinement, control, beamWidthOf(i))
+                        .graphCost;
+                });
+                heuristicRuns += h.runs;
+                dqnRuns += d.runs;
+                heuristicNone += h.runs == 0 ? 1 : 0;
+                dqnNone += d.runs == 0 ? 1 : 0;
+                if (h.runs > 0 && d.runs > 0) {
+                    ++both;
+                    heuristicSum += h.cost;
+                    dqnSum += d.cost;
+                    ratioSum += d.cost / h.cost - 1.0;
+                    dqnCheaper += d.cost < h.cost - 1e-9 ? 1 : 0;
+                }
+            }
+            const double n = std::max(1, both);
+            std::printf("| %s | %zu | %.0f | %.1f | %.1f | %.1f | %.1f | %+.2f%% | %d/%d | %d / "
+                        "%d |\n",
+                        name.c_str(), graph.cells.size(), budget, heuristicSum / n,
+                        static_cast<double>(heuristicRuns) / static_cast<double>(queries.size()),
+                        dqnSum / n,
+                        static_cast<double>(dqnRuns) / static_cast<double>(queries.size()),
+                        100.0 * ratioSum / n, dqnCheaper, both, heuristicNone, dqnNone);
+            std::fflush(stdout);
+        }
+    }
+    return 0;
+}
