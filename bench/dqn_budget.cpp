@@ -3,8 +3,9 @@
 // finished within the budget; a run still going at the deadline is cancelled and does not
 // count:
 //   heuristic  solveHeuristic with seeds 1, 2, 3, ... (each a different proxy search);
-//   dqn        the policy's beam search (PolicyBeam.h) at widths 1, 4, 8, 16, ..., each
-//              walk refined as solver dqn refines it.
+//   dqn        the policy-guided search (PolicySearch.h): the beam's walk refined, then
+//              partial rollouts of the policy from random prefixes of the best walk, each
+//              refined; it stops at the deadline with its best complete walk.
 // Cost is the graph cost both optimise; queries are random room subsets with random start
 // and end corners (seeded).
 //   floorcover-dqn-budget [--cases ward,generated-office-100] [--budgets 1,5] [--queries N]
@@ -13,7 +14,7 @@
 #include "learning/dqn/DqnModelFile.h"
 #include "learning/dqn/DqnPolicy.h"
 #include "learning/dqn/GeneralistModel.h"
-#include "learning/dqn/PolicyBeam.h"
+#include "learning/dqn/PolicySearch.h"
 #include "model/SyntheticPlans.h"
 #include "pipeline/Planner.h"
 
@@ -77,10 +78,6 @@ template <typename Attempt> Anytime withinBudget(double budget, Attempt attempt)
     return best;
 }
 
-int beamWidthOf(int attempt) {
-    return attempt == 0 ? 1 : 4 << (attempt - 1); // 1, 4, 8, 16, ...
-}
-
 } // namespace
 
 int main(int argc, char** argv) {
@@ -112,7 +109,7 @@ int main(int argc, char** argv) {
         modelPath.empty() ? generalistModel()
                           : std::make_shared<DqnModel>(loadDqnModelFile(modelPath));
     std::printf("| plan | cells | budget (CPU s) | heuristic: mean cost | runs | dqn: mean cost | "
-                "runs | dqn vs heuristic | dqn cheaper | none in time (h / dqn) |\n");
+                "searches | dqn vs heuristic | dqn cheaper | none in time (h / dqn) |\n");
     std::printf("|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n");
     for (const std::string& name : cases) {
         const PreparedPlan prepared = preparePlan(loadCase(name, seed), RobotProfile{}, 90.0);
@@ -130,11 +127,21 @@ int main(int argc, char** argv) {
                     q.seed = static_cast<std::uint64_t>(i) + 1;
                     return solveHeuristic(graph, q, control).graphCost;
                 });
-                const Anytime d = withinBudget(budget, [&](int i, const SolveControl& control) {
-                    return solveWithPolicy(*model->agent, graph, query, model->info.environment,
-                                           model->info.refinement, control, beamWidthOf(i))
-                        .graphCost;
-                });
+                Anytime d;
+                {
+                    const double deadline = cpuSeconds() + budget;
+                    SolveControl control;
+                    control.cancelled = [deadline] { return cpuSeconds() >= deadline; };
+                    try {
+                        d.cost =
+                            policyGuidedSearch(*model->agent, graph, query, model->info.environment,
+                                               model->info.refinement, control)
+                                .graphCost;
+                        d.runs = 1;
+                    } catch (const SolverError&) {
+                        // its first walk did not finish in time
+                    }
+                }
                 heuristicRuns += h.runs;
                 dqnRuns += d.runs;
                 heuristicNone += h.runs == 0 ? 1 : 0;

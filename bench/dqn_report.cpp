@@ -260,11 +260,9 @@ Case caseOf(const std::string& name) {
 // options on one trained policy. --model generalist: the built-in generalist on every case
 // (no per-plan training at all).
 int measureSavedModel(const Options& o) {
-    const bool generalist = o.model == "generalist";
-    if (o.cases.size() != 1 && !generalist)
-        throw std::invalid_argument("--model needs exactly one case (--cases NAME)");
+    const bool builtIn = o.model == "generalist";
     std::shared_ptr<const DqnModel> model;
-    if (generalist) {
+    if (builtIn) {
         const double before = threadCpuSeconds();
         model = generalistModel();
         std::fprintf(stderr, "generalist loaded in %.3f s: %s\n", threadCpuSeconds() - before,
@@ -272,6 +270,9 @@ int measureSavedModel(const Options& o) {
     } else {
         model = std::make_shared<DqnModel>(loadDqnModelFile(o.model));
     }
+    const bool generalist = model->info.generalist;
+    if (o.cases.size() != 1 && !generalist)
+        throw std::invalid_argument("--model needs exactly one case (--cases NAME)");
     for (const std::string& name : o.cases) {
         const Project project = loadCase(name, o.seed);
         const PreparedPlan prepared = preparePlan(project.plan, project.robot,
@@ -282,7 +283,7 @@ int measureSavedModel(const Options& o) {
         const FinalFigures f = measure(*model->agent, prepared.graph, model->info.environment,
                                        refinement, caseOf(name), o.queries, o.seed);
         printRow(name,
-                 generalist ? "generalist (no training on this plan)"
+                 generalist ? (builtIn ? "generalist (built in)" : "generalist (" + o.model + ")")
                             : model->info.setting + " (saved)",
                  model->info.episodes, model->info.steps, f);
     }

@@ -6,6 +6,7 @@
 #include "learning/dqn/DqnSolver.h"
 #include "learning/dqn/GeneralistModel.h"
 #include "learning/dqn/PolicyBeam.h"
+#include "learning/dqn/PolicySearch.h"
 #include "model/SyntheticPlans.h"
 
 #include <cmath>
@@ -217,4 +218,49 @@ TEST(PolicyBeam, WidthOneIsTheRolloutAndWiderBeamsFinish) {
         SolverError);
     EXPECT_THROW(policyBeamWalk(*model->agent, plan.graph, q, model->info.environment, 0),
                  std::invalid_argument);
+}
+
+// The policy-guided search: its moves replay a prefix of the best walk and let the policy
+// finish it; it never answers worse than its start (the beam's refined walk), always covers
+// the query, and a cancellation ends it with its best complete walk.
+TEST(PolicySearch, MovesKeepTheBestCompleteWalk) {
+    const std::shared_ptr<const DqnModel> model = generalistModel();
+    const PreparedPlan plan = preparedSample("office");
+    const Query q = randomQueries(plan.graph, 1, 11, QuerySet::RoomSubsets).front();
+    const EnvironmentOptions& env = model->info.environment;
+    const Solution start =
+        solveWithPolicy(*model->agent, plan.graph, q, env, model->info.refinement, {}, 4);
+    // The entry corners replay the walk's cell order exactly.
+    const std::vector<int> actions = entryActions(plan.graph, q, start.walk);
+    CoverageEnvironment replay(plan.graph, env);
+    replay.reset(q);
+    for (int a : actions)
+        replay.step(a);
+    EXPECT_TRUE(replay.done());
+    EXPECT_EQ(evaluateWalk(plan.graph, q, replay.walk()).cellOrder, start.cellOrder);
+
+    PolicySearchOptions options;
+    options.maxMoves = 12;
+    const Solution searched =
+        policyGuidedSearch(*model->agent, plan.graph, q, env, model->info.refinement, {}, options);
+    EXPECT_LE(searched.graphCost, start.graphCost + 1e-9);
+    EXPECT_TRUE(evaluateWalk(plan.graph, q, searched.walk).coversAllRequired);
+    EXPECT_EQ(searched.solver, "dqn");
+
+    // Cancelled during the moves: the best walk so far comes back. The start polls the same
+    // number of times on every run (deterministic), so the cut falls after it.
+    int startPolls = 0;
+    SolveControl counting;
+    counting.cancelled = [&startPolls] { return ++startPolls < 0; };
+    solveWithPolicy(*model->agent, plan.graph, q, env, model->info.refinement, counting, 4);
+    int polls = 0;
+    SolveControl control;
+    control.cancelled = [&polls, startPolls] { return ++polls > startPolls + 200; };
+    options.maxMoves = 0;
+    const Solution cut = policyGuidedSearch(*model->agent, plan.graph, q, env,
+                                            model->info.refinement, control, options);
+    EXPECT_TRUE(evaluateWalk(plan.graph, q, cut.walk).coversAllRequired);
+    EXPECT_THROW(
+        policyGuidedSearch(*model->agent, plan.graph, q, env, model->info.refinement, {}, options),
+        std::invalid_argument);
 }
