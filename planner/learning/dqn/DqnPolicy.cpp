@@ -45,15 +45,20 @@ Solution solveWithPolicy(const DqnAgent& agent, const CornerGraph& graph, const 
             throw SolverError("dqn: the policy ran out of steps"); // masked: cannot happen
         observation = env.observation();
     }
+    return refineCellOrder(graph, query, policyWalkSolution(graph, query, env.walk()), refinement,
+                           kPolicyRefinementBudget, control);
+}
+
+Solution policyWalkSolution(const CornerGraph& graph, const Query& query, const Walk& walk) {
     Solution solution;
     solution.solver = "dqn";
-    solution.walk = env.walk();
+    solution.walk = walk;
     const WalkEvaluation evaluation = evaluateWalk(graph, query, solution.walk);
     if (!evaluation.connected || !evaluation.coversAllRequired)
         throw SolverError("dqn: the policy's walk does not cover the query (internal error)");
     solution.cellOrder = evaluation.cellOrder;
     solution.graphCost = evaluation.graphCost;
-    return refineCellOrder(graph, query, solution, refinement, kPolicyRefinementBudget, control);
+    return solution;
 }
 
 namespace {

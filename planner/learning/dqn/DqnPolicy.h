@@ -30,6 +30,10 @@ Solution solveWithPolicy(const DqnAgent& agent, const CornerGraph& graph, const 
                          OrderRefinement refinement = OrderRefinement::None,
                          const SolveControl& control = {}, int beamWidth = 1);
 
+// A complete walk of the policy as a Solution (solver "dqn", cell order, graph cost); throws
+// SolverError when it does not cover the query (an internal error: masking forbids it).
+Solution policyWalkSolution(const CornerGraph& graph, const Query& query, const Walk& walk);
+
 enum class QuerySet {
     AllCells,   // every reachable cell of the start's part of the floor
     RoomSubsets // a random non-empty subset of the rooms there

@@ -1,5 +1,7 @@
 #include "learning/dqn/PolicyBeam.h"
 
+#include "learning/dqn/DqnPolicy.h"
+
 #include <algorithm>
 #include <limits>
 #include <stdexcept>
@@ -90,14 +92,9 @@ Solution policyBeamWalk(const DqnAgent& agent, const CornerGraph& graph, const Q
     Solution best;
     best.graphCost = std::numeric_limits<double>::infinity();
     for (const Partial& p : beam) {
-        const WalkEvaluation evaluation = evaluateWalk(graph, query, p.env.walk());
-        if (!evaluation.connected || !evaluation.coversAllRequired)
-            throw SolverError("dqn: the policy's walk does not cover the query (internal error)");
-        if (evaluation.graphCost < best.graphCost) {
-            best.walk = p.env.walk();
-            best.cellOrder = evaluation.cellOrder;
-            best.graphCost = evaluation.graphCost;
-        }
+        Solution walk = policyWalkSolution(graph, query, p.env.walk());
+        if (walk.graphCost < best.graphCost)
+            best = std::move(walk);
     }
     best.solver = "dqn";
     if (width > 1) {

@@ -54,15 +54,7 @@ Solution perturbedRollout(const DqnAgent& agent, const CornerGraph& graph, const
             throw SolverError("dqn: the policy ran out of steps");
         observation = env.observation();
     }
-    Solution solution;
-    solution.solver = "dqn";
-    solution.walk = env.walk();
-    const WalkEvaluation evaluation = evaluateWalk(graph, query, solution.walk);
-    if (!evaluation.connected || !evaluation.coversAllRequired)
-        throw SolverError("dqn: the policy's walk does not cover the query (internal error)");
-    solution.cellOrder = evaluation.cellOrder;
-    solution.graphCost = evaluation.graphCost;
-    return solution;
+    return policyWalkSolution(graph, query, env.walk());
 }
 
 } // namespace
