@@ -5,6 +5,7 @@
 // episode draws one floor, a random start and end and a random set of cells still to cover.
 //   floorcover-train-generalist [--floors N] [--episodes N | --seconds S] [--seed N]
 //                               [--evaluate-every N] [--hidden N] [--lr R] --out FILE
+//   floorcover-train-generalist --validate MODEL [--seed N]   (its gap on the held-out floors)
 // One thread; with --episodes the model is the same bit for bit on every run. Every
 // --evaluate-every episodes the policy alone is measured on 12 held-out generated floors
 // (another seed, 4 queries each) and the best model so far is the one saved.
@@ -37,6 +38,7 @@ struct Options {
     int hidden = 0;            // 0: the graph setting's
     double learningRate = 0.0; // 0: the graph setting's
     std::string out;
+    std::string validate; // measure this model on the validation floors and stop
 };
 
 // Floors larger than this slow every gradient step and add little: the state is per corner.
@@ -149,11 +151,15 @@ bool parse(int argc, char** argv, Options& o) {
             o.hidden = std::atoi(argv[++i]);
         else if (arg == "--lr" && hasValue)
             o.learningRate = std::atof(argv[++i]);
+        else if (arg == "--validate" && hasValue)
+            o.validate = argv[++i];
         else if (arg == "--out" && hasValue)
             o.out = argv[++i];
         else
             return false;
     }
+    if (!o.validate.empty())
+        return true;
     return !o.out.empty() && o.floors > 0 && (o.episodes > 0 || o.seconds > 0.0);
 }
 
@@ -165,6 +171,14 @@ int main(int argc, char** argv) {
         std::cerr << "usage: floorcover-train-generalist [--floors N] [--episodes N | --seconds "
                      "S] [--seed N] [--evaluate-every N] [--hidden N] [--lr R] --out FILE\n";
         return 2;
+    }
+    if (!o.validate.empty()) {
+        const DqnModel model = loadDqnModelFile(o.validate);
+        const Validation validation(generatedFloors(12, o.seed + 7777), o.seed);
+        std::printf("%s: policy alone %.2f%% above the reference on the validation floors\n",
+                    o.validate.c_str(),
+                    100.0 * validation.policyGap(*model.agent, model.info.environment));
+        return 0;
     }
     std::vector<CornerGraph> floors = generatedFloors(o.floors, o.seed);
     // Model selection on floors it never trains on (another seed): the policy alone is

@@ -7,7 +7,9 @@
 #include "document/Autosaver.h"
 #include "document/DocumentFiles.h"
 #include "document/PlannerMessages.h"
+#include "formats/PlanIO.h"
 #include "learning/dqn/DqnSolver.h"
+#include "learning/dqn/DqnTrainer.h"
 #include "model/RobotPlacement.h"
 #include "modes/tiling/TilingDock.h"
 #include "modes/tiling/TilingMode.h"
@@ -237,11 +239,21 @@ void TrapsTest::plannerMessagesSpeakOfTheEditor() {
         QVERIFY2(error.startsWith(QStringLiteral("Cannot save ") + path), qPrintable(error));
         QVERIFY2(!error.contains(QStringLiteral("cannot write (")), qPrintable(error));
     }
-    // Through the window: dqn without a model; the message stays when the background
-    // preparation of the overlays ends after the plan failed (it cleared it).
+    // Through the window: dqn with a model of another plan; the message stays when the
+    // background preparation of the overlays ends after the plan failed (it cleared it).
     fc::registerDqnSolver();
+    QTemporaryDir dir;
+    const QString model = dir.filePath(QStringLiteral("simple.fcdqn"));
+    {
+        const fc::Project simple = fc::loadProjectFile(FC_PLANS_DIR "/simple.geojson");
+        fc::DqnTrainer trainer(fc::preparePlan(simple.plan, simple.robot, 90.0).graph,
+                               fc::TrainingOptions::graph(1));
+        trainer.train(2, 0.0);
+        trainer.save(model.toStdString());
+    }
     auto window = makeWindow();
     window->openSample();
+    window->planningController()->setModelPath(model);
     QVERIFY(window->document()->setSolver(QStringLiteral("dqn")));
     QVERIFY(!window->planningController()->planAndWait());
     QTRY_VERIFY2_WITH_TIMEOUT(
