@@ -10,9 +10,10 @@
 // ablation): state=image|graph (the state and its network), mask=0|1, reward=paper|cost, nstep=N,
 // gamma=G, lr=R, eps=STEPS, net=paper|small, refine=none|corners|local-search, cost=SCALE (reward
 // per longest edge), sync=STEPS, batch=N, features=0|1, graphfeatures=14|16, conv=C (all three
-// layers), hidden=N, init=generalist (fine-tune the built-in generalist). Writes
-// DIR/curves-<case>-<setting>.csv and prints a Markdown table (docs/dqn.md). Time is the training
-// thread's CPU time, so a busy machine does not change the figures.
+// layers), hidden=N, init=generalist (fine-tune the built-in generalist), fteps=E (its first
+// epsilon), starts=N (steps before the first gradient step). Writes DIR/curves-<case>-<setting>.csv
+// and prints a Markdown table (docs/dqn.md). Time is the training thread's CPU time, so a busy
+// machine does not change the figures.
 #include "formats/PlanIO.h"
 #include "learning/dqn/DqnModelFile.h"
 #include "learning/dqn/DqnPolicy.h"
@@ -124,6 +125,12 @@ TrainingOptions settingOptions(const std::string& setting, std::uint64_t seed) {
             o.environment.graphFeatures = std::stoi(value);
         else if (key == "refine")
             o.refinement = refinementFromName(value);
+        else if (key == "best")
+            continue; // read by the training loop
+        else if (key == "fteps")
+            o.fineTuneEpsilon = std::stod(value);
+        else if (key == "starts")
+            o.agent.learningStarts = std::stoi(value);
         else if (key == "init" && value == "generalist")
             o.initialModel = generalistModel(); // fine-tuning (issue 17, item 2)
         else
@@ -364,8 +371,13 @@ int main(int argc, char** argv) {
             const EvaluationReport last = trainer.evaluate();
             csv << trainer.episodes() << ',' << o.seconds << ",,,,," << last.meanGap << ','
                 << last.meanRefinedGap << '\n';
-            const FinalFigures f = measure(trainer.agent(), prepared.graph, options.environment,
-                                           options.refinement, c, o.queries, o.seed);
+            // best=1: measure the best evaluated weights, as `train` and the dock keep them.
+            if (setting.find("+best=1") != std::string::npos && trainer.restoreBestEvaluated())
+                std::fprintf(stderr, "%s %s: measuring the weights of episode %ld\n", name.c_str(),
+                             setting.c_str(), trainer.bestEvaluatedEpisode());
+            const FinalFigures f =
+                measure(trainer.agent(), prepared.graph, trainer.options().environment,
+                        trainer.options().refinement, c, o.queries, o.seed);
             printRow(name, setting, trainer.episodes(), trainer.agent().stepCount(), f);
             std::fflush(stdout);
             trainer.save(o.out + "/model-" + name + "-" + setting + ".fcdqn");

@@ -109,6 +109,14 @@ int commandTrain(const Arguments& args) {
               << prepared.graph.nodes.size() << " corners, " << prepared.graph.cells.size()
               << " cells, sweep angle " << angle << " deg\n";
 
+    if (trainer->episodes() == 0 && !args.has("--from-scratch") && setting == "graph") {
+        // Where fine-tuning starts: the generalist on this plan's evaluation queries (also a
+        // candidate for the model kept at the end).
+        const EvaluationReport start = trainer->evaluate();
+        std::printf("the generalist on this plan: policy alone %.2f%% above the reference, "
+                    "refined %.2f%% (%d queries)\n",
+                    100.0 * start.meanGap, 100.0 * start.meanRefinedGap, start.queries);
+    }
     interrupted = 0;
     std::signal(SIGINT, onInterrupt);
     auto lastPrint = std::chrono::steady_clock::now() - std::chrono::seconds(10);
@@ -124,15 +132,24 @@ int commandTrain(const Arguments& args) {
         [] { return interrupted != 0; });
     std::signal(SIGINT, SIG_DFL);
 
-    trainer->save(*out);
-    const EvaluationReport report = trainer->evaluate();
+    trainer->save(*out); // first: a second Ctrl-C during the evaluation loses nothing
+    // The last weights are evaluated too; the best evaluated ones are what is kept.
+    EvaluationReport report = trainer->evaluate();
+    const double lastGap = report.meanGap;
+    if (trainer->restoreBestEvaluated()) {
+        report = *trainer->bestEvaluation();
+        std::cout << "keeping the weights of episode " << trainer->bestEvaluatedEpisode()
+                  << " (policy alone " << 100.0 * report.meanGap << "% above the reference; "
+                  << "the last weights: " << 100.0 * lastGap << "%)\n";
+        trainer->save(*out);
+    }
     const DqnModelInfo info = trainer->modelInfo();
     std::printf("{\"model\":\"%s\",\"stopped_by\":\"%s\",\"episodes\":%ld,\"steps\":%ld,"
                 "\"seconds\":%.1f,\"gap\":%.5f,\"refined_gap\":%.5f,\"reference\":\"%s\","
-                "\"queries\":%d,\"failures\":%d}\n",
+                "\"queries\":%d,\"failures\":%d,\"kept_episode\":%ld}\n",
                 out->c_str(), stopName(stop), info.episodes, info.steps, info.trainingSeconds,
                 report.meanGap, report.meanRefinedGap, report.reference.c_str(), report.queries,
-                report.failures);
+                report.failures, trainer->bestEvaluatedEpisode());
     return 0;
 }
 

@@ -264,3 +264,29 @@ TEST(PolicySearch, MovesKeepTheBestCompleteWalk) {
         policyGuidedSearch(*model->agent, plan.graph, q, env, model->info.refinement, {}, options),
         std::invalid_argument);
 }
+
+// The best evaluated weights are kept: weights trained further but not evaluated since give
+// way to them, and once they are back their evaluation repeats exactly.
+TEST(DqnTrainer, RestoresTheBestEvaluatedWeights) {
+    const PreparedPlan plan = preparedSample("simple");
+    TrainingOptions options = smallOptions(TrainingOptions::graph(6));
+    options.evaluationQueries = 8;
+    DqnTrainer trainer(plan.graph, options, 90.0, 1.0);
+    EXPECT_FALSE(trainer.restoreBestEvaluated()); // nothing evaluated yet
+    const EvaluationReport first = trainer.evaluate();
+    EXPECT_EQ(trainer.bestEvaluatedEpisode(), 0);
+    EXPECT_FALSE(trainer.restoreBestEvaluated()); // the current weights are the best
+    CoverageEnvironment env(plan.graph, trainer.options().environment);
+    std::mt19937_64 rng(5);
+    const std::vector<float> obs = env.reset(rng);
+    const std::vector<float> q0 = trainer.agent().qValues(obs, 1);
+    trainer.train(60, 0.0);
+    ASSERT_NE(trainer.agent().qValues(obs, 1), q0);
+    EXPECT_TRUE(trainer.restoreBestEvaluated());
+    EXPECT_EQ(trainer.agent().qValues(obs, 1), q0);
+    EXPECT_EQ(trainer.episodes(), 60); // the counters stay
+    const EvaluationReport again = trainer.evaluate();
+    EXPECT_DOUBLE_EQ(again.meanGap, first.meanGap);
+    ASSERT_TRUE(trainer.bestEvaluation().has_value());
+    EXPECT_DOUBLE_EQ(trainer.bestEvaluation()->meanGap, first.meanGap);
+}

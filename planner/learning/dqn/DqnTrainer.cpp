@@ -373,7 +373,23 @@ EvaluationReport DqnTrainer::evaluate(const SolveControl& control) {
         report.meanRefinedGap /= finished;
         report.meanMilliseconds /= finished;
     }
+    if (finished > 0 && report.failures == 0 &&
+        (!bestReport_ || report.meanGap < bestReport_->meanGap)) {
+        std::ostringstream weights;
+        agent_->saveWeights(weights);
+        bestWeights_ = weights.str();
+        bestReport_ = report;
+        bestEpisode_ = episodes_;
+    }
     return report;
+}
+
+bool DqnTrainer::restoreBestEvaluated() {
+    if (bestWeights_.empty() || bestEpisode_ == episodes_)
+        return false; // nothing kept, or the current weights are the best
+    std::istringstream weights(bestWeights_);
+    agent_->loadWeights(weights);
+    return true;
 }
 
 DqnModelInfo DqnTrainer::modelInfo() const {

@@ -100,6 +100,15 @@ public:
     // keeps no partial reference costs.
     EvaluationReport evaluate(const SolveControl& control = {});
 
+    // DQN's policy swings from evaluation to evaluation (on office between 10% and 33% above
+    // the reference within two minutes of fine-tuning), so the weights of the best evaluation
+    // so far are kept (policy alone, mean gap). This puts them back when the current weights
+    // were evaluated worse or not at all since; returns whether it did. The counters stay.
+    bool restoreBestEvaluated();
+    // The best evaluation so far (none: empty).
+    std::optional<EvaluationReport> bestEvaluation() const { return bestReport_; }
+    long bestEvaluatedEpisode() const { return bestEpisode_; }
+
     DqnModelInfo modelInfo() const;
     void save(const std::string& path) const;
     const DqnAgent& agent() const { return *agent_; }
@@ -141,6 +150,9 @@ private:
     std::deque<double> recentRewards_;
     std::vector<Query> evaluationQueries_;
     std::vector<std::size_t> evaluationFloors_; // floor index per evaluation query
+    std::optional<EvaluationReport> bestReport_;
+    std::string bestWeights_; // torch archive of the best evaluated weights
+    long bestEpisode_ = -1;   // episodes_ when they were evaluated
     std::vector<double> referenceCosts_;
     std::string referenceName_;
 };
