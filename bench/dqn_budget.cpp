@@ -10,6 +10,7 @@
 // and end corners (seeded).
 //   floorcover-dqn-budget [--cases ward,generated-office-100] [--budgets 1,5] [--queries N]
 //                         [--seed N] [--model FILE]   (default: the built-in generalist)
+//                         [--beam N]   (the search's first walk: beam width, default 4)
 #include "formats/PlanIO.h"
 #include "learning/dqn/DqnModelFile.h"
 #include "learning/dqn/DqnPolicy.h"
@@ -86,6 +87,7 @@ int main(int argc, char** argv) {
     int queryCount = 10;
     std::uint64_t seed = 1;
     std::string modelPath;
+    PolicySearchOptions search;
     for (int i = 1; i + 1 < argc; i += 2) {
         const std::string key = argv[i], value = argv[i + 1];
         if (key == "--cases")
@@ -100,6 +102,8 @@ int main(int argc, char** argv) {
             seed = std::stoull(value);
         else if (key == "--model")
             modelPath = value;
+        else if (key == "--beam")
+            search.beamWidth = std::stoi(value);
         else {
             std::cerr << "unknown option " << key << "\n";
             return 2;
