@@ -2,6 +2,7 @@
 // any size, trained on several floors at once, compiled into the program, used by solver dqn
 // without a model file, and the start of fine-tuning.
 #include "DqnTestSupport.h"
+#include "learning/GraphState.h"
 #include "learning/dqn/DqnPolicy.h"
 #include "learning/dqn/DqnSolver.h"
 #include "learning/dqn/GeneralistModel.h"
@@ -12,6 +13,7 @@
 #include <cmath>
 #include <cstdio>
 #include <gtest/gtest.h>
+#include <limits>
 #include <sstream>
 
 using namespace fc;
@@ -289,4 +291,48 @@ TEST(DqnTrainer, RestoresTheBestEvaluatedWeights) {
     EXPECT_DOUBLE_EQ(again.meanGap, first.meanGap);
     ASSERT_TRUE(trainer.bestEvaluation().has_value());
     EXPECT_DOUBLE_EQ(trainer.bestEvaluation()->meanGap, first.meanGap);
+}
+
+// The graph state's "nearest other uncovered cell" and "uncovered cells near" features come
+// from a bucket grid; they must equal the full scan over every uncovered cell exactly (a
+// trained model depends on them), here on a 40-room floor at random covered sets.
+TEST(GraphState, BucketedNearestCellsEqualTheFullScan) {
+    const PreparedPlan plan = preparePlan(generateOfficeFloor(40, 9), RobotProfile{}, 90.0);
+    const CornerGraph& g = plan.graph;
+    const GraphStateTables tables(g);
+    const double edge = std::max(g.maxEdgeLength, 1e-9);
+    std::mt19937_64 rng(3);
+    std::vector<double> transit(g.nodes.size(), 1.0), toEnd(g.nodes.size(), 1.0);
+    for (double share : {0.05, 0.5, 0.97}) {
+        std::vector<char> covered(g.cells.size(), 0);
+        std::bernoulli_distribution cover(share);
+        for (char& c : covered)
+            c = cover(rng) ? 1 : 0;
+        const std::vector<char> initial(g.cells.size(), 0);
+        GraphStateInput in{0, 1, &covered, &initial, &transit, &toEnd};
+        const std::vector<float> f = graphStateFeatures(g, tables, in);
+        for (const GraphNode& n : g.nodes) {
+            if (n.cell < 0)
+                continue;
+            const int exit = tables.exitNode[static_cast<std::size_t>(n.id)];
+            const Vec2 from =
+                exit >= 0 ? g.nodes[static_cast<std::size_t>(exit)].position : n.position;
+            double nearest = std::numeric_limits<double>::infinity();
+            int near = 0;
+            for (std::size_t c = 0; c < g.cells.size(); ++c) {
+                if (covered[c] || static_cast<int>(c) == n.cell)
+                    continue;
+                const double d = distance(from, tables.cellCentre[c]);
+                nearest = std::min(nearest, d);
+                near += d <= 2.0 * edge ? 1 : 0;
+            }
+            const float* row = f.data() + static_cast<std::size_t>(n.id) * kGraphFeatureCount;
+            const float expected9 =
+                nearest < std::numeric_limits<double>::infinity()
+                    ? static_cast<float>(std::min(nearest / (edge * kGraphCostUnit), kGraphCostCap))
+                    : 0.0f;
+            ASSERT_EQ(row[9], expected9) << "node " << n.id << ", share " << share;
+            ASSERT_EQ(row[13], std::min(1.0f, static_cast<float>(near) / 8.0f)) << n.id;
+        }
+    }
 }
