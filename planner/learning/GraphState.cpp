@@ -10,14 +10,19 @@
 namespace fc {
 namespace {
 
-// The uncovered cells' centres in square buckets of the "near" radius: a corner's nearest
-// other uncovered cell and the count within the radius come from the buckets around it
-// instead of every cell (on a 1,500-cell floor that scan was most of a rollout). Results
-// are exactly those of the full scan: the same distances, the same minimum.
+// The uncovered cells' centres in square buckets: a corner's nearest other uncovered cell
+// and the count within the "near" radius come from the buckets around it instead of every
+// cell (on a 1,500-cell floor that scan was most of a rollout). The values are those of the
+// full scan: the same distances and minimum, and the capped feature beyond `limit`.
+// Feature 13 counts the uncovered cells near a corner up to this many.
+constexpr int kNearCellsCap = 8;
+
 class CentreGrid {
 public:
-    CentreGrid(const std::vector<Vec2>& centres, const std::vector<int>& cells, double size)
-        : centres_(centres), size_(std::max(size, 1e-9)) {
+    // About as many buckets as cells, so that a search crosses few empty ones; searches
+    // stop at `limit`.
+    CentreGrid(const std::vector<Vec2>& centres, const std::vector<int>& cells, double limit)
+        : centres_(centres), limit_(limit), cells_(static_cast<int>(cells.size())) {
         if (cells.empty())
             return;
         min_ = max_ = centres[static_cast<std::size_t>(cells.front())];
@@ -26,6 +31,10 @@ public:
             min_ = {std::min(min_.x, p.x), std::min(min_.y, p.y)};
             max_ = {std::max(max_.x, p.x), std::max(max_.y, p.y)};
         }
+        const double extent = std::max({max_.x - min_.x, max_.y - min_.y, 1e-6});
+        const double area =
+            std::max(max_.x - min_.x, extent * 1e-3) * std::max(max_.y - min_.y, extent * 1e-3);
+        size_ = std::max(std::sqrt(area / static_cast<double>(cells.size())), extent * 1e-3);
         columns_ = bucketOf(max_.x - min_.x) + 1;
         rows_ = bucketOf(max_.y - min_.y) + 1;
         buckets_.resize(static_cast<std::size_t>(columns_) * static_cast<std::size_t>(rows_));
@@ -36,32 +45,50 @@ public:
     }
 
     // The distance from `from` to the nearest centre other than `exclude`'s (infinity when
-    // none) and how many of them lie within `radius` (<= the bucket size).
-    void nearestAndCount(Vec2 from, int exclude, double radius, double& nearest, int& count) const {
+    // there is none, at least `limit` when all lie at least that far) and how many of them
+    // lie within `radius`, counted exactly up to `enough` (the feature's cap).
+    // excludeListed: `exclude` is one of the cells.
+    void nearestAndCount(Vec2 from, int exclude, bool excludeListed, double radius, int enough,
+                         double& nearest, int& count) const {
         nearest = std::numeric_limits<double>::infinity();
         count = 0;
-        if (buckets_.empty())
+        if (cells_ - (excludeListed ? 1 : 0) <= 0)
             return;
         const int cx = std::clamp(bucketOf(from.x - min_.x), -1, columns_);
         const int cy = std::clamp(bucketOf(from.y - min_.y), -1, rows_);
         const int rings = std::max({cx + 1, columns_ - cx, cy + 1, rows_ - cy});
+        auto visit = [&](int x, int y) {
+            if (x < 0 || y < 0 || x >= columns_ || y >= rows_)
+                return;
+            for (int other : buckets_[index(x, y)]) {
+                if (other == exclude)
+                    continue;
+                const double d = distance(from, centres_[static_cast<std::size_t>(other)]);
+                nearest = std::min(nearest, d);
+                count += d <= radius ? 1 : 0;
+            }
+        };
         for (int r = 0; r <= rings; ++r) {
-            // Every centre in ring r + 1 or beyond is at least r bucket sizes away.
-            if (r >= 2 && nearest <= static_cast<double>(r - 1) * size_)
-                break;
-            for (int y = cy - r; y <= cy + r; ++y)
-                for (int x = cx - r; x <= cx + r; ++x) {
-                    if (std::max(std::abs(x - cx), std::abs(y - cy)) != r || x < 0 || y < 0 ||
-                        x >= columns_ || y >= rows_)
-                        continue;
-                    for (int other : buckets_[index(x, y)]) {
-                        if (other == exclude)
-                            continue;
-                        const double d = distance(from, centres_[static_cast<std::size_t>(other)]);
-                        nearest = std::min(nearest, d);
-                        count += d <= radius ? 1 : 0; // only rings 0 and 1 can hold such
-                    }
-                }
+            // Every centre in ring r or beyond is at least r - 1 bucket sizes away.
+            const double beyond = static_cast<double>(r - 1) * size_;
+            const bool nearestKnown = nearest <= beyond || beyond >= limit_;
+            const bool countKnown = count >= enough || beyond > radius;
+            if (r >= 1 && nearestKnown && countKnown) {
+                nearest = std::min(nearest, std::max(beyond, limit_));
+                return;
+            }
+            if (r == 0) {
+                visit(cx, cy);
+                continue;
+            }
+            for (int x = cx - r; x <= cx + r; ++x) { // the ring's top and bottom rows
+                visit(x, cy - r);
+                visit(x, cy + r);
+            }
+            for (int y = cy - r + 1; y <= cy + r - 1; ++y) { // and its sides
+                visit(cx - r, y);
+                visit(cx + r, y);
+            }
         }
     }
 
@@ -73,7 +100,9 @@ private:
     }
 
     const std::vector<Vec2>& centres_;
-    double size_;
+    double limit_;
+    int cells_ = 0;
+    double size_ = 1.0;
     Vec2 min_, max_;
     int columns_ = 0, rows_ = 0;
     std::vector<std::vector<int>> buckets_;
@@ -174,7 +203,8 @@ std::vector<float> graphStateFeatures(const CornerGraph& graph, const GraphState
             cheapestTransit =
                 std::min(cheapestTransit, (*state.transitCost)[static_cast<std::size_t>(n.id)]);
 
-    const CentreGrid grid(tables.cellCentre, uncoveredCells, nearRadius);
+    // Beyond kGraphCostCap units the nearest-cell feature is capped: no need to look further.
+    const CentreGrid grid(tables.cellCentre, uncoveredCells, unit * kGraphCostCap);
     const int F = featureCount;
     std::vector<float> out(graph.nodes.size() * static_cast<std::size_t>(F), 0.0f);
     for (const GraphNode& n : graph.nodes) {
@@ -191,24 +221,24 @@ std::vector<float> graphStateFeatures(const CornerGraph& graph, const GraphState
         f[6] = lastCell;
         f[7] = static_cast<float>((n.position.x - current.position.x) / tables.diagonal);
         f[8] = static_cast<float>((n.position.y - current.position.y) / tables.diagonal);
-        if (cell < 0)
+        // The network reads valid corners only (feature 0): the rest stay 0, which on a
+        // large floor late in an episode saves most of the work.
+        if (cell < 0 || !valid)
             continue;
         const GraphCell& c = graph.cells[static_cast<std::size_t>(cell)];
-        if (valid) {
-            f[1] = cost((*state.transitCost)[id]);
-            f[2] = exit >= 0 ? cost((*state.costToEnd)[static_cast<std::size_t>(exit)])
-                             : kGraphCostCap;
-            if (F > kFirstGraphFeatureCount) {
-                const double margin = (*state.transitCost)[id] - cheapestTransit;
-                f[14] = static_cast<float>(std::min(margin / edge, kGraphCostCap));
-                f[15] = margin <= 1e-9 * edge ? 1.0f : 0.0f;
-            }
+        f[1] = cost((*state.transitCost)[id]);
+        f[2] = exit >= 0 ? cost((*state.costToEnd)[static_cast<std::size_t>(exit)]) : kGraphCostCap;
+        if (F > kFirstGraphFeatureCount) {
+            const double margin = (*state.transitCost)[id] - cheapestTransit;
+            f[14] = static_cast<float>(std::min(margin / edge, kGraphCostCap));
+            f[15] = margin <= 1e-9 * edge ? 1.0f : 0.0f;
         }
         const Vec2 from =
             exit >= 0 ? graph.nodes[static_cast<std::size_t>(exit)].position : n.position;
         double nearest = kInfinity;
         int near = 0;
-        grid.nearestAndCount(from, cell, nearRadius, nearest, near);
+        grid.nearestAndCount(from, cell, !covered[static_cast<std::size_t>(cell)], nearRadius,
+                             kNearCellsCap, nearest, near);
         f[9] = nearest < kInfinity ? cost(nearest) : 0.0f;
         int adjacent = 0;
         for (int other : tables.cellNeighbours[static_cast<std::size_t>(cell)])
@@ -218,7 +248,7 @@ std::vector<float> graphStateFeatures(const CornerGraph& graph, const GraphState
             f[11] = static_cast<float>(roomLeft[static_cast<std::size_t>(c.room)]) /
                     static_cast<float>(roomRequired[static_cast<std::size_t>(c.room)]);
         f[12] = c.room == currentRoom ? 1.0f : 0.0f;
-        f[13] = std::min(1.0f, static_cast<float>(near) / 8.0f);
+        f[13] = std::min(1.0f, static_cast<float>(near) / static_cast<float>(kNearCellsCap));
     }
     return out;
 }

@@ -25,7 +25,8 @@
 //     (finer than 1), capped at kGraphCostCap: the greedy choice's margin, which the coarse
 //     feature 1 hides on large floors
 //  15 a is a cheapest valid corner (the greedy solver's choice)
-// Layout: node-major, features of node 0 first.
+// Layout: node-major, features of node 0 first. Features 1, 2 and 9-15 are computed for
+// valid corners only (0 elsewhere): the network reads only the rows of valid corners.
 #pragma once
 
 #include "graph/CornerGraph.h"
