@@ -11,6 +11,7 @@
 //   floorcover-dqn-budget [--cases ward,generated-office-100] [--budgets 1,5] [--queries N]
 //                         [--seed N] [--model FILE]   (default: the built-in generalist)
 //                         [--beam N]   (the search's first walk: beam width, default 4)
+#include "BenchSupport.h"
 #include "formats/PlanIO.h"
 #include "learning/dqn/DqnModelFile.h"
 #include "learning/dqn/DqnPolicy.h"
@@ -31,20 +32,9 @@ using namespace fc;
 
 namespace {
 
-double cpuSeconds() {
-    timespec t{};
-    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
-    return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
-}
+using fc::bench::threadCpuSeconds;
 
-std::vector<std::string> split(const std::string& text) {
-    std::vector<std::string> out;
-    std::stringstream in(text);
-    for (std::string item; std::getline(in, item, ',');)
-        if (!item.empty())
-            out.push_back(item);
-    return out;
-}
+using fc::bench::splitList;
 
 Plan loadCase(const std::string& name, std::uint64_t seed) {
     const std::string generated = "generated-office-";
@@ -61,14 +51,14 @@ struct Anytime {
 // Runs attempt(i, control) for i = 0, 1, ... until the budget is spent; a run still going
 // at the deadline is cancelled (SolverError) and does not count.
 template <typename Attempt> Anytime withinBudget(double budget, Attempt attempt) {
-    const double deadline = cpuSeconds() + budget;
+    const double deadline = threadCpuSeconds() + budget;
     SolveControl control;
-    control.cancelled = [deadline] { return cpuSeconds() >= deadline; };
+    control.cancelled = [deadline] { return threadCpuSeconds() >= deadline; };
     Anytime best;
-    for (int i = 0; cpuSeconds() < deadline; ++i) {
+    for (int i = 0; threadCpuSeconds() < deadline; ++i) {
         try {
             const double cost = attempt(i, control);
-            if (cpuSeconds() > deadline)
+            if (threadCpuSeconds() > deadline)
                 break; // finished after the deadline without looking at the clock
             best.cost = std::min(best.cost, cost);
             ++best.runs;
@@ -91,10 +81,10 @@ int main(int argc, char** argv) {
     for (int i = 1; i + 1 < argc; i += 2) {
         const std::string key = argv[i], value = argv[i + 1];
         if (key == "--cases")
-            cases = split(value);
+            cases = splitList(value);
         else if (key == "--budgets") {
             budgets.clear();
-            for (const std::string& b : split(value))
+            for (const std::string& b : splitList(value))
                 budgets.push_back(std::stod(b));
         } else if (key == "--queries")
             queryCount = std::stoi(value);
@@ -133,9 +123,9 @@ int main(int argc, char** argv) {
                 });
                 Anytime d;
                 {
-                    const double deadline = cpuSeconds() + budget;
+                    const double deadline = threadCpuSeconds() + budget;
                     SolveControl control;
-                    control.cancelled = [deadline] { return cpuSeconds() >= deadline; };
+                    control.cancelled = [deadline] { return threadCpuSeconds() >= deadline; };
                     try {
                         d.cost =
                             policyGuidedSearch(*model->agent, graph, query, model->info.environment,

@@ -14,6 +14,7 @@
 // epsilon), starts=N (steps before the first gradient step). Writes DIR/curves-<case>-<setting>.csv
 // and prints a Markdown table (docs/dqn.md). Time is the training thread's CPU time, so a busy
 // machine does not change the figures.
+#include "BenchSupport.h"
 #include "formats/PlanIO.h"
 #include "learning/dqn/DqnModelFile.h"
 #include "learning/dqn/DqnPolicy.h"
@@ -56,14 +57,7 @@ struct Options {
     std::string refinement; // with --model: override the model's refinement
 };
 
-std::vector<std::string> split(const std::string& text) {
-    std::vector<std::string> out;
-    std::stringstream in(text);
-    for (std::string item; std::getline(in, item, ',');)
-        if (!item.empty())
-            out.push_back(item);
-    return out;
-}
+using fc::bench::splitList;
 
 TrainingOptions settingOptions(const std::string& setting, std::uint64_t seed) {
     const std::vector<std::string> parts = [&] {
@@ -140,13 +134,7 @@ TrainingOptions settingOptions(const std::string& setting, std::uint64_t seed) {
     return o;
 }
 
-// CPU time of this thread: the budget and the curves' time axis, so that other work on a
-// shared machine does not change the results (one thread = one dedicated core).
-double threadCpuSeconds() {
-    timespec t{};
-    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
-    return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
-}
+using fc::bench::threadCpuSeconds;
 
 struct FinalFigures {
     int queries = 0, failures = 0, exactReferences = 0;
@@ -310,9 +298,9 @@ int main(int argc, char** argv) {
         else if (key == "--queries")
             o.queries = std::stoi(value);
         else if (key == "--cases")
-            o.cases = split(value);
+            o.cases = splitList(value);
         else if (key == "--settings")
-            o.settings = split(value);
+            o.settings = splitList(value);
         else if (key == "--out")
             o.out = value;
         else if (key == "--model")
