@@ -99,18 +99,14 @@ DqnTrainer::DqnTrainer(const CornerGraph& graph, TrainingOptions options, double
     if (options_.environment.graphState != (options_.agent.network == QNetworkKind::Graph))
         throw std::invalid_argument(
             "DqnTrainer: the graph state needs the graph network and the image the CNN");
-    floors_.push_back(std::make_unique<CornerGraph>(graph));
-    environments_.push_back(
-        std::make_unique<CoverageEnvironment>(*floors_.front(), options_.environment));
-    useFloor(0);
-    options_.agent.inputChannels = environment_->channelCount();
+    // Fine-tuning: the state and network are the initial model's, so they are settled
+    // before the environment is built on them; the schedule is this run's.
     const std::shared_ptr<const DqnModel> initial = options_.initialModel;
     if (initial) {
         const DqnModelInfo& from = initial->info;
         if (from.agent.network != QNetworkKind::Graph || !options_.environment.graphState ||
             from.environment.graphFeatures != options_.environment.graphFeatures)
             throw InputError("fine-tuning needs a graph-setting model with the same features");
-        // The network's shape and the state are the model's; the schedule is this run's.
         options_.agent.hiddenUnits = from.agent.hiddenUnits;
         options_.agent.epsilonStart =
             std::min(options_.agent.epsilonStart, options_.fineTuneEpsilon);
@@ -120,6 +116,11 @@ DqnTrainer::DqnTrainer(const CornerGraph& graph, TrainingOptions options, double
                                                    std::to_string(from.episodes) + " episodes)"
                                              : "fine-tuned from a model of this plan";
     }
+    floors_.push_back(std::make_unique<CornerGraph>(graph));
+    environments_.push_back(
+        std::make_unique<CoverageEnvironment>(*floors_.front(), options_.environment));
+    useFloor(0);
+    options_.agent.inputChannels = environment_->channelCount();
     agent_ = std::make_unique<DqnAgent>(environment_->size(), environment_->actionCount(),
                                         options_.agent);
     if (initial) {
@@ -307,18 +308,24 @@ EvaluationReport DqnTrainer::evaluate(const SolveControl& control) {
             control.progress(static_cast<double>(++done) / static_cast<double>(steps));
     };
     if (evaluationQueries_.empty()) {
-        // Spread over the floors (a generalist), each floor's queries from its own seed.
+        // Spread over the floors (a generalist) in turn, each floor's queries from its own
+        // seed (one floor: the same queries as before generalists existed).
         const int total = std::max(1, options_.evaluationQueries);
+        const auto floorCount = static_cast<int>(floors_.size());
+        std::vector<std::vector<Query>> perFloor(floors_.size());
+        for (std::size_t f = 0; f < floors_.size(); ++f) {
+            const CornerGraph& g = *floors_[f];
+            const int count = (total - static_cast<int>(f) + floorCount - 1) / floorCount;
+            if (count > 0)
+                perFloor[f] =
+                    randomQueries(g, count, (options_.agent.seed ^ 0x5eedULL) + f * 104729ULL,
+                                  roomCount(g) > 1 ? QuerySet::RoomSubsets : QuerySet::AllCells);
+        }
         std::vector<Query> queries;
         std::vector<std::size_t> floorOf;
         for (int i = 0; i < total; ++i) {
-            const std::size_t floor = static_cast<std::size_t>(i) % floors_.size();
-            const CornerGraph& g = *floors_[floor];
-            const QuerySet kind = roomCount(g) > 1 ? QuerySet::RoomSubsets : QuerySet::AllCells;
-            const int round = i / static_cast<int>(floors_.size());
-            std::vector<Query> drawn = randomQueries(
-                g, round + 1, (options_.agent.seed ^ 0x5eedULL) + floor * 104729ULL, kind);
-            queries.push_back(drawn.back());
+            const std::size_t floor = static_cast<std::size_t>(i % floorCount);
+            queries.push_back(perFloor[floor][static_cast<std::size_t>(i / floorCount)]);
             floorOf.push_back(floor);
         }
         std::vector<double> costs;
