@@ -6,6 +6,7 @@
 // a failure is reproduced by property_tests' generator with that family and seed.
 #include "PlanGenerator.h"
 #include "PropertyCheck.h"
+#include "learning/dqn/DqnSolver.h"
 
 #include <algorithm>
 #include <chrono>
@@ -34,7 +35,7 @@ struct Tally {
 
 void usage() {
     std::fprintf(stderr, "usage: floorcover-property-bench [--count N] [--seed S] "
-                         "[--family NAME] [--worst K]\n");
+                         "[--family NAME] [--worst K] [--solver NAME]\n");
 }
 
 } // namespace
@@ -43,6 +44,8 @@ int main(int argc, char** argv) {
     int count = 100, worst = 10;
     std::uint64_t seed = 1;
     std::vector<Family> families = allFamilies();
+    std::string solver = "heuristic";
+    fc::registerDqnSolver(); // solver dqn: the built-in generalist model
     for (int i = 1; i < argc; ++i) {
         const std::string arg = argv[i];
         if (i + 1 >= argc) {
@@ -54,6 +57,8 @@ int main(int argc, char** argv) {
             count = std::max(1, std::atoi(value.c_str()));
         else if (arg == "--seed")
             seed = std::strtoull(value.c_str(), nullptr, 10);
+        else if (arg == "--solver")
+            solver = value;
         else if (arg == "--worst")
             worst = std::max(0, std::atoi(value.c_str()));
         else if (arg == "--family") {
@@ -85,8 +90,11 @@ int main(int argc, char** argv) {
             r.plan.seed = caseSeed;
             r.generatorError = e.what();
         }
-        if (r.generatorError.empty())
-            r.outcome = planAndCheck(defaultRequest(r.plan.plan));
+        if (r.generatorError.empty()) {
+            fc::PlanRequest request = defaultRequest(r.plan.plan);
+            request.solver = solver;
+            r.outcome = planAndCheck(request);
+        }
         Tally& t = tallies[familyName(family)];
         ++t.runs;
         const Outcome& o = r.outcome;
@@ -116,12 +124,12 @@ int main(int argc, char** argv) {
 
     std::printf("# Property bench: %d random plans, seed %llu\n\n", count,
                 static_cast<unsigned long long>(seed));
-    std::printf("W = 1 m, L = 0.6 m, solver `heuristic`, default sweep. A run fails on (a) a "
+    std::printf("W = 1 m, L = 0.6 m, solver `%s`, default sweep. A run fails on (a) a "
                 "clearance below L/2 − 0.6 mm or a waypoint outside the free space, (b) "
                 "coverage below 99.5%% of the checker's sweepable area without the planner's "
                 "`uncoveredArea` within 0.2%% of the floor of the checker's, (c) an exception "
                 "other than `fc::InputError`, or planning longer than %.0f s. %.1f s in all.\n\n",
-                kSecondsPerPlan, seconds);
+                solver.c_str(), kSecondsPerPlan, seconds);
     std::printf("| family | runs | failed | failure rate | (a) collision | (b) coverage | (c) "
                 "crash | (c) slow | input errors | mean coverage | worst coverage | smallest "
                 "clearance m | mean s |\n");
