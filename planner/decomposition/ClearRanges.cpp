@@ -67,18 +67,20 @@ std::vector<Polyline> pinchLines(const Cell& cell, double x0, double x1, int lay
 
 } // namespace
 
-double narrowStripeX(const Cell& cell, const ClearanceField& field) {
+double narrowStripeX(const Cell& cell, const ClearanceField& field, double preferred) {
     const double r = field.inset();
     const double mid = 0.5 * (cell.x0 + cell.x1);
     const double a = std::min(cell.x1 - r, mid), b = std::max(cell.x0 + r, mid);
-    double bestX = mid, best = -1;
-    for (int i = 0; i <= 16; ++i) {
-        const double x = a + (b - a) * i / 16;
+    const double target = std::isnan(preferred) ? mid : std::clamp(preferred, a, b);
+    double bestX = target, best = -1;
+    const int candidates = std::isnan(preferred) ? 16 : 17; // and the preferred x itself
+    for (int i = 0; i <= candidates; ++i) {
+        const double x = i == 17 ? target : a + (b - a) * i / 16;
         double total = 0;
         for (const Interval& span : spansAt(cell, x, field))
             total += span.length() + 1e-9; // a zero-length span still counts
         if (total > best + 1e-9 ||
-            (std::abs(total - best) <= 1e-9 && std::abs(x - mid) < std::abs(bestX - mid)))
+            (std::abs(total - best) <= 1e-9 && std::abs(x - target) < std::abs(bestX - target)))
             best = total, bestX = x;
     }
     return bestX;

@@ -6,6 +6,7 @@
 #include "decomposition/Decomposition.h"
 #include "geometry/Clearance.h"
 
+#include <limits>
 #include <vector>
 
 namespace fc::detail {
@@ -22,7 +23,10 @@ std::vector<Interval> spansAt(const Cell& cell, double x, const ClearanceField& 
                               double margin = 0.0);
 
 // Where the single stripe of a cell narrower than W goes (see ClearRanges.cpp).
-double narrowStripeX(const Cell& cell, const ClearanceField& field);
+// Ties go to the x nearest `preferred` (NaN: the cell's middle), e.g. where the stripe
+// layout placed it to sweep a neighbour's sliver too (StripeLattice's hand-off).
+double narrowStripeX(const Cell& cell, const ClearanceField& field,
+                     double preferred = std::numeric_limits<double>::quiet_NaN());
 
 // Splits [cell.x0, cell.x1] where the number of clear spans changes. Margins next to the
 // cell's own ends where nothing is clear belong to the neighbouring range.

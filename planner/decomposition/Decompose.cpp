@@ -307,13 +307,17 @@ Decomposition decompose(const Plan& plan, const DecompositionOptions& options) {
         if (a.kind == Adjacency::Kind::AcrossSweep && raw[a.first].x1 == a.x0 &&
             raw[a.second].x0 == a.x0)
             latticeLinks.push_back({a.first, a.second, a.x0, a.y1 - a.y0});
-    detail::StripeLayout layout = detail::layOutStripes(latticeCells, latticeLinks, w);
-    out.stripeLatticeAvailable = std::any_of(layout.onLattice.begin(), layout.onLattice.end(),
-                                             [](char on) { return on != 0; });
+    // Slivers are handed off in both layouts: that only drops stripes (and planning both
+    // layouts only where the lattice moves some would double the time on most floors).
+    const double handOff = detail::maxHandOff(w, options.robot.robotDiameter);
+    detail::StripeLayout layout =
+        detail::layOutStripes(latticeCells, latticeLinks, w, true, handOff);
+    detail::StripeLayout own = detail::layOutStripes(latticeCells, latticeLinks, w, false, handOff);
+    out.stripeLatticeAvailable = layout.stripes != own.stripes;
     if (options.stripeLattice)
         out.stripeLattice = out.stripeLatticeAvailable;
-    else if (out.stripeLatticeAvailable)
-        layout = detail::layOutStripes(latticeCells, {}, w); // every cell on its own
+    else
+        layout = std::move(own); // every cell on its own
 
     // Split where the clear region changes (narrow passages, spans stacked in y), cut
     // transition strips and create the final cells.
@@ -383,6 +387,7 @@ Decomposition decompose(const Plan& plan, const DecompositionOptions& options) {
                 const Polyline floor = detail::clipFunction(r.floor, part.x0, part.x1);
                 const Polyline ceiling = detail::clipFunction(r.ceiling, part.x0, part.x1);
                 auto add = [&](Cell c, int layer, int layers) {
+                    c.stripesPlaced = layout.sweepsSliver[i] != 0;
                     pieces[i].push_back({c.id, c.x0, c.x1, layer, layers});
                     out.cells.push_back(std::move(c));
                 };

@@ -31,6 +31,9 @@ struct Cell {
     // middle of a gap narrower than W); an empty interval marks a stripe the robot cannot
     // reach.
     std::vector<Interval> stripeSpans;
+    // Its stripe also sweeps a sliver of the cell across (StripeLattice's hand-off): a cell
+    // narrower than W keeps it where planned if the robot fits there, not in its middle.
+    bool stripesPlaced = false;
 
     double width() const { return x1 - x0; }
     bool reachable() const;           // at least one stripe with a clear span

@@ -13,6 +13,12 @@ namespace {
 constexpr double kLatticeMinWidth = 2.0;
 // A side counts as open when walls take at most this share of W of its height.
 constexpr double kOpenWallTolerance = 0.05;
+// A cell at most this share of W wider than (n - 1) W may hand that excess to the cells
+// across a side it shares whole with them, when their own spare room absorbs it.
+constexpr double kHandOffShare = 0.15;
+// Receivers at least this many W wide: a narrower cell's one stripe goes wherever the robot
+// fits in it (StripePlanner), not where the giver's sliver is.
+constexpr double kReceiverMinWidth = 1.0;
 
 // Lattice lines origin + W/2 + kW inside the cell; at a side that is not open, a stripe
 // W/2 inside it unless a lattice line is there already.
@@ -35,7 +41,76 @@ std::vector<double> latticePositions(double x0, double x1, double w, bool leftOp
     return xs;
 }
 
+int evenCount(double width, double w) {
+    return std::max(1, static_cast<int>(std::ceil(width / w - 1e-9)));
+}
+
 } // namespace
+
+// Noisy outlines make cells a few centimetres wider than n W (an obstacle traced 2.05 m
+// tall beside 2 m of stripes), and spacing such a cell evenly costs a whole stripe more.
+// Where the cell shares one side whole with the cells across it (no wall on it), their
+// first stripe can move that excess towards it and sweep the sliver, if their own spare
+// room (n W - width) allows: the giver drops a stripe, the receivers keep their count.
+// Cells on the lattice, and cells that give, receive nothing (no chains).
+void handOffExcess(const std::vector<LatticeCell>& cells, const std::vector<LatticeLink>& links,
+                   double w, double maxHandOff, const std::vector<double>& leftShared,
+                   const std::vector<double>& rightShared, StripeLayout& out) {
+    const size_t n = cells.size();
+    std::vector<double> needLeft(n, 0.0), needRight(n, 0.0); // what receivers cover beyond
+    std::vector<char> gives(n, 0);
+    auto width = [&](size_t i) { return cells[i].x1 - cells[i].x0; };
+    auto absorbs = [&](size_t j, double left, double right) {
+        return !out.onLattice[j] && !gives[j] && width(j) >= kReceiverMinWidth * w &&
+               std::max(left, needLeft[j]) + std::max(right, needRight[j]) + width(j) <=
+                   evenCount(width(j), w) * w + 1e-9 * w;
+    };
+    for (size_t i = 0; i < n; ++i) {
+        const int count = evenCount(width(i), w);
+        const double excess = width(i) - (count - 1) * w;
+        if (out.onLattice[i] || count < 2 || needLeft[i] > 0 || needRight[i] > 0 ||
+            excess > maxHandOff)
+            continue;
+        for (const bool right : {true, false}) {
+            const double height = right ? cells[i].rightHeight : cells[i].leftHeight;
+            const double shared = right ? rightShared[i] : leftShared[i];
+            if (shared <= 0 || height - shared > kOpenWallTolerance * w)
+                continue; // a wall on that side: nobody can sweep the sliver
+            std::vector<size_t> across;
+            bool fits = true;
+            for (const LatticeLink& l : links) {
+                if (right ? l.left == static_cast<int>(i) : l.right == static_cast<int>(i)) {
+                    const auto j = static_cast<size_t>(right ? l.right : l.left);
+                    fits = fits && cells[j].room == cells[i].room &&
+                           absorbs(j, right ? excess : 0.0, right ? 0.0 : excess);
+                    across.push_back(j);
+                }
+            }
+            if (!fits || across.empty())
+                continue;
+            for (size_t j : across)
+                (right ? needLeft[j] : needRight[j]) =
+                    std::max(right ? needLeft[j] : needRight[j], excess);
+            gives[i] = 1;
+            out.stripes[i] = right ? evenStripePositions(cells[i].x0, cells[i].x1 - excess, w)
+                                   : evenStripePositions(cells[i].x0 + excess, cells[i].x1, w);
+            out.onLattice[i] = 1; // its stripes are placed, not spaced per piece
+            break;
+        }
+    }
+    for (size_t j = 0; j < n; ++j) {
+        if (needLeft[j] <= 0 && needRight[j] <= 0)
+            continue;
+        out.stripes[j] =
+            evenStripePositions(cells[j].x0 - needLeft[j], cells[j].x1 + needRight[j], w);
+        out.onLattice[j] = 1;
+        out.sweepsSliver[j] = 1;
+    }
+}
+
+double maxHandOff(double w, double robotDiameter) {
+    return std::max(0.0, std::min(kHandOffShare * w, 0.5 * (w - robotDiameter) - 0.01 * w));
+}
 
 std::vector<double> evenStripePositions(double x0, double x1, double w) {
     const double width = x1 - x0;
@@ -49,7 +124,8 @@ std::vector<double> evenStripePositions(double x0, double x1, double w) {
 }
 
 StripeLayout layOutStripes(const std::vector<LatticeCell>& cells,
-                           const std::vector<LatticeLink>& links, double w) {
+                           const std::vector<LatticeLink>& links, double w, bool lattice,
+                           double handOff) {
     const size_t n = cells.size();
     // A side is open where neighbours share (almost) all of it, within one room, both
     // cells wide, and the neighbour's facing side is open too.
@@ -61,7 +137,7 @@ StripeLayout layOutStripes(const std::vector<LatticeCell>& cells,
     }
     std::vector<char> leftOpen(n, 0), rightOpen(n, 0);
     for (size_t i = 0; i < n; ++i) {
-        const bool wide = cells[i].x1 - cells[i].x0 >= kLatticeMinWidth * w;
+        const bool wide = lattice && cells[i].x1 - cells[i].x0 >= kLatticeMinWidth * w;
         leftOpen[i] =
             wide && leftLinked[i] && cells[i].leftHeight - leftShared[i] <= kOpenWallTolerance * w;
         rightOpen[i] = wide && rightLinked[i] &&
@@ -95,6 +171,7 @@ StripeLayout layOutStripes(const std::vector<LatticeCell>& cells,
     StripeLayout out;
     out.stripes.resize(n);
     out.onLattice.assign(n, 0);
+    out.sweepsSliver.assign(n, 0);
     std::vector<std::vector<double>> even(n);
     std::map<int, std::pair<size_t, size_t>> counts; // group -> lattice, even stripes
     for (size_t i = 0; i < n; ++i) {
@@ -116,6 +193,8 @@ StripeLayout layOutStripes(const std::vector<LatticeCell>& cells,
         else
             out.stripes[i] = std::move(even[i]);
     }
+    if (handOff > 0)
+        handOffExcess(cells, links, w, handOff, leftShared, rightShared, out);
     return out;
 }
 

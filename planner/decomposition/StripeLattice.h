@@ -29,9 +29,23 @@ struct LatticeLink {
 struct StripeLayout {
     std::vector<std::vector<double>> stripes; // per raw cell
     std::vector<char> onLattice;              // stripes on the room's lattice
+    std::vector<char> sweepsSliver;           // receives a neighbour's sliver (hand-off)
 };
 
+// Where a cell is barely wider than (n - 1) W and shares a side whole with cells that have
+// room to spare, they sweep its sliver and it drops a stripe (see the .cpp).
+void handOffExcess(const std::vector<LatticeCell>& cells, const std::vector<LatticeLink>& links,
+                   double w, double maxHandOff, const std::vector<double>& leftShared,
+                   const std::vector<double>& rightShared, StripeLayout& out);
+
+// The largest sliver handed off: 0.15 W, and no more than keeps the receiving stripe L/2
+// clear of a wall on the shared slice (W/2 - sliver >= L/2).
+double maxHandOff(double w, double robotDiameter);
+
+// lattice false: no cell on the lattice (each spaced on its own). Slivers up to handOff
+// wide are handed off (0: none).
 StripeLayout layOutStripes(const std::vector<LatticeCell>& cells,
-                           const std::vector<LatticeLink>& links, double w);
+                           const std::vector<LatticeLink>& links, double w, bool lattice = true,
+                           double handOff = 0.0);
 
 } // namespace fc::detail

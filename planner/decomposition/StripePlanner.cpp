@@ -177,7 +177,8 @@ void fitStripes(Cell& cell, const ClearanceField& field) {
         return;
     const double w = 2 * field.inset();
     if (cell.stripes.size() == 1 && cell.width() < w) {
-        cell.stripes[0] = narrowStripeX(cell, field);
+        cell.stripes[0] = cell.stripesPlaced ? narrowStripeX(cell, field, cell.stripes[0])
+                                             : narrowStripeX(cell, field);
         return;
     }
     if (cell.stripes.size() == 1) { // one stripe: the nearest clear x to the planned one

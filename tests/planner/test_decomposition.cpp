@@ -262,3 +262,60 @@ TEST(StripeLattice, CellsKeepTheirOwnStripesWhereTheLatticeWouldNotHold) {
             EXPECT_LE(all[k] - all[k - 1], w + 1e-12);
     }
 }
+
+TEST(StripeLattice, ACellBarelyWiderThanItsStripesHandsTheSliverAcross) {
+    using detail::LatticeCell;
+    const double w = 1.0;
+    // A noisy map's box traced 2.05 m tall in a room 7.95 m deep: the cells beside it
+    // would need three stripes for the 5 cm over 2 W. The cell below shares their lower
+    // sides whole and has 0.1 m to spare, so its first stripe moves up 5 cm and sweeps the
+    // sliver; they keep two stripes each.
+    const std::vector<LatticeCell> cells{
+        {0, 0.0, 3.0, 12, 12}, {0, 3.0, 5.05, 4, 4}, {0, 3.0, 5.05, 4, 4}, {0, 5.05, 7.95, 12, 12}};
+    const std::vector<detail::LatticeLink> links{
+        {0, 1, 3.0, 4}, {0, 2, 3.0, 4}, {1, 3, 5.05, 4}, {2, 3, 5.05, 4}};
+    const double handOff = detail::maxHandOff(w, 0.6);
+    EXPECT_NEAR(handOff, 0.15, 1e-12);
+    EXPECT_NEAR(detail::maxHandOff(w, 0.9), 0.04, 1e-12); // W/2 - sliver stays >= L/2
+    const detail::StripeLayout layout = detail::layOutStripes(cells, links, w, true, handOff);
+    EXPECT_EQ(layout.stripes[0], detail::evenStripePositions(0.0, 3.0, w));
+    EXPECT_EQ(detail::layOutStripes(cells, links, w, false, handOff).stripes, layout.stripes);
+    EXPECT_EQ(detail::layOutStripes(cells, links, w).stripes[1].size(), 3u); // none handed
+    for (int side : {1, 2}) {
+        ASSERT_EQ(layout.stripes[side].size(), 2u);
+        EXPECT_NEAR(layout.stripes[side][0], 3.5, 1e-12);
+        EXPECT_NEAR(layout.stripes[side][1], 4.5, 1e-12);
+        EXPECT_TRUE(layout.onLattice[side]); // placed, not re-spaced per piece
+    }
+    ASSERT_EQ(layout.stripes[3].size(), 3u);
+    EXPECT_NEAR(layout.stripes[3].front(), 5.5, 1e-12); // sweeps [5.0, 5.05] too
+    EXPECT_NEAR(layout.stripes[3].back(), 7.45, 1e-12);
+    // Every depth of the room lies within W/2 of a stripe, and the sliver's stripe runs
+    // in the cell below, whose slice spans the side cells' whole lower sides.
+    std::vector<double> all;
+    for (const auto& s : layout.stripes)
+        all.insert(all.end(), s.begin(), s.end());
+    for (double y = 0.0; y <= 7.95; y += 0.01) {
+        double nearest = INFINITY;
+        for (double s : all)
+            nearest = std::min(nearest, std::abs(s - y));
+        EXPECT_LE(nearest, 0.5 * w + 1e-9) << "at " << y;
+    }
+
+    // No hand-off: 0.2 m over 2 W (more than the share), a wall on the shared side, or a
+    // cell below without room to spare.
+    std::vector<LatticeCell> wider = cells;
+    wider[1].x1 = wider[2].x1 = wider[3].x0 = 5.2;
+    std::vector<detail::LatticeLink> widerLinks = links;
+    widerLinks[2].x = widerLinks[3].x = 5.2;
+    EXPECT_EQ(detail::layOutStripes(wider, widerLinks, w, true, handOff).stripes[1].size(), 3u);
+    std::vector<detail::LatticeLink> walled = links;
+    walled[2].length = 3.0; // a wall takes 1 m of the side cell's lower side
+    EXPECT_EQ(detail::layOutStripes(cells, walled, w, true, handOff).stripes[1].size(), 3u);
+    std::vector<LatticeCell> full = cells;
+    full[3].x1 = 8.05; // 3 m below: no spare room
+    EXPECT_EQ(detail::layOutStripes(full, links, w, true, handOff).stripes[1].size(), 3u);
+    std::vector<LatticeCell> thin = cells;
+    thin[3].x1 = 5.9; // a cell below narrower than W: its stripe goes where the robot fits
+    EXPECT_EQ(detail::layOutStripes(thin, links, w, true, handOff).stripes[1].size(), 3u);
+}
