@@ -3,14 +3,18 @@
 // finished within the budget; a run still going at the deadline is cancelled and does not
 // count:
 //   heuristic  solveHeuristic with seeds 1, 2, 3, ... (each a different proxy search);
-//   dqn        the policy-guided search (PolicySearch.h): the beam's walk refined, then
-//              partial rollouts of the policy from random prefixes of the best walk, each
-//              refined; it stops at the deadline with its best complete walk.
+//   dqn        the policy-guided search (PolicySearch.h), as solver dqn-search runs it: the
+//              policy's walk searched by the heuristic's whole search from its order
+//              (searchFromWalk), then partial rollouts of the policy from random prefixes of
+//              the best walk, each searched likewise with a new seed; it stops at the
+//              deadline with its best complete walk. --thorough off: each walk only refined
+//              as solver dqn refines it (the earlier search).
 // Cost is the graph cost both optimise; queries are random room subsets with random start
 // and end corners (seeded).
 //   floorcover-dqn-budget [--cases ward,generated-office-100] [--budgets 1,5] [--queries N]
 //                         [--seed N] [--model FILE]   (default: the built-in generalist)
-//                         [--beam N]   (the search's first walk: beam width, default 4)
+//                         [--beam N]   (the search's first walk: beam width, default 1)
+//                         [--thorough on|off]   (default on)
 #include "BenchSupport.h"
 #include "formats/PlanIO.h"
 #include "learning/dqn/DqnModelFile.h"
@@ -78,6 +82,8 @@ int main(int argc, char** argv) {
     std::uint64_t seed = 1;
     std::string modelPath;
     PolicySearchOptions search;
+    search.thorough = true;
+    search.beamWidth = 1;
     for (int i = 1; i + 1 < argc; i += 2) {
         const std::string key = argv[i], value = argv[i + 1];
         if (key == "--cases")
@@ -92,6 +98,8 @@ int main(int argc, char** argv) {
             seed = std::stoull(value);
         else if (key == "--model")
             modelPath = value;
+        else if (key == "--thorough")
+            search.thorough = value == "1" || value == "on";
         else if (key == "--beam")
             search.beamWidth = std::stoi(value);
         else {
@@ -129,7 +137,7 @@ int main(int argc, char** argv) {
                     try {
                         d.cost =
                             policyGuidedSearch(*model->agent, graph, query, model->info.environment,
-                                               model->info.refinement, control)
+                                               model->info.refinement, control, search)
                                 .graphCost;
                         d.runs = 1;
                     } catch (const SolverError&) {

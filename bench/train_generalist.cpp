@@ -37,6 +37,11 @@ struct Options {
     int evaluateEvery = 0;
     int hidden = 0;            // 0: the graph setting's
     double learningRate = 0.0; // 0: the graph setting's
+    int demonstrations = 0;    // expert walks per floor (DQfD)
+    long pretrainSteps = 0;    // gradient steps on them before the first episode
+    double margin = -1.0;      // < 0: the agent's default
+    double demonstrationShare = -1.0;
+    double marginWeight = -1.0;
     std::string out;
     std::string validate; // measure this model on the validation floors and stop
 };
@@ -65,6 +70,28 @@ Plan trainingPlan(int index, std::uint64_t seed, std::string& name) {
     name = "hall " + std::to_string(static_cast<int>(width)) + " m with " +
            std::to_string(obstacles) + " obstacles, seed " + std::to_string(s);
     return generateHallWithObstacles(width, width * 0.7, obstacles, s);
+}
+
+// Share of the expert transitions whose expert corner the policy ranks first, and whose
+// expert cell it picks (any corner of it).
+void printImitation(const DqnAgent& agent) {
+    const ReplayMemory& demos = agent.demonstrations();
+    const int channels = agent.parameters().inputChannels;
+    long corner = 0, total = 0;
+    for (std::size_t i = 0; i < demos.size(); i += 7) {
+        const Transition& t = demos.at(i);
+        const std::vector<float> q = agent.qValues(t.observation, 1);
+        int best = -1;
+        for (std::size_t c = 0; c < q.size(); ++c)
+            if (t.observation[c * static_cast<std::size_t>(channels)] > 0.5f &&
+                (best < 0 || q[c] > q[static_cast<std::size_t>(best)]))
+                best = static_cast<int>(c);
+        corner += best == t.action ? 1 : 0;
+        ++total;
+    }
+    std::fprintf(stderr, "imitation: expert corner first in %.1f%% of %ld states\n",
+                 total > 0 ? 100.0 * static_cast<double>(corner) / static_cast<double>(total) : 0.0,
+                 total);
 }
 
 // `count` floors drawn from `seed` (training: the run's seed; validation: another one).
@@ -151,6 +178,16 @@ bool parse(int argc, char** argv, Options& o) {
             o.hidden = std::atoi(argv[++i]);
         else if (arg == "--lr" && hasValue)
             o.learningRate = std::atof(argv[++i]);
+        else if (arg == "--demos" && hasValue)
+            o.demonstrations = std::atoi(argv[++i]);
+        else if (arg == "--pretrain" && hasValue)
+            o.pretrainSteps = std::atol(argv[++i]);
+        else if (arg == "--margin" && hasValue)
+            o.margin = std::atof(argv[++i]);
+        else if (arg == "--margin-weight" && hasValue)
+            o.marginWeight = std::atof(argv[++i]);
+        else if (arg == "--demo-share" && hasValue)
+            o.demonstrationShare = std::atof(argv[++i]);
         else if (arg == "--validate" && hasValue)
             o.validate = argv[++i];
         else if (arg == "--out" && hasValue)
@@ -160,7 +197,8 @@ bool parse(int argc, char** argv, Options& o) {
     }
     if (!o.validate.empty())
         return true;
-    return !o.out.empty() && o.floors > 0 && (o.episodes > 0 || o.seconds > 0.0);
+    return !o.out.empty() && o.floors > 0 &&
+           (o.episodes > 0 || o.seconds > 0.0 || o.pretrainSteps > 0);
 }
 
 } // namespace
@@ -169,7 +207,8 @@ int main(int argc, char** argv) {
     Options o;
     if (!parse(argc, argv, o)) {
         std::cerr << "usage: floorcover-train-generalist [--floors N] [--episodes N | --seconds "
-                     "S] [--seed N] [--evaluate-every N] [--hidden N] [--lr R] --out FILE\n";
+                     "S] [--seed N] [--evaluate-every N] [--hidden N] [--lr R] [--demos N "
+                     "[--pretrain STEPS] [--margin M] [--demo-share F]] --out FILE\n";
         return 2;
     }
     if (!o.validate.empty()) {
@@ -198,6 +237,14 @@ int main(int argc, char** argv) {
         options.agent.hiddenUnits = o.hidden;
     if (o.learningRate > 0.0)
         options.agent.learningRate = o.learningRate;
+    if (o.margin >= 0.0)
+        options.agent.margin = o.margin;
+    if (o.demonstrationShare >= 0.0)
+        options.agent.demonstrationShare = o.demonstrationShare;
+    if (o.marginWeight >= 0.0)
+        options.agent.marginWeight = o.marginWeight;
+    if (o.demonstrations > 0)
+        options.agent.demonstrationCapacity = std::max(20'000, o.demonstrations * o.floors * 40);
     std::string provenance = "floorcover-train-generalist --floors " + std::to_string(o.floors) +
                              " --seed " + std::to_string(o.seed);
     provenance += o.episodes > 0 ? " --episodes " + std::to_string(o.episodes)
@@ -206,39 +253,79 @@ int main(int argc, char** argv) {
         provenance += " --hidden " + std::to_string(o.hidden);
     if (o.learningRate > 0.0)
         provenance += " --lr " + argumentText(o.learningRate);
+    if (o.demonstrations > 0)
+        provenance += " --demos " + std::to_string(o.demonstrations) + " --pretrain " +
+                      std::to_string(o.pretrainSteps);
+    if (o.margin >= 0.0)
+        provenance += " --margin " + argumentText(o.margin);
+    if (o.demonstrationShare >= 0.0)
+        provenance += " --demo-share " + argumentText(o.demonstrationShare);
+    if (o.marginWeight >= 0.0)
+        provenance += " --margin-weight " + argumentText(o.marginWeight);
     DqnTrainer trainer(std::move(floors), options, RobotProfile{}.coverageWidth, provenance);
     const auto start = std::chrono::steady_clock::now();
     long shown = 0;
     double bestGap = validation.policyGap(trainer.agent(), trainer.options().environment);
     long bestEpisode = 0;
     trainer.save(o.out);
-    trainer.train(o.episodes, o.episodes > 0 ? 0.0 : o.seconds, [&](const TrainingProgress& p) {
-        if (p.evaluation) {
+    if (o.demonstrations > 0) {
+        printImitation(trainer.agent());
+        const long added = trainer.addDemonstrations(o.demonstrations);
+        std::fprintf(
+            stderr, "%ld expert transitions (%d walks per floor) after %.0f s\n", added,
+            o.demonstrations,
+            std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+        // Pre-training in rounds, each measured on the validation floors.
+        const long round = 1000;
+        for (long done = 0; done < o.pretrainSteps; done += round) {
+            const double loss = trainer.pretrain(std::min(round, o.pretrainSteps - done));
             const double gap = validation.policyGap(trainer.agent(), trainer.options().environment);
             const bool better = gap < bestGap;
             if (better) {
                 bestGap = gap;
-                bestEpisode = p.episode;
                 trainer.save(o.out);
             }
-            std::fprintf(stderr,
-                         "episode %ld  %.0f s  policy gap %.2f%% (refined %.2f%%) on its floors, "
-                         "%.2f%% on the validation floors%s\n",
-                         p.episode, p.elapsedSeconds, 100.0 * p.evaluation->meanGap,
-                         100.0 * p.evaluation->meanRefinedGap, 100.0 * gap,
-                         better ? " (best: saved)" : "");
+            std::fprintf(
+                stderr,
+                "pre-training step %ld  %.0f s  loss %.4f (margin %.4f)  %.2f%% on the validation "
+                "floors%s\n",
+                std::min(done + round, o.pretrainSteps),
+                std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(),
+                loss, trainer.agent().lastMarginLoss(), 100.0 * gap,
+                better ? " (best: saved)" : "");
+            printImitation(trainer.agent());
         }
-        if (p.episode - shown >= 500) {
-            shown = p.episode;
-            std::fprintf(stderr,
-                         "episode %ld  %.0f s  reward (avg) %.3f  epsilon %.2f  %.0f steps/s\n",
-                         p.episode, p.elapsedSeconds, p.movingAverage, p.epsilon, p.stepsPerSecond);
-        }
-    });
+    }
+    if (o.episodes > 0 || o.seconds > 0.0)
+        trainer.train(o.episodes, o.episodes > 0 ? 0.0 : o.seconds, [&](const TrainingProgress& p) {
+            if (p.evaluation) {
+                const double gap =
+                    validation.policyGap(trainer.agent(), trainer.options().environment);
+                const bool better = gap < bestGap;
+                if (better) {
+                    bestGap = gap;
+                    bestEpisode = p.episode;
+                    trainer.save(o.out);
+                }
+                std::fprintf(
+                    stderr,
+                    "episode %ld  %.0f s  policy gap %.2f%% (refined %.2f%%) on its floors, "
+                    "%.2f%% on the validation floors%s\n",
+                    p.episode, p.elapsedSeconds, 100.0 * p.evaluation->meanGap,
+                    100.0 * p.evaluation->meanRefinedGap, 100.0 * gap,
+                    better ? " (best: saved)" : "");
+            }
+            if (p.episode - shown >= 500) {
+                shown = p.episode;
+                std::fprintf(
+                    stderr, "episode %ld  %.0f s  reward (avg) %.3f  epsilon %.2f  %.0f steps/s\n",
+                    p.episode, p.elapsedSeconds, p.movingAverage, p.epsilon, p.stepsPerSecond);
+            }
+        });
     const double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     const double lastGap = validation.policyGap(trainer.agent(), trainer.options().environment);
-    if (lastGap < bestGap || o.evaluateEvery <= 0) {
+    if (lastGap < bestGap || (o.evaluateEvery <= 0 && o.pretrainSteps <= 0)) {
         bestGap = lastGap;
         bestEpisode = trainer.episodes();
         trainer.save(o.out);

@@ -149,4 +149,40 @@ Solution solveHeuristic(const CornerGraph& graph, const Query& query, const Solv
     return solution;
 }
 
+Solution searchFromWalk(const CornerGraph& graph, const Query& query, const Solution& given,
+                        const SolveControl& control) {
+    const Problem problem = makeProblem(graph, query, kName);
+    const int tasks = problem.taskCount();
+    if (tasks == 0)
+        return given;
+    std::vector<int> order = taskOrderOf(problem, given);
+    const TransitGraph transit(problem);
+    TransitSearch search(transit);
+    OrderEvaluator evaluator(transit, search);
+    const bool small = tasks <= kSmallInstance;
+    ProxyDistances distances(transit, search, small ? tasks - 1 : kNeighbourCount);
+    throwIfCancelled(control, kName);
+    TourSearch tour(problem, distances, problem.seed);
+    tour.startFrom(order);
+    tour.optimise();
+    tour.iterate(proxyKicks(tasks), control);
+    // As in solveHeuristic: the proxy misses the covered state, so the given order and the
+    // proxy's are both priced exactly and the cheaper is polished.
+    double cost = evaluator.setBase(order);
+    std::vector<int> proxyOrder = tour.order();
+    const double proxyCost = evaluator.setBase(proxyOrder);
+    if (proxyCost < cost) {
+        order = std::move(proxyOrder);
+        cost = proxyCost;
+    }
+    if (cost < kInfinity) {
+        OrderPolish polish(evaluator, distances, tasks, problem.seed + 7919);
+        cost = polish.improve(order, polishWork(tasks, problem.reachableNodeCount, small), control);
+    }
+    if (!(cost < given.graphCost - 1e-9))
+        return given;
+    Solution solution = finishSolution(graph, query, given.solver.c_str(), evaluator.walk(order));
+    return solution;
+}
+
 } // namespace fc

@@ -29,17 +29,7 @@ Solution refineCellOrder(const CornerGraph& graph, const Query& query, const Sol
     const int tasks = problem.taskCount();
     if (tasks == 0)
         return given;
-    std::vector<int> order;
-    std::vector<char> seen(static_cast<std::size_t>(tasks), 0);
-    for (int cell : given.cellOrder) {
-        const int task = problem.taskOfCell[static_cast<std::size_t>(cell)];
-        if (task < 0 || seen[static_cast<std::size_t>(task)])
-            continue; // not required, or covered again later: not a new task
-        seen[static_cast<std::size_t>(task)] = 1;
-        order.push_back(task);
-    }
-    if (static_cast<int>(order.size()) != tasks)
-        throw SolverError(given.solver + ": the walk to refine does not cover every cell once");
+    std::vector<int> order = taskOrderOf(problem, given);
 
     const TransitGraph transit(problem);
     TransitSearch search(transit);

@@ -108,5 +108,12 @@ enum class OrderRefinement { None, Corners, LocalSearch };
 Solution refineCellOrder(const CornerGraph& graph, const Query& query, const Solution& given,
                          OrderRefinement refinement, std::uint64_t workBudget = 200'000,
                          const SolveControl& control = {});
+// The heuristic solver's whole search (proxy local search with its kicks, then the true-cost
+// polish with its budget), started from the given walk's cell order instead of the
+// nearest-neighbour tour; query.seed drives the kicks. Returns the cheaper of the given and
+// the searched walk. For a learnt policy's walks: with a good start the same search effort
+// reaches better optima (floorcover-dqn-budget).
+Solution searchFromWalk(const CornerGraph& graph, const Query& query, const Solution& given,
+                        const SolveControl& control = {});
 
 } // namespace fc

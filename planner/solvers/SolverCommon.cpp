@@ -92,6 +92,22 @@ Problem makeProblem(const CornerGraph& graph, const Query& query, const char* so
     return problem;
 }
 
+std::vector<int> taskOrderOf(const Problem& problem, const Solution& given) {
+    const int tasks = problem.taskCount();
+    std::vector<int> order;
+    std::vector<char> seen(static_cast<std::size_t>(tasks), 0);
+    for (int cell : given.cellOrder) {
+        const int task = problem.taskOfCell[static_cast<std::size_t>(cell)];
+        if (task < 0 || seen[static_cast<std::size_t>(task)])
+            continue; // not required, or covered again later: not a new task
+        seen[static_cast<std::size_t>(task)] = 1;
+        order.push_back(task);
+    }
+    if (static_cast<int>(order.size()) != tasks)
+        throw SolverError(given.solver + ": the walk to improve does not cover every cell once");
+    return order;
+}
+
 Solution finishSolution(const CornerGraph& graph, const Query& query, const char* solverName,
                         Walk walk) {
     const WalkEvaluation evaluation = evaluateWalk(graph, query, walk);

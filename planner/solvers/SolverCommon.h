@@ -49,6 +49,10 @@ Problem makeProblem(const CornerGraph& graph, const Query& query, const char* so
 Solution finishSolution(const CornerGraph& graph, const Query& query, const char* solverName,
                         Walk walk);
 
+// The task order of a given walk's cell order (each required cell's first cover); throws
+// SolverError when it misses a required cell.
+std::vector<int> taskOrderOf(const Problem& problem, const Solution& given);
+
 void throwIfCancelled(const SolveControl& control, const char* solverName);
 void reportProgress(const SolveControl& control, double fraction);
 

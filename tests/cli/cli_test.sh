@@ -186,6 +186,9 @@ check "truncated named as such" grep -q "truncated" "$work/refusal"
 expect_bad_input "plan file as model" "$plans/simple.geojson" --solver dqn --model "$plans/simple.geojson"
 check "dqn without a model plans with the generalist" cli plan "$plans/room-obstacle.geojson" --solver dqn
 check "generalist dqn metrics" metrics_ok
+check "dqn-search plans with the generalist" cli plan "$plans/room-obstacle.geojson" --solver dqn-search
+check "dqn-search metrics" metrics_ok
+check "dqn-search named in metrics" grep -q '"solver":"dqn-search"' "$work/last"
 check "compare includes dqn without a model" cli compare "$plans/simple.geojson"
 check "compare lists dqn with the generalist" grep -q '^dqn ' "$work/last"
 check "train from scratch" cli train "$plans/simple.geojson" --out "$work/scratch.fcdqn" --episodes 5 --from-scratch

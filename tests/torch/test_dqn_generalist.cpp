@@ -336,3 +336,81 @@ TEST(GraphState, BucketedNearestCellsEqualTheFullScan) {
         }
     }
 }
+
+// Thorough moves: every walk of the policy is searched by the heuristic's whole search from
+// its order (searchFromWalk), never worse than the walk it starts from; a walk that misses a
+// required cell is refused; a search cut short at once answers the policy's own walk.
+TEST(PolicySearch, ThoroughMovesSearchFromThePolicysWalks) {
+    const std::shared_ptr<const DqnModel> model = generalistModel();
+    const PreparedPlan plan = preparedSample("office");
+    const Query q = randomQueries(plan.graph, 1, 12, QuerySet::RoomSubsets).front();
+    const EnvironmentOptions& env = model->info.environment;
+    const Solution rollout =
+        solveWithPolicy(*model->agent, plan.graph, q, env, OrderRefinement::None);
+    const Solution searched = searchFromWalk(plan.graph, q, rollout);
+    EXPECT_LE(searched.graphCost, rollout.graphCost + 1e-9);
+    EXPECT_TRUE(evaluateWalk(plan.graph, q, searched.walk).coversAllRequired);
+    EXPECT_DOUBLE_EQ(searchFromWalk(plan.graph, q, rollout).graphCost, searched.graphCost);
+
+    PolicySearchOptions options;
+    options.thorough = true;
+    options.beamWidth = 1;
+    options.maxMoves = 3;
+    const Solution best = policyGuidedSearch(*model->agent, plan.graph, q, env,
+                                             model->info.refinement, {}, options, &rollout);
+    EXPECT_LE(best.graphCost, rollout.graphCost + 1e-9);
+    EXPECT_TRUE(evaluateWalk(plan.graph, q, best.walk).coversAllRequired);
+    std::printf("office query: policy %.1f, searched from it %.1f, 3 thorough moves %.1f\n",
+                rollout.graphCost, searched.graphCost, best.graphCost);
+
+    SolveControl now;
+    now.cancelled = [] { return true; };
+    const Solution cut = policyGuidedSearch(*model->agent, plan.graph, q, env,
+                                            model->info.refinement, now, options, &rollout);
+    EXPECT_EQ(cut.walk.nodes, rollout.walk.nodes);
+
+    Solution partial = rollout;
+    partial.cellOrder.resize(partial.cellOrder.size() / 2);
+    EXPECT_THROW(searchFromWalk(plan.graph, q, partial), SolverError);
+}
+
+// Learning from demonstrations: expert walks replayed into the agent's demonstration set
+// (never mixed with its own memory), and pre-training on them makes the policy rank the
+// expert's corner first more often than before.
+TEST(DqnTrainer, DemonstrationsTeachTheExpertsCorners) {
+    const PreparedPlan plan = preparedSample("room-obstacle");
+    TrainingOptions options = smallOptions(TrainingOptions::graph(3));
+    DqnTrainer trainer(plan.graph, options, 90.0, 1.0);
+    const long added = trainer.addDemonstrations(12);
+    EXPECT_GT(added, 12);
+    EXPECT_EQ(trainer.agent().demonstrationCount(), static_cast<std::size_t>(added));
+    EXPECT_EQ(trainer.agent().memory().size(), 0u);
+    auto imitation = [&trainer] {
+        const DqnAgent& agent = trainer.agent();
+        const ReplayMemory& demos = agent.demonstrations();
+        const auto channels = static_cast<std::size_t>(agent.parameters().inputChannels);
+        int first = 0;
+        for (std::size_t i = 0; i < demos.size(); ++i) {
+            const Transition& t = demos.at(i);
+            const std::vector<float> q = agent.qValues(t.observation, 1);
+            int best = -1;
+            for (std::size_t c = 0; c < q.size(); ++c)
+                if (t.observation[c * channels] > 0.5f &&
+                    (best < 0 || q[c] > q[static_cast<std::size_t>(best)]))
+                    best = static_cast<int>(c);
+            first += best == t.action ? 1 : 0;
+        }
+        return static_cast<double>(first) / static_cast<double>(demos.size());
+    };
+    const double before = imitation();
+    trainer.pretrain(1500);
+    const double after = imitation();
+    std::printf("room-obstacle: expert corner ranked first in %.0f%% of %ld demonstration "
+                "states before pre-training, %.0f%% after\n",
+                100.0 * before, added, 100.0 * after);
+    EXPECT_GT(after, before + 0.15);
+
+    TrainingOptions image = smallOptions(TrainingOptions::improved(3));
+    DqnTrainer imageTrainer(plan.graph, image, 90.0, 1.0);
+    EXPECT_THROW(imageTrainer.addDemonstrations(2), std::invalid_argument);
+}

@@ -4,9 +4,11 @@
 #include "learning/dqn/DqnModelFile.h"
 #include "learning/dqn/DqnPolicy.h"
 #include "learning/dqn/GeneralistModel.h"
+#include "learning/dqn/PolicySearch.h"
 #include "model/Plan.h"
 #include "solvers/SolverRegistry.h"
 
+#include <chrono>
 #include <filesystem>
 #include <map>
 #include <memory>
@@ -52,9 +54,43 @@ Solution solveDqn(const PreparedPlan& prepared, const Query& query, const std::s
                            model->info.refinement, control);
 }
 
+Solution solveDqnSearch(const PreparedPlan& prepared, const Query& query,
+                        const std::string& modelPath, const SolveControl& control) {
+    const std::shared_ptr<const DqnModel> model = cachedModel(modelPath);
+    checkModelFitsGraph(model->info, prepared.graph,
+                        modelPath.empty() ? kGeneralistModelName : modelPath);
+    const auto deadline = std::chrono::steady_clock::now() +
+                          std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+                              std::chrono::duration<double>(kDqnSearchSeconds));
+    auto userCancelled = [&control] { return control.cancelled && control.cancelled(); };
+    SolveControl timed;
+    timed.cancelled = [deadline, userCancelled] {
+        return userCancelled() || std::chrono::steady_clock::now() >= deadline;
+    };
+    timed.progress = control.progress;
+    PolicySearchOptions options;
+    options.beamWidth = 1;
+    options.thorough = true;
+    options.seed = query.seed;
+    // The first walk under the user's cancellation only: the search then always has one.
+    const Solution rollout =
+        solveWithPolicy(*model->agent, prepared.graph, query, model->info.environment,
+                        OrderRefinement::None, control, options.beamWidth);
+    Solution best =
+        policyGuidedSearch(*model->agent, prepared.graph, query, model->info.environment,
+                           model->info.refinement, timed, options, &rollout);
+    if (userCancelled()) // the search returns its best walk; a cancelled plan is not wanted
+        throw SolverError("dqn-search: cancelled");
+    best.solver = "dqn-search";
+    return best;
+}
+
 } // namespace
 
 void registerDqnSolver() {
+    RegisteredSolver search;
+    search.name = "dqn-search";
+    search.solve = solveDqnSearch;
     RegisteredSolver solver;
     solver.name = "dqn";
     solver.solve = solveDqn;
@@ -67,7 +103,9 @@ void registerDqnSolver() {
             return std::nullopt;
         return info.stripeAngleDeg;
     };
+    search.sweepAngle = solver.sweepAngle;
     registerSolver(std::move(solver));
+    registerSolver(std::move(search));
 }
 
 } // namespace fc

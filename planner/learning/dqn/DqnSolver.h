@@ -9,6 +9,11 @@ namespace fc {
 // is unchanged), refuses a model trained for another graph, plans with masked greedy
 // inference and the model's refinement, and plans at the model's sweep angle when the
 // request asks for "auto".
+// Also registers "dqn-search": the policy as the guide of an anytime search (PolicySearch.h,
+// thorough moves) that runs for kDqnSearchSeconds per query and keeps its cheapest walk; on
+// large floors it beats heuristic at equal time (docs/dqn.md).
 void registerDqnSolver();
+
+constexpr double kDqnSearchSeconds = 2.0;
 
 } // namespace fc

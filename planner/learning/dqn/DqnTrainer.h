@@ -95,6 +95,18 @@ public:
                        const std::function<void(const TrainingProgress&)>& progress = {},
                        const std::function<bool()>& cancelled = {});
 
+    // Learning from demonstrations (DQfD): `perFloor` expert walks on every floor, half on
+    // the evaluation's kind of query (room subsets or all cells, from another seed) and half
+    // on training episodes' random starts, ends and pre-covered sets. Each is solved by the
+    // exact solver (up to 12 cells) or the heuristic and replayed into the agent's
+    // demonstrations, which then join every batch with a margin loss (DqnHyperParameters).
+    // Graph setting only (std::invalid_argument otherwise). Cancellable between walks;
+    // returns the transitions added.
+    long addDemonstrations(int perFloor, const SolveControl& control = {});
+    // `steps` gradient steps on the demonstrations alone (before or between episodes); the
+    // target network syncs every targetSyncInterval of them. Returns the mean loss.
+    double pretrain(long steps);
+
     // The fixed query set (all cells, or random room subsets on floors with several rooms).
     // Cancellable (control.cancelled): throws SolverError, and a cancelled first evaluation
     // keeps no partial reference costs.

@@ -76,11 +76,33 @@ std::vector<int> entryActions(const CornerGraph& graph, const Query& query, cons
 
 Solution policyGuidedSearch(const DqnAgent& agent, const CornerGraph& graph, const Query& query,
                             const EnvironmentOptions& environment, OrderRefinement refinement,
-                            const SolveControl& control, const PolicySearchOptions& options) {
+                            const SolveControl& control, const PolicySearchOptions& options,
+                            const Solution* start) {
     if (options.maxMoves <= 0 && !control.cancelled)
         throw std::invalid_argument("policyGuidedSearch: no move limit and no cancellation");
-    Solution best =
-        solveWithPolicy(agent, graph, query, environment, refinement, control, options.beamWidth);
+    // Thorough: the policy's walk, searched by the heuristic's search with the move's seed.
+    auto search = [&](const Solution& walk, std::uint64_t move) {
+        Query seeded = query;
+        seeded.seed = options.seed * 1000003ULL + move;
+        return searchFromWalk(graph, seeded, walk, control);
+    };
+    const Solution first =
+        start != nullptr ? *start
+                         : solveWithPolicy(agent, graph, query, environment,
+                                           options.thorough ? OrderRefinement::None : refinement,
+                                           control, options.beamWidth);
+    Solution best = first;
+    try {
+        best = options.thorough   ? search(first, 0)
+               : start != nullptr ? refineCellOrder(graph, query, first, refinement,
+                                                    kPolicyRefinementBudget, control)
+                                  : first;
+    } catch (const SolverError&) {
+        if (!(control.cancelled && control.cancelled()))
+            throw;
+        best.solver = "dqn"; // cut short: the policy's own walk
+        return best;
+    }
     std::mt19937_64 rng(options.seed);
     for (int move = 0; options.maxMoves <= 0 || move < options.maxMoves; ++move) {
         if (control.cancelled && control.cancelled())
@@ -95,8 +117,10 @@ Solution policyGuidedSearch(const DqnAgent& agent, const CornerGraph& graph, con
         try {
             const Solution walk =
                 perturbedRollout(agent, graph, query, environment, prefix, options, rng, control);
-            const Solution refined =
-                refineCellOrder(graph, query, walk, refinement, kPolicyRefinementBudget, control);
+            const Solution refined = options.thorough
+                                         ? search(walk, static_cast<std::uint64_t>(move) + 1)
+                                         : refineCellOrder(graph, query, walk, refinement,
+                                                           kPolicyRefinementBudget, control);
             if (refined.graphCost < best.graphCost - 1e-9)
                 best = refined;
         } catch (const SolverError&) {

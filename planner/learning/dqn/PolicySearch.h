@@ -20,14 +20,21 @@ struct PolicySearchOptions {
     double exploration = 0.3; // chance of one of the next best corners instead of the best
     int alternatives = 3;     // how many of the best corners such a choice draws from
     std::uint64_t seed = 1;
+    // Each walk (the start and every move's) searched by the heuristic's whole search from
+    // its order (searchFromWalk, a new seed per move) instead of the light refinement: the
+    // policy then chooses where the heuristic's search starts.
+    bool thorough = false;
 };
 
 // The best walk found; a move cancelled half-way is dropped, so a cancellation ends the
 // search with its best complete walk instead of an error (unless the start itself was
 // cancelled: SolverError). Throws std::invalid_argument without any way to stop.
+// start: the policy's walk to begin from when the caller already has it (e.g. made under
+// the user's cancellation only, so that a deadline cannot leave it without any walk).
 Solution policyGuidedSearch(const DqnAgent& agent, const CornerGraph& graph, const Query& query,
                             const EnvironmentOptions& environment, OrderRefinement refinement,
-                            const SolveControl& control, const PolicySearchOptions& options = {});
+                            const SolveControl& control, const PolicySearchOptions& options = {},
+                            const Solution* start = nullptr);
 
 // The corners a walk enters its required cells by, in order: the actions that make the
 // environment repeat the walk's cell order (each cell's first coverage traversal).

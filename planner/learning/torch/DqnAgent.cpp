@@ -78,6 +78,7 @@ struct DqnAgent::Impl {
 DqnAgent::DqnAgent(int imageSize, int actionCount, DqnHyperParameters params)
     : imageSize_(imageSize), actionCount_(actionCount), params_(params),
       memory_(static_cast<std::size_t>(params.replayCapacity > 0 ? params.replayCapacity : 1)),
+      demonstrations_(static_cast<std::size_t>(std::max(1, params.demonstrationCapacity))),
       rng_(params.seed) {
     if (params.replayCapacity <= 0 || params.batchSize <= 0 || params.targetSyncInterval <= 0 ||
         params.trainInterval <= 0 || params.inputChannels <= 0)
@@ -159,8 +160,21 @@ int DqnAgent::actionsIn(const std::vector<float>& observation) const {
 }
 
 void DqnAgent::remember(Transition transition) {
+    if (!fits(transition))
+        throw std::invalid_argument("DqnAgent::remember: transition does not fit the agent");
+    memory_.push(std::move(transition));
+}
+
+void DqnAgent::rememberDemonstration(Transition transition) {
+    if (!sizeFree() || !fits(transition))
+        throw std::invalid_argument("DqnAgent::rememberDemonstration: needs the graph network and "
+                                    "a transition that fits it");
+    demonstrations_.push(std::move(transition));
+}
+
+bool DqnAgent::fits(const Transition& transition) const {
     const auto channels = static_cast<std::size_t>(params_.inputChannels);
-    const bool fits =
+    const bool sized =
         sizeFree()
             ? !transition.observation.empty() && transition.observation.size() % channels == 0 &&
                   transition.nextObservation.size() == transition.nextMask.size() * channels &&
@@ -169,9 +183,7 @@ void DqnAgent::remember(Transition transition) {
                   transition.nextObservation.size() == observationSize() &&
                   transition.nextMask.size() == static_cast<std::size_t>(actionCount_) &&
                   transition.action < actionCount_;
-    if (!fits || transition.action < 0)
-        throw std::invalid_argument("DqnAgent::remember: transition does not fit the agent");
-    memory_.push(std::move(transition));
+    return sized && transition.action >= 0;
 }
 
 namespace {
@@ -186,10 +198,29 @@ void appendPadded(const std::vector<float>& from, std::size_t length, std::vecto
 
 } // namespace
 
-double DqnAgent::trainStep() {
+double DqnAgent::trainStep(bool demonstrationsOnly) {
     useOneThread();
     const auto batch = static_cast<std::size_t>(params_.batchSize);
-    const std::vector<std::size_t> indices = memory_.sample(batch, rng_);
+    // Rows from the agent's own memory first, then from the demonstrations. Without
+    // demonstrations the draws are those of plain Double DQN.
+    std::size_t fromDemonstrations = 0;
+    if (demonstrations_.size() > 0)
+        fromDemonstrations =
+            demonstrationsOnly || memory_.size() == 0
+                ? batch
+                : std::min(batch, static_cast<std::size_t>(std::lround(
+                                      params_.demonstrationShare * static_cast<double>(batch))));
+    else if (demonstrationsOnly)
+        throw std::logic_error("DqnAgent::trainStep: no demonstrations");
+    const std::size_t fromMemory = batch - fromDemonstrations;
+    std::vector<const Transition*> items;
+    items.reserve(batch);
+    if (fromMemory > 0)
+        for (std::size_t index : memory_.sample(fromMemory, rng_))
+            items.push_back(&memory_.at(index));
+    if (fromDemonstrations > 0)
+        for (std::size_t index : demonstrations_.sample(fromDemonstrations, rng_))
+            items.push_back(&demonstrations_.at(index));
     const auto channels = static_cast<std::size_t>(params_.inputChannels);
     // Graph network: transitions of graphs of different sizes share a batch, padded to the
     // largest (separately for the states and the next states).
@@ -197,9 +228,9 @@ double DqnAgent::trainStep() {
     std::size_t nextPixels = pixels;
     if (sizeFree()) {
         pixels = nextPixels = 0;
-        for (std::size_t index : indices) {
-            pixels = std::max(pixels, memory_.at(index).observation.size());
-            nextPixels = std::max(nextPixels, memory_.at(index).nextObservation.size());
+        for (const Transition* t : items) {
+            pixels = std::max(pixels, t->observation.size());
+            nextPixels = std::max(nextPixels, t->nextObservation.size());
         }
         nextPixels = std::max(nextPixels, channels); // a terminal state may have no corner
     }
@@ -218,7 +249,7 @@ double DqnAgent::trainStep() {
     targetsInput.steps.resize(batch);
     targetsInput.nextMask.assign(batch * actions, 0);
     for (std::size_t i = 0; i < batch; ++i) {
-        const Transition& t = memory_.at(indices[i]);
+        const Transition& t = *items[i];
         appendPadded(t.observation, pixels, observations);
         appendPadded(t.nextObservation, nextPixels, nextObservations);
         std::copy(t.nextMask.begin(), t.nextMask.end(),
@@ -250,9 +281,30 @@ double DqnAgent::trainStep() {
     const torch::Tensor targets = torch::from_blob(y.data(), {b}, torch::kFloat32);
 
     impl_->online->train();
-    const torch::Tensor q = impl_->online->forward(input).gather(1, actionIndex).squeeze(1);
-    const torch::Tensor loss =
-        torch::huber_loss(q, targets, at::Reduction::Mean, params_.huberDelta);
+    const torch::Tensor allQ = impl_->online->forward(input);
+    const torch::Tensor q = allQ.gather(1, actionIndex).squeeze(1);
+    torch::Tensor loss = torch::huber_loss(q, targets, at::Reduction::Mean, params_.huberDelta);
+    std::vector<float> margins;
+    if (fromDemonstrations > 0 && params_.marginWeight > 0.0) {
+        // Expert rows: + margin on every other valid corner, a large negative on invalid ones.
+        const std::size_t corners = pixels / channels;
+        margins.assign(fromDemonstrations * corners, -1e9f);
+        for (std::size_t r = 0; r < fromDemonstrations; ++r) {
+            const Transition& t = *items[fromMemory + r];
+            for (std::size_t c = 0; c * channels < t.observation.size(); ++c)
+                if (t.observation[c * channels] > 0.5f)
+                    margins[r * corners + c] = static_cast<float>(params_.margin);
+            margins[r * corners + static_cast<std::size_t>(t.action)] = 0.0f;
+        }
+        const auto rows = static_cast<std::int64_t>(fromDemonstrations);
+        const torch::Tensor offsets = torch::from_blob(
+            margins.data(), {rows, static_cast<std::int64_t>(corners)}, torch::kFloat32);
+        const auto first = static_cast<std::int64_t>(fromMemory);
+        const torch::Tensor best = std::get<0>((allQ.narrow(0, first, rows) + offsets).max(1));
+        const torch::Tensor hinge = (best - q.narrow(0, first, rows)).mean();
+        lastMarginLoss_ = hinge.item<double>();
+        loss = loss + params_.marginWeight * hinge;
+    }
     impl_->optimizer.zero_grad();
     loss.backward();
     if (params_.gradientClipNorm > 0.0)

@@ -54,6 +54,15 @@ struct DqnHyperParameters {
     // Improvements over the paper.
     bool maskActions = true;      // act only among valid actions
     bool maskTargetArgmax = true; // Double-DQN argmax only among valid next actions
+    // Learning from demonstrations (DQfD, Hester et al. 2018; graph network only). Once expert
+    // transitions are given (rememberDemonstration), demonstrationShare of every batch is drawn
+    // from them, and those rows add the large-margin loss
+    //   marginWeight x (max over valid a of [Q(s, a) + margin x (a != a_E)] - Q(s, a_E)),
+    // which ranks the expert's corner first; the TD loss still fits the values.
+    double demonstrationShare = 0.25;
+    double margin = 0.2; // in reward units (longest edges in the graph setting)
+    double marginWeight = 1.0;
+    int demonstrationCapacity = 20'000;
 };
 
 class DqnAgent {
@@ -82,9 +91,18 @@ public:
     std::vector<float> targetQValues(const std::vector<float>& observations, int batch) const;
 
     void remember(Transition transition);
-    // One Double-DQN gradient step on a batch sampled from the replay memory; returns the Huber
-    // loss. Throws std::logic_error when the memory is empty.
-    double trainStep();
+    // An expert transition (graph network only; std::invalid_argument otherwise or when it does
+    // not fit). Kept apart from the replay memory, never overwritten by the agent's own steps.
+    void rememberDemonstration(Transition transition);
+    std::size_t demonstrationCount() const { return demonstrations_.size(); }
+    const ReplayMemory& demonstrations() const { return demonstrations_; }
+    // The margin loss of the last step's expert rows (before its weight); 0 when none.
+    double lastMarginLoss() const { return lastMarginLoss_; }
+    // One Double-DQN gradient step on a batch sampled from the replay memory (and the
+    // demonstrations, with their margin loss); returns the loss. demonstrationsOnly: the whole
+    // batch from the demonstrations (pre-training). Throws std::logic_error when what it
+    // samples from is empty.
+    double trainStep(bool demonstrationsOnly = false);
     // Copies the online network's parameters and buffers into the target network.
     void syncTarget();
 
@@ -122,6 +140,7 @@ public:
 
 private:
     struct Impl;
+    bool fits(const Transition& transition) const;
     std::vector<float> evaluate(bool target, const std::vector<float>& observations,
                                 int batch) const;
     std::unique_ptr<Impl> impl_;
@@ -129,9 +148,11 @@ private:
     int actionCount_ = 0;
     DqnHyperParameters params_;
     ReplayMemory memory_;
+    ReplayMemory demonstrations_;
     std::mt19937_64 rng_; // replay sampling
     long steps_ = 0;
     long trainSteps_ = 0;
+    double lastMarginLoss_ = 0.0;
 };
 
 } // namespace fc
