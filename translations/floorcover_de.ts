@@ -2767,8 +2767,8 @@ Abdeckungspfadplanung für Reinigungs- und Desinfektionsroboter.</translation>
         <translation>Die Richtung der Bahnen in Grad (90 = senkrecht), für „Ein Winkel für die ganze Etage“.</translation>
     </message>
     <message>
-        <source>How the order of the cells is chosen: heuristic is fast and close to the best; exact proves the best order on small floors; greedy is the quickest sketch; dqn uses the model trained in the Training panel, or the built-in generalist model when none is.</source>
-        <translation>Wie die Reihenfolge der Zellen gewählt wird: heuristic ist schnell und nahe am Besten; exact beweist die beste Reihenfolge auf kleinen Flächen; greedy ist die schnellste Skizze; dqn nutzt das im Bereich Training trainierte Modell oder, wenn keines trainiert ist, das eingebaute allgemeine Modell.</translation>
+        <source>How the order of the cells is chosen: heuristic is fast and close to the best; exact proves the best order on small floors; greedy is the quickest sketch; dqn uses the model trained in the Training panel, or the built-in generalist model when none is; dqn-search lets that model guide a search for 2 seconds per part of the floor (better than heuristic on large floors).</source>
+        <translation>Wie die Reihenfolge der Zellen gewählt wird: heuristic ist schnell und nahe am Besten; exact beweist die beste Reihenfolge auf kleinen Flächen; greedy ist die schnellste Skizze; dqn nutzt das im Bereich Training trainierte Modell oder, wenn keines trainiert ist, das eingebaute allgemeine Modell; dqn-search lässt dieses Modell 2 Sekunden je Teil der Fläche eine Suche leiten (auf großen Flächen besser als heuristic).</translation>
     </message>
 </context>
 <context>

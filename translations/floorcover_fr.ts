@@ -2767,8 +2767,8 @@ Planification de trajets de couverture pour robots de nettoyage et de désinfect
         <translation>La direction des bandes en degrés (90 = verticale), pour « Un angle pour tout l’étage ».</translation>
     </message>
     <message>
-        <source>How the order of the cells is chosen: heuristic is fast and close to the best; exact proves the best order on small floors; greedy is the quickest sketch; dqn uses the model trained in the Training panel, or the built-in generalist model when none is.</source>
-        <translation>Comment l’ordre des cellules est choisi : heuristic est rapide et proche du meilleur ; exact prouve le meilleur ordre sur les petits plans ; greedy est l’esquisse la plus rapide ; dqn utilise le modèle entraîné dans le panneau Entraînement, ou le modèle généraliste intégré s’il n’y en a pas.</translation>
+        <source>How the order of the cells is chosen: heuristic is fast and close to the best; exact proves the best order on small floors; greedy is the quickest sketch; dqn uses the model trained in the Training panel, or the built-in generalist model when none is; dqn-search lets that model guide a search for 2 seconds per part of the floor (better than heuristic on large floors).</source>
+        <translation>Comment l’ordre des cellules est choisi : heuristic est rapide et proche du meilleur ; exact prouve le meilleur ordre sur les petits plans ; greedy est l’esquisse la plus rapide ; dqn utilise le modèle entraîné dans le panneau Entraînement, ou le modèle généraliste intégré s’il n’y en a pas ; dqn-search laisse ce modèle guider une recherche pendant 2 secondes par partie du plan (meilleur que heuristic sur les grands plans).</translation>
     </message>
 </context>
 <context>

@@ -22,7 +22,7 @@ commands:
   plan PLAN     plan a coverage path; prints one JSON line of metrics
                 [--width W] [--robot-diameter L] [--cleaning-diameter D] [--speed V]
                 [--turn-time S] [--angle per-room|auto|DEG] [--rooms A,B] [--start X,Y] [--end X,Y]
-                [--solver exact|heuristic|greedy|dqn|reeb-cpp|adjacency-ga|
+                [--solver exact|heuristic|greedy|dqn|dqn-search|reeb-cpp|adjacency-ga|
                 adjacency-ga-centres] [--model FILE]
                 [--seed N] [--out FILE] [--strict]
                 (--robot-diameter L, default 0.6: the robot is a disc; its centre keeps L/2
@@ -33,7 +33,8 @@ commands:
                 and with --strict the exit code is 3)
                 (dqn without --model uses the built-in generalist model, trained on
                 generated floors; with --model FILE, a file written by train, it plans
-                at that model's sweep angle)
+                at that model's sweep angle; dqn-search: the same model guides a
+                search for 2 s per query, better than heuristic on large floors)
                 (--out format by extension: .geojson .csv .json .yaml)
   graph PLAN    write the corner graph: [--width W] [--angle DEG] --out FILE.json
   compare PLAN  run several solvers on the same query: [--solvers a,b,..] [--json]
