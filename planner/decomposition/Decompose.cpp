@@ -14,6 +14,9 @@
 namespace fc {
 namespace {
 
+// Floors of at most this many raw cells may hand slivers across (see layOutStripes' use).
+constexpr std::size_t kHandOffMaxCells = 60;
+
 using detail::SlabSweep;
 using detail::Trapezoid;
 
@@ -307,12 +310,17 @@ Decomposition decompose(const Plan& plan, const DecompositionOptions& options) {
         if (a.kind == Adjacency::Kind::AcrossSweep && raw[a.first].x1 == a.x0 &&
             raw[a.second].x0 == a.x0)
             latticeLinks.push_back({a.first, a.second, a.x0, a.y1 - a.y0});
-    // Slivers are handed off in both layouts: that only drops stripes (and planning both
-    // layouts only where the lattice moves some would double the time on most floors).
-    const double handOff = detail::maxHandOff(w, options.robot.robotDiameter);
+    // Slivers are handed off only in the alternative layout (with the lattice), which the
+    // planner plans beside the plain one and keeps when it is faster: on traced maps a
+    // hand-off saves a stripe (noisy simple: 270 -> 230 s), yet on generated offices, whose
+    // cells are a hair over n W, its jogs cost more turns than the stripes saved (20 rooms:
+    // 4,806 s against 4,748 s). Only on floors of few cells, so that big floors (ward,
+    // real maps) are not planned twice.
+    const double handOff =
+        raw.size() <= kHandOffMaxCells ? detail::maxHandOff(w, options.robot.robotDiameter) : 0.0;
     detail::StripeLayout layout =
         detail::layOutStripes(latticeCells, latticeLinks, w, true, handOff);
-    detail::StripeLayout own = detail::layOutStripes(latticeCells, latticeLinks, w, false, handOff);
+    detail::StripeLayout own = detail::layOutStripes(latticeCells, latticeLinks, w, false);
     out.stripeLatticeAvailable = layout.stripes != own.stripes;
     if (options.stripeLattice)
         out.stripeLattice = out.stripeLatticeAvailable;
