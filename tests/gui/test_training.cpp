@@ -8,6 +8,7 @@
 #include "formats/PlanIO.h"
 #include "learning/dqn/DqnModelFile.h"
 #include "learning/dqn/DqnSolver.h"
+#include "tasks/DqnTraining.h"
 #include "tasks/PlanningController.h"
 #include "tasks/Task.h"
 #include "tasks/TaskListWidget.h"
@@ -51,6 +52,7 @@ private slots:
     void evaluatesTheModelAndStopCancels();
     void taskListCancelsTrainingAndEvaluationPromptly();
     void progressSaysDoneWhenTheBudgetIsSpent();
+    void pausedRunKeepsTheBestEvaluatedWeights();
 };
 
 void TrainingDockTest::trainsPausesResumesAndSaves() {
@@ -347,6 +349,27 @@ void TrainingDockTest::progressSaysDoneWhenTheBudgetIsSpent() {
     QVERIFY2(bar->text().startsWith(QStringLiteral("Done")), qPrintable(bar->text()));
     // The policy gap where training started and where the budget left it, on its own axis.
     QTRY_VERIFY_WITH_TIMEOUT(dock.plottedEvaluations() >= 2, 10000);
+}
+
+// However a run ends, Pause included, the session keeps the best evaluated weights: weights
+// trained further without an evaluation give way to them when the next run is paused.
+void TrainingDockTest::pausedRunKeepsTheBestEvaluatedWeights() {
+    const std::shared_ptr<const PreparedPlan> plan = preparedSample("simple");
+    DqnSession session;
+    TaskFeedback first;
+    startDqn(session, *plan, smallOptions(), 1.0, first); // evaluated at its start and end
+    QVERIFY(session.trainer->bestEvaluation().has_value());
+    CoverageEnvironment env(plan->graph, session.trainer->options().environment);
+    std::mt19937_64 rng(3);
+    const std::vector<float> observation = env.reset(rng);
+    const std::vector<float> best = session.trainer->agent().qValues(observation, 1);
+    session.trainer->train(40, 0.0); // on, without any evaluation
+    QVERIFY(session.trainer->agent().qValues(observation, 1) != best);
+    TaskFeedback paused;
+    paused.cancel(); // Pause before its first episode
+    const TrainingRun run = trainDqn(session, 60.0, paused);
+    QCOMPARE(run.end, TrainingEnd::Interrupted);
+    QVERIFY(session.trainer->agent().qValues(observation, 1) == best);
 }
 
 QTEST_MAIN(TrainingDockTest)

@@ -59,12 +59,12 @@ TrainingRun trainLocked(DqnSession& session, double seconds, TaskFeedback& feedb
                 }
             },
             feedback.cancelledFunction());
-        if (stop == TrainingStop::TimeLimit) { // where the budget left the policy
+        if (stop == TrainingStop::TimeLimit) // where the budget left the policy
             postGap(session.trainer->episodes());
-            // The run is over: solver dqn and Save get the best evaluated weights (the
-            // policy swings between evaluations; DqnTrainer::restoreBestEvaluated).
-            session.trainer->restoreBestEvaluated();
-        }
+        // However the run ended (budget, Pause or Stop), solver dqn and Save get the best
+        // evaluated weights, and a resumed run continues from them: the policy swings between
+        // evaluations (DqnTrainer::restoreBestEvaluated).
+        session.trainer->restoreBestEvaluated();
     } catch (const std::exception& e) {
         throw std::runtime_error(
             QCoreApplication::translate("fc::ui::TrainingDock", "Training failed: %1")
