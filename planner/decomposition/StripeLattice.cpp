@@ -45,8 +45,6 @@ int evenCount(double width, double w) {
     return std::max(1, static_cast<int>(std::ceil(width / w - 1e-9)));
 }
 
-} // namespace
-
 // Noisy outlines make cells a few centimetres wider than n W (an obstacle traced 2.05 m
 // tall beside 2 m of stripes), and spacing such a cell evenly costs a whole stripe more.
 // Where the cell shares one side whole with the cells across it (no wall on it), their
@@ -108,13 +106,15 @@ void handOffExcess(const std::vector<LatticeCell>& cells, const std::vector<Latt
     }
 }
 
+} // namespace
+
 double maxHandOff(double w, double robotDiameter) {
     return std::max(0.0, std::min(kHandOffShare * w, 0.5 * (w - robotDiameter) - 0.01 * w));
 }
 
 std::vector<double> evenStripePositions(double x0, double x1, double w) {
     const double width = x1 - x0;
-    const int n = std::max(1, static_cast<int>(std::ceil(width / w - 1e-9)));
+    const int n = evenCount(width, w);
     if (n == 1)
         return {0.5 * (x0 + x1)};
     std::vector<double> xs(n);

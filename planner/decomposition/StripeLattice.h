@@ -32,12 +32,6 @@ struct StripeLayout {
     std::vector<char> sweepsSliver;           // receives a neighbour's sliver (hand-off)
 };
 
-// Where a cell is barely wider than (n - 1) W and shares a side whole with cells that have
-// room to spare, they sweep its sliver and it drops a stripe (see the .cpp).
-void handOffExcess(const std::vector<LatticeCell>& cells, const std::vector<LatticeLink>& links,
-                   double w, double maxHandOff, const std::vector<double>& leftShared,
-                   const std::vector<double>& rightShared, StripeLayout& out);
-
 // The largest sliver handed off: 0.15 W, and no more than keeps the receiving stripe L/2
 // clear of a wall on the shared slice (W/2 - sliver >= L/2).
 double maxHandOff(double w, double robotDiameter);

@@ -162,27 +162,12 @@ Solution searchFromWalk(const CornerGraph& graph, const Query& query, const Solu
     const bool small = tasks <= kSmallInstance;
     ProxyDistances distances(transit, search, small ? tasks - 1 : kNeighbourCount);
     throwIfCancelled(control, kName);
-    TourSearch tour(problem, distances, problem.seed);
-    tour.startFrom(order);
-    tour.optimise();
-    tour.iterate(proxyKicks(tasks), control);
-    // As in solveHeuristic: the proxy misses the covered state, so the given order and the
-    // proxy's are both priced exactly and the cheaper is polished.
-    double cost = evaluator.setBase(order);
-    std::vector<int> proxyOrder = tour.order();
-    const double proxyCost = evaluator.setBase(proxyOrder);
-    if (proxyCost < cost) {
-        order = std::move(proxyOrder);
-        cost = proxyCost;
-    }
-    if (cost < kInfinity) {
-        OrderPolish polish(evaluator, distances, tasks, problem.seed + 7919);
-        cost = polish.improve(order, polishWork(tasks, problem.reachableNodeCount, small), control);
-    }
+    const double cost = searchFromOrder(
+        problem, evaluator, distances, order, evaluator.setBase(order), proxyKicks(tasks),
+        polishWork(tasks, problem.reachableNodeCount, small), problem.seed + 7919, control);
     if (!(cost < given.graphCost - 1e-9))
         return given;
-    Solution solution = finishSolution(graph, query, given.solver.c_str(), evaluator.walk(order));
-    return solution;
+    return finishSolution(graph, query, given.solver.c_str(), evaluator.walk(order));
 }
 
 } // namespace fc

@@ -64,4 +64,13 @@ private:
     std::vector<LocalOptimum> optima_;
 };
 
+// A given order improved as the solvers do: its proxy local optimum (TourSearch from it,
+// then `kicks` perturbations), priced exactly against the order itself (`cost`, its exact
+// cost; the proxy misses the covered state), and the cheaper polished under the true cost
+// within `workBudget`. `order` becomes the result; returns its cost. Shared by
+// refineCellOrder (no kicks, a small budget) and searchFromWalk (the heuristic's effort).
+double searchFromOrder(const Problem& problem, OrderEvaluator& evaluator, ProxyDistances& distances,
+                       std::vector<int>& order, double cost, int kicks, std::uint64_t workBudget,
+                       std::uint64_t polishSeed, const SolveControl& control);
+
 } // namespace fc::solver_detail

@@ -19,6 +19,30 @@ constexpr int kNeighbourCount = 10;
 
 } // namespace
 
+namespace solver_detail {
+
+double searchFromOrder(const Problem& problem, OrderEvaluator& evaluator, ProxyDistances& distances,
+                       std::vector<int>& order, double cost, int kicks, std::uint64_t workBudget,
+                       std::uint64_t polishSeed, const SolveControl& control) {
+    TourSearch tour(problem, distances, problem.seed);
+    tour.startFrom(order);
+    tour.optimise();
+    if (kicks > 0)
+        tour.iterate(kicks, control);
+    std::vector<int> proxyOrder = tour.order();
+    const double proxyCost = evaluator.setBase(proxyOrder);
+    if (proxyCost < cost) {
+        order = std::move(proxyOrder);
+        cost = proxyCost;
+    }
+    if (!(cost < kInfinity))
+        return cost;
+    OrderPolish polish(evaluator, distances, problem.taskCount(), polishSeed);
+    return polish.improve(order, workBudget, control);
+}
+
+} // namespace solver_detail
+
 Solution refineCellOrder(const CornerGraph& graph, const Query& query, const Solution& given,
                          OrderRefinement refinement, std::uint64_t workBudget,
                          const SolveControl& control) {
@@ -37,20 +61,8 @@ Solution refineCellOrder(const CornerGraph& graph, const Query& query, const Sol
     double cost = evaluator.setBase(order);
     if (refinement == OrderRefinement::LocalSearch && cost < kInfinity) {
         ProxyDistances distances(transit, search, std::min(tasks - 1, kNeighbourCount));
-        // The given order's proxy local optimum (Or-opt, 2-opt, option changes; no kicks)
-        // may start the true-cost polish cheaper; the proxy misses the covered state, so
-        // both starts are priced exactly and the cheaper is polished.
-        TourSearch tour(problem, distances, problem.seed);
-        tour.startFrom(order);
-        tour.optimise();
-        std::vector<int> proxyOrder = tour.order();
-        const double proxyCost = evaluator.setBase(proxyOrder);
-        if (proxyCost < cost) {
-            order = std::move(proxyOrder);
-            cost = proxyCost;
-        }
-        OrderPolish polish(evaluator, distances, tasks, problem.seed);
-        cost = polish.improve(order, workBudget, control);
+        cost = searchFromOrder(problem, evaluator, distances, order, cost, 0, workBudget,
+                               problem.seed, control);
     }
     if (!(cost < given.graphCost - 1e-9))
         return given; // e.g. infeasible under the covered state, or no better
