@@ -8,7 +8,7 @@ packages=(
   qt6-base-dev qt6-tools-dev qt6-tools-dev-tools qt6-l10n-tools libqt6svg6-dev libgl-dev
   libcgal-dev libgmp-dev libmpfr-dev libeigen3-dev libboost-dev libboost-graph-dev liblemon-dev
   libtorch-dev libopenblas0-pthread
-  libassimp-dev libgdal-dev libopencv-dev libqcustomplot-dev nlohmann-json3-dev
+  libassimp-dev libgdal-dev libgeos-dev libopencv-dev libqcustomplot-dev nlohmann-json3-dev
   libgtest-dev libbenchmark-dev
   libproj-dev proj-bin
   gdal-bin python3 python3-yaml libxml2-utils qpdf

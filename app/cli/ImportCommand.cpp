@@ -42,13 +42,13 @@ std::string summaryLine(const std::string& format, const ImportResult& r) {
                       "\"gaps_filled\":%d,\"gap_area\":%.3f,\"specks_removed\":%d,\"speck_area\":%."
                       "3f,\"fragments_dropped\":%d,"
                       "\"fragment_area\":%.3f,\"smoothed_area\":%.3f,\"opened_area\":%.3f,\"closed_"
-                      "area\":%.3f,"
+                      "area\":%.3f,\"obstacles_joined\":%d,\"passage_area\":%.3f,"
                       "\"free_area_before\":%.3f,\"free_area_after\":%.3f,"
                       "\"vertices_traced\":%d,\"vertices_kept\":%d%s}",
                       c.width, c.height, c.resolution, c.unknownCells, c.gapsFilled, c.gapArea,
                       c.specksRemoved, c.speckArea, c.fragmentsDropped, c.fragmentArea,
-                      c.smoothedArea, c.openedArea, c.closedArea, c.freeAreaBefore, c.freeAreaAfter,
-                      c.verticesTraced, c.verticesKept, walls);
+                      c.smoothedArea, c.openedArea, c.closedArea, c.obstaclesJoined, c.passageArea,
+                      c.freeAreaBefore, c.freeAreaAfter, c.verticesTraced, c.verticesKept, walls);
         line << cleaning;
     }
     line << "}";

@@ -71,6 +71,10 @@ struct MapCleaningReport {
     double fragmentArea = 0; // m^2
     double openedArea = 0;   // m^2 of free space filled by the opening
     double closedArea = 0;   // m^2 of obstacle turned into floor by the closing
+    // Obstacles joined to another or to a wall across a traced passage narrower than the
+    // robot, and the floor those passages took (m^2).
+    int obstaclesJoined = 0;
+    double passageArea = 0;
     double smoothedArea = 0; // m^2 of floor gained (negative: lost) by smoothing the edges
     double freeAreaBefore = 0, freeAreaAfter = 0;
     int verticesTraced = 0, verticesKept = 0;

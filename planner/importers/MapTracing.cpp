@@ -6,6 +6,7 @@
 #include <cmath>
 #include <gdal_alg.h>
 #include <gdal_priv.h>
+#include <geos_c.h>
 #include <memory>
 #include <ogrsf_frmts.h>
 
@@ -15,9 +16,54 @@ namespace {
 
 constexpr long long kMaxTracedPolygons = 200000;
 constexpr double kOpening = 0.05; // pixels
+// Smaller differences between the floor and its opening are rounding (square pixels).
+constexpr double kMinPassageArea = 0.01;
+// A closed passage's outline is simplified within this (pixels): the opening's arcs would
+// otherwise add dozens of vertices, and as many slice events, per passage.
+constexpr double kPassageTolerance = 0.25;
+// And the outline with the passages closed (below the tracing's own tolerance, 0.45 cells).
+constexpr double kSimplifyTolerance = 0.4;
 
 int cancelWhenHuge(double, const char*, void* layer) {
     return static_cast<OGRLayer*>(layer)->GetFeatureCount(FALSE) < kMaxTracedPolygons;
+}
+
+// Rings and parts of a free space: what a passage's closing changes.
+std::pair<int, int> topologyOf(const OGRGeometry& g) {
+    std::vector<Polygon2> polygons;
+    collectPolygons(&g, polygons);
+    int holes = 0;
+    for (const Polygon2& p : polygons)
+        holes += static_cast<int>(p.holes.size());
+    return {static_cast<int>(polygons.size()), holes};
+}
+
+// The rings that a closed passage changed (a joined obstacle's outline zigzags along its
+// former gaps) simplified as the tracing was; the others are simplified already and stay.
+// Passages left are at least the robot wide, so a ring cannot cross another.
+GeometryPtr simplifiedWhereClosed(const OGRGeometry& free, const OGRGeometry& closed) {
+    std::vector<Polygon2> polygons;
+    collectPolygons(&free, polygons);
+    auto simplified = [&](const Ring& ring) {
+        OGRPolygon single;
+        single.addRingDirectly(ogrRing(ring));
+        if (!single.Intersects(&closed))
+            return ring;
+        const GeometryPtr simple(single.SimplifyPreserveTopology(kSimplifyTolerance));
+        std::vector<Polygon2> pieces;
+        if (simple)
+            collectPolygons(simple.get(), pieces);
+        return pieces.size() == 1 ? pieces[0].shell : ring;
+    };
+    auto out = std::make_unique<OGRMultiPolygon>();
+    for (const Polygon2& polygon : polygons) {
+        auto* p = new OGRPolygon;
+        p->addRingDirectly(ogrRing(simplified(polygon.shell)));
+        for (const Ring& hole : polygon.holes)
+            p->addRingDirectly(ogrRing(simplified(hole)));
+        out->addGeometryDirectly(p);
+    }
+    return out;
 }
 
 } // namespace
@@ -152,6 +198,79 @@ GeometryPtr simplifiedCells(const OGRGeometry& staircase, double tolerance) {
     if (!opened)
         throw InputError("smoothing the free space failed");
     return opened;
+}
+
+PassageClosing withoutNarrowPassages(const OGRGeometry& free, double radius) {
+    PassageClosing out;
+    if (!(radius > kOpening)) {
+        out.free.reset(free.clone());
+        return out;
+    }
+    GEOSContextHandle_t context = OGRGeometry::createGEOSContext();
+    GEOSGeom geometry = free.exportToGEOS(context);
+    GEOSGeom eroded = nullptr, opened = nullptr;
+    if (geometry)
+        // Round joins around the obstacles' corners: the body's footprint, so that two
+        // pillars diagonally apart keep the passage between them when the robot fits.
+        eroded = GEOSBufferWithStyle_r(context, geometry, -radius, 8, GEOSBUF_CAP_ROUND,
+                                       GEOSBUF_JOIN_ROUND, 5.0);
+    if (eroded)
+        // Mitred back, so that right-angled corners come back sharp.
+        opened = GEOSBufferWithStyle_r(context, eroded, radius, 8, GEOSBUF_CAP_FLAT,
+                                       GEOSBUF_JOIN_MITRE, 1.5);
+    GeometryPtr kept(opened ? OGRGeometryFactory::createFromGEOS(context, opened) : nullptr);
+    for (GEOSGeom g : {geometry, eroded, opened})
+        if (g)
+            GEOSGeom_destroy_r(context, g);
+    OGRGeometry::freeGEOSContext(context);
+    const GeometryPtr lost(kept ? free.Difference(kept.get()) : nullptr);
+    if (!lost)
+        throw InputError("closing the passages narrower than the robot failed");
+    // Only the passages are taken from the floor, each simplified and grown by a hair so
+    // that it overlaps the obstacles it joins instead of touching them at a point; elsewhere
+    // the outline stays as traced (the buffers' round trip moves every corner a little, and
+    // a sweep direction a hundredth of a degree off cuts cells at every wall's end).
+    std::vector<Polygon2> parts;
+    collectPolygons(lost.get(), parts);
+    const std::pair<int, int> topology = topologyOf(free);
+    GeometryPtr closed = std::make_unique<OGRMultiPolygon>();
+    for (const Polygon2& part : parts) {
+        OGRPolygon polygon;
+        auto* shell = new OGRLinearRing;
+        for (const Vec2& p : part.shell)
+            shell->addPoint(p.x, p.y);
+        shell->closeRings();
+        polygon.addRingDirectly(shell);
+        if (polygon.get_Area() < kMinPassageArea)
+            continue;
+        const GeometryPtr simple(polygon.SimplifyPreserveTopology(kPassageTolerance));
+        const GeometryPtr grown(simple ? simple->Buffer(kOpening, 1) : nullptr);
+        // A passage joins two walls (or parts the floor); a wedge or a notch of one wall,
+        // which the opening cuts off as well, changes neither and stays.
+        const GeometryPtr without(grown ? free.Difference(grown.get()) : nullptr);
+        if (!without || topologyOf(*without) == topology)
+            continue;
+        GeometryPtr joined(closed->Union(grown.get()));
+        if (!joined)
+            throw InputError("closing the passages narrower than the robot failed");
+        closed = std::move(joined);
+    }
+    if (closed->IsEmpty()) {
+        out.free.reset(free.clone());
+        return out;
+    }
+    const GeometryPtr joined(free.Difference(closed.get()));
+    if (joined)
+        out.free = simplifiedWhereClosed(*joined, *closed);
+    const GeometryPtr taken(out.free ? free.Difference(out.free.get()) : nullptr);
+    if (!out.free || !taken)
+        throw InputError("closing the passages narrower than the robot failed");
+    out.obstaclesJoined = std::max(0, topology.second - topologyOf(*out.free).second);
+    if (auto* surfaces = dynamic_cast<const OGRGeometryCollection*>(taken.get()))
+        out.area = surfaces->get_Area();
+    else if (auto* surface = dynamic_cast<const OGRSurface*>(taken.get()))
+        out.area = surface->get_Area();
+    return out;
 }
 
 } // namespace fc::importing

@@ -21,6 +21,19 @@ std::map<std::int32_t, GeometryPtr> traceCells(const std::vector<std::int32_t>& 
 // pixel so that a hole touching the outline at a pixel corner joins it.
 GeometryPtr simplifiedCells(const OGRGeometry& traced, double tolerance);
 
+// The free space without its passages narrower than 2 `radius` (pixels) between two walls:
+// obstacles the robot cannot pass between become one, or part of the wall (a diagonal line of
+// one-cell specks, traced through the cells' edge midpoints as a dotted line of diamonds,
+// split a lab's floor into hundreds of sliver cells, each with its own stripe). A passage is
+// what an opening by the robot's round body takes away and touches two separate walls; the
+// rest of the outline is returned as it was (wedges and notches of one wall included).
+struct PassageClosing {
+    GeometryPtr free;
+    int obstaclesJoined = 0; // to another or to the outline
+    double area = 0;         // pixels taken from the floor
+};
+PassageClosing withoutNarrowPassages(const OGRGeometry& free, double radius);
+
 int vertexCount(const OGRGeometry* g);
 
 // Pixel units to the map frame: origin + resolution, y up, rotated by the origin's yaw.

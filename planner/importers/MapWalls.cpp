@@ -298,22 +298,6 @@ private:
     bool interiorLeft_ = true, freeInside_ = true;
 };
 
-OGRLinearRing* ogrRing(const Ring& ring) {
-    auto* out = new OGRLinearRing;
-    for (const Vec2& p : ring)
-        out->addPoint(p.x, p.y);
-    out->closeRings();
-    return out;
-}
-
-OGRPolygon* ogrPolygon(const Ring& shell, const std::vector<Ring>& holes) {
-    auto* p = new OGRPolygon;
-    p->addRingDirectly(ogrRing(shell));
-    for (const Ring& h : holes)
-        p->addRingDirectly(ogrRing(h));
-    return p;
-}
-
 double areaOf(const OGRGeometry* g) {
     if (!g)
         return 0.0;

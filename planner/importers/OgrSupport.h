@@ -20,4 +20,9 @@ using GeometryPtr = std::unique_ptr<OGRGeometry>;
 // without the rings' repeated closing points.
 void collectPolygons(const OGRGeometry* g, std::vector<Polygon2>& out);
 
+// A ring as a closed OGR ring, and shell and holes as an OGR polygon (owned by the caller, or
+// by the geometry they are added to).
+OGRLinearRing* ogrRing(const Ring& ring);
+OGRPolygon* ogrPolygon(const Ring& shell, const std::vector<Ring>& holes = {});
+
 } // namespace fc::importing

@@ -12,14 +12,6 @@ namespace fc::importing {
 
 namespace {
 
-OGRLinearRing* toOgrRing(const Ring& ring) {
-    auto* out = new OGRLinearRing;
-    for (const Vec2& p : ring)
-        out->addPoint(p.x, p.y);
-    out->closeRings();
-    return out;
-}
-
 Ring fromOgrRing(const OGRLinearRing& ring) {
     Ring out;
     for (int i = 0; i + 1 < ring.getNumPoints(); ++i) // the closing point repeats the first
@@ -29,14 +21,14 @@ Ring fromOgrRing(const OGRLinearRing& ring) {
 
 GeometryPtr shellPolygon(const Ring& shell) {
     auto polygon = std::make_unique<OGRPolygon>();
-    polygon->addRingDirectly(toOgrRing(shell));
+    polygon->addRingDirectly(ogrRing(shell));
     return polygon;
 }
 
 // A valid polygonal geometry for a ring (self-intersecting rings repaired by MakeValid).
 GeometryPtr polygonOf(const Ring& ring) {
     auto polygon = std::make_unique<OGRPolygon>();
-    polygon->addRingDirectly(toOgrRing(ring));
+    polygon->addRingDirectly(ogrRing(ring));
     if (polygon->IsValid())
         return polygon;
     GeometryPtr valid(polygon->MakeValid());
@@ -68,6 +60,22 @@ std::string roomName(const Ring& outline, const std::vector<Label>& labels,
 }
 
 } // namespace
+
+OGRLinearRing* ogrRing(const Ring& ring) {
+    auto* out = new OGRLinearRing;
+    for (const Vec2& p : ring)
+        out->addPoint(p.x, p.y);
+    out->closeRings();
+    return out;
+}
+
+OGRPolygon* ogrPolygon(const Ring& shell, const std::vector<Ring>& holes) {
+    auto* p = new OGRPolygon;
+    p->addRingDirectly(ogrRing(shell));
+    for (const Ring& h : holes)
+        p->addRingDirectly(ogrRing(h));
+    return p;
+}
 
 void collectPolygons(const OGRGeometry* g, std::vector<Polygon2>& out) {
     if (!g || g->IsEmpty())

@@ -117,6 +117,17 @@ ImportResult importRosMap(const std::string& yamlPath, const ImportOptions& opti
         report.straightenedAdded = straight.floorAdded * cellArea;
         report.straightenedRemoved = straight.floorRemoved * cellArea;
     }
+    if (options.cleaning.enabled) {
+        const double opening = options.cleaning.openingRadius >= 0 ? options.cleaning.openingRadius
+                                                                   : options.robotDiameter / 2.0;
+        // Half a cell less, so that a passage the raster opening kept (at least 2 radii wide,
+        // to the cell) stays open.
+        const double radius = opening / info.resolution - 0.5;
+        PassageClosing closing = withoutNarrowPassages(*simple, radius);
+        simple = std::move(closing.free);
+        report.obstaclesJoined = closing.obstaclesJoined;
+        report.passageArea = closing.area * info.resolution * info.resolution;
+    }
     report.verticesKept = vertexCount(simple.get());
     std::vector<Polygon2> polygons;
     collectPolygons(simple.get(), polygons);
@@ -126,16 +137,9 @@ ImportResult importRosMap(const std::string& yamlPath, const ImportOptions& opti
     });
     // With its holes: a free island inside an obstacle is not part of the kept floor.
     OGRPolygon kept;
-    auto ringOf = [](const Ring& ring) {
-        auto* out = new OGRLinearRing;
-        for (const Vec2& p : ring)
-            out->addPoint(p.x, p.y);
-        out->closeRings();
-        return out;
-    };
-    kept.addRingDirectly(ringOf(largest->shell));
+    kept.addRingDirectly(ogrRing(largest->shell));
     for (const Ring& hole : largest->holes)
-        kept.addRingDirectly(ringOf(hole));
+        kept.addRingDirectly(ogrRing(hole));
     toMapFrame(polygons, image.height, info);
     ImportResult result;
     result.project.plan = planFromPolygons(std::move(polygons), "free space", result.warnings);

@@ -145,6 +145,44 @@ TEST(RosMap, RotatedOriginTurnsTheMap) {
     EXPECT_NEAR(test::freeArea(r.project.plan), map.freeArea, 0.01 * map.freeArea);
 }
 
+// A desk edge or a glass wall the laser saw as a diagonal line of single cells: one obstacle,
+// not a dotted line of diamonds (the cells' outlines through their edge midpoints) with
+// passages the robot cannot pass, each cutting the floor into sliver cells; a line that ends
+// closer to a wall than the robot's width joins the wall. Blocks further apart stay apart.
+TEST(RosMap, ObstaclesTheRobotCannotPassBetweenAreJoined) {
+    const auto dir = test::scratchDir("ros-passages");
+    Map map;
+    auto set = [&](int x, int y) {
+        map.pixels[static_cast<size_t>(y * map.width + x)] = kOccupied;
+    };
+    map.pixels.assign(map.pixels.size(), kOccupied);
+    for (int y = 3; y < 123; ++y)
+        for (int x = 3; x < 203; ++x)
+            map.pixels[static_cast<size_t>(y * map.width + x)] = kFree;
+    // Lines of 2 x 2 cell blocks touching at their corners (a one-cell line is smoothed away).
+    auto block = [&](int x, int y) { set(x, y), set(x + 1, y), set(x, y + 1), set(x + 1, y + 1); };
+    for (int k = 0; k < 40; ++k) {
+        block(30 + 2 * k, 20 + 2 * k);  // free-standing, 5.6 m long
+        block(120 + 2 * k, 40 + 2 * k); // ends three cells (0.15 m) from two walls
+    }
+    for (int y = 20; y < 30; ++y)
+        for (int x = 0; x < 10; ++x)
+            set(130 + x, y), set(164 + x, y); // 0.5 m blocks 1.2 m apart
+    test::writeText(dir / "lines.pgm", map.pgm(true));
+    const std::string path = test::writeText(dir / "lines.yaml", yaml("lines.pgm"));
+    const ImportResult r = importPlanFile(path);
+    ASSERT_TRUE(r.cleaning);
+    EXPECT_EQ(r.project.plan.obstacles.size(), 3u); // the free-standing line, two blocks
+    EXPECT_GE(r.cleaning->obstaclesJoined, 50);
+    EXPECT_GT(r.cleaning->passageArea, 0.0);
+    EXPECT_LT(r.cleaning->passageArea, 0.5); // the gaps between the cells, not the floor
+    const double lines = 2 * 160 * 0.05 * 0.05, blocks = 2 * 0.25;
+    EXPECT_NEAR(test::freeArea(r.project.plan), 60.0 - lines - blocks, 1.0);
+    // The joined line's outline is simplified like the rest, not left a staircase of blocks.
+    for (const Ring& obstacle : r.project.plan.obstacles)
+        EXPECT_LT(obstacle.size(), 20u);
+}
+
 TEST(RosMap, BadMapsGiveOneLineErrors) {
     const auto dir = test::scratchDir("ros-bad");
     const Map map;

@@ -336,6 +336,12 @@ void ImportDialog::refresh() {
                     .arg(c->fragmentArea, 0, 'f', 2)
                     .arg(c->openedArea, 0, 'f', 2)
                     .arg(c->closedArea, 0, 'f', 2));
+        if (const auto& c = result_->cleaning; c && c->obstaclesJoined > 0)
+            summary_->setText(summary_->text() + QLatin1Char(' ') +
+                              tr("%n obstacle(s) joined to their neighbours across gaps "
+                                 "narrower than the robot (%1 m²).",
+                                 nullptr, c->obstaclesJoined)
+                                  .arg(c->passageArea, 0, 'f', 2));
         if (const auto& c = result_->cleaning; c && c->wallAngle)
             summary_->setText(summary_->text() + QLatin1Char('\n') +
                               tr("%1 walls straightened at %2°: %3 m² of floor gained, %4 m² "
