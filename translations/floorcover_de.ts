@@ -1666,10 +1666,10 @@
         <translation>Was Layer %1 enthält</translation>
     </message>
     <message numerus="yes">
-        <source>%n obstacle(s) joined to their neighbours across gaps narrower than the robot (%1 m²).</source>
+        <source>Obstacles joined to their neighbours across gaps narrower than the robot: %n (%1 m²).</source>
         <translation>
-            <numerusform>%n Hindernis über Lücken, schmaler als der Roboter, mit seinen Nachbarn verbunden (%1 m²).</numerusform>
-            <numerusform>%n Hindernisse über Lücken, schmaler als der Roboter, mit ihren Nachbarn verbunden (%1 m²).</numerusform>
+            <numerusform>Über Lücken, schmaler als der Roboter, mit Nachbarn verbundene Hindernisse: %n (%1 m²).</numerusform>
+            <numerusform>Über Lücken, schmaler als der Roboter, mit Nachbarn verbundene Hindernisse: %n (%1 m²).</numerusform>
         </translation>
     </message>
 </context>

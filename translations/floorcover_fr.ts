@@ -1666,10 +1666,10 @@
         <translation>Ce que contient le calque %1</translation>
     </message>
     <message numerus="yes">
-        <source>%n obstacle(s) joined to their neighbours across gaps narrower than the robot (%1 m²).</source>
+        <source>Obstacles joined to their neighbours across gaps narrower than the robot: %n (%1 m²).</source>
         <translation>
-            <numerusform>%n obstacle relié à ses voisins par des passages plus étroits que le robot (%1 m²).</numerusform>
-            <numerusform>%n obstacles reliés à leurs voisins par des passages plus étroits que le robot (%1 m²).</numerusform>
+            <numerusform>Obstacles reliés à leurs voisins par des passages plus étroits que le robot : %n (%1 m²).</numerusform>
+            <numerusform>Obstacles reliés à leurs voisins par des passages plus étroits que le robot : %n (%1 m²).</numerusform>
         </translation>
     </message>
 </context>

@@ -338,8 +338,8 @@ void ImportDialog::refresh() {
                     .arg(c->closedArea, 0, 'f', 2));
         if (const auto& c = result_->cleaning; c && c->obstaclesJoined > 0)
             summary_->setText(summary_->text() + QLatin1Char(' ') +
-                              tr("%n obstacle(s) joined to their neighbours across gaps "
-                                 "narrower than the robot (%1 m²).",
+                              tr("Obstacles joined to their neighbours across gaps "
+                                 "narrower than the robot: %n (%1 m²).",
                                  nullptr, c->obstaclesJoined)
                                   .arg(c->passageArea, 0, 'f', 2));
         if (const auto& c = result_->cleaning; c && c->wallAngle)
