@@ -29,7 +29,8 @@ commands:
                 from walls, so passages at least L wide are driven and swept)
                 (--angle per-room, the default: each room's stripes follow its own walls;
                 --angle auto: the shortest estimated time among the angles that cover
-                everything reachable; losses above 0.5% of the floor are warned on stderr,
+                everything reachable, or within 1% of it the shortest path; losses above
+                0.5% of the floor are warned on stderr,
                 and with --strict the exit code is 3)
                 (dqn without --model uses the built-in generalist model, trained on
                 generated floors; with --model FILE, a file written by train, it plans
@@ -158,7 +159,7 @@ PlanResult planFromArguments(const std::string& path, const Project& project, co
     if (request.sweep.automatic)
         std::cerr << "floorcover-cli: note: " << path << ": sweep angle " << result.stripeAngleDeg
                   << " degrees chosen (shortest estimated time among the plans that cover "
-                     "everything reachable)\n";
+                     "everything reachable, or within 1% of it the shortest path)\n";
     return result;
 }
 

@@ -580,23 +580,22 @@ PlanResult planPerRoom(const PlanRequest& request, const SolveControl& control,
             applyTouchUps(request, plan);
             return plan;
         }));
-    std::optional<PlanResult> best;
+    std::vector<PlanResult> done;
     std::exception_ptr failure;
     report(0.5);
     for (auto& plan : plans) { // in order, so that ties go to the family plan
         report(0.5 +
                0.5 * static_cast<double>(&plan - plans.data()) / static_cast<double>(plans.size()));
         try {
-            PlanResult result = plan.get();
-            if (!best || betterPlanChoice(result.metrics, best->metrics))
-                best = std::move(result);
+            done.push_back(plan.get());
         } catch (...) {
             if (!failure)
                 failure = std::current_exception();
         }
     }
-    if (!best)
+    if (done.empty())
         std::rethrow_exception(failure);
+    std::optional<PlanResult> best = std::move(done[choosePlan(done)]);
     best->metrics.seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     return std::move(*best);

@@ -465,6 +465,32 @@ bool betterPlanChoice(const Metrics& candidate, const Metrics& best) {
     return candidate.length < best.length;
 }
 
+size_t choosePlan(const std::vector<const Metrics*>& candidates) {
+    size_t best = 0;
+    for (size_t i = 1; i < candidates.size(); ++i)
+        if (betterPlanChoice(*candidates[i], *candidates[best]))
+            best = i;
+    const Metrics& b = *candidates[best];
+    size_t chosen = best;
+    for (size_t i = 0; i < candidates.size(); ++i) {
+        const Metrics& c = *candidates[i];
+        const bool coversAsMuch = completePlan(c) == completePlan(b) &&
+                                  (completePlan(b) || std::abs(c.uncoveredArea - b.uncoveredArea) <=
+                                                          1e-3 * b.requiredArea);
+        if (coversAsMuch && c.time <= b.time * (1 + kTimeTie) &&
+            c.length < candidates[chosen]->length - 1e-9 * std::max(1.0, b.length))
+            chosen = i;
+    }
+    return chosen;
+}
+
+size_t choosePlan(const std::vector<PlanResult>& plans) {
+    std::vector<const Metrics*> metrics;
+    for (const PlanResult& plan : plans)
+        metrics.push_back(&plan.metrics);
+    return choosePlan(metrics);
+}
+
 std::vector<std::string> coverageLossWarnings(const Metrics& metrics) {
     std::vector<std::string> out;
     const double floor = metrics.requiredArea;
@@ -507,14 +533,13 @@ PlanResult planWithoutTouchUps(const PlanRequest& request, const SolveControl& c
     if (!request.sweep.automatic)
         return planPerRoom(request, control, prepared);
     const auto t0 = std::chrono::steady_clock::now();
-    std::optional<PlanResult> best;
+    std::vector<PlanResult> plans;
     std::string firstError;
     for (double angle : candidateAngles(request.plan)) {
         try {
             PlanResult r = planOneAngle(request, angle, control, prepared);
             applyTouchUps(request, r);
-            if (!best || betterPlanChoice(r.metrics, best->metrics))
-                best = std::move(r);
+            plans.push_back(std::move(r));
         } catch (const InputError& e) {
             // One angle may fail (e.g. the start cannot be joined at that angle) where
             // another succeeds; only when every angle fails is the request bad.
@@ -522,11 +547,12 @@ PlanResult planWithoutTouchUps(const PlanRequest& request, const SolveControl& c
                 firstError = e.what();
         }
     }
-    if (!best)
+    if (plans.empty())
         throw InputError(firstError);
-    best->metrics.seconds =
+    PlanResult best = std::move(plans[choosePlan(plans)]);
+    best.metrics.seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    return std::move(*best);
+    return best;
 }
 
 } // namespace
@@ -567,16 +593,15 @@ namespace {
 // did; returns the best of those, if any. Only where some cell would move its stripes, only
 // at angles `prepared` built already and on floors of at most 60 rooms; not for solvers bound
 // to their own graph.
-std::optional<PlanResult> planOnLattice(const PlanRequest& request, const PlanResult& first,
-                                        const SolveControl& control,
-                                        const PreparedPlans& prepared) {
+std::vector<PlanResult> planOnLattice(const PlanRequest& request, const PlanResult& first,
+                                      const SolveControl& control, const PreparedPlans& prepared) {
     static const std::vector<std::string> anyGraph{"heuristic", "greedy", "exact"};
     // Planning a second time is what the per-room search affords on floors it searches; a
     // 1,000-room floor would take half as long again (8 s to 13 s).
     constexpr size_t kLatticeMaxRooms = 60;
     if (!request.stripeLattice || request.plan.rooms.size() > kLatticeMaxRooms ||
         std::find(anyGraph.begin(), anyGraph.end(), request.solver) == anyGraph.end())
-        return std::nullopt;
+        return {};
     const std::map<std::string, double> chosen = roomAnglesOf(first, request.plan);
     std::vector<std::map<std::string, double>> variants{chosen};
     if (request.sweep.perRoom || request.sweep.automatic) {
@@ -588,7 +613,7 @@ std::optional<PlanResult> planOnLattice(const PlanRequest& request, const PlanRe
     }
     const PreparedPlans lattice(request.plan, request.robot, request.transitionCells,
                                 prepared.floorCache(), true);
-    std::optional<PlanResult> best;
+    std::vector<PlanResult> plans;
     for (const std::map<std::string, double>& angles : variants) {
         std::set<double> distinct;
         for (const auto& entry : angles)
@@ -614,10 +639,9 @@ std::optional<PlanResult> planOnLattice(const PlanRequest& request, const PlanRe
             again = planWithRoomAngles(request, all, control, lattice);
         }
         applyTouchUps(request, again);
-        if (!best || betterPlanChoice(again.metrics, best->metrics))
-            best = std::move(again);
+        plans.push_back(std::move(again));
     }
-    return best;
+    return plans;
 }
 
 } // namespace
@@ -634,9 +658,11 @@ PlanResult planCoverage(const PlanRequest& request, const SolveControl& control,
     // one angle gets them here.
     applyTouchUps(request, result);
     try {
-        if (std::optional<PlanResult> lattice = planOnLattice(request, result, control, *prepared))
-            if (betterPlanChoice(lattice->metrics, result.metrics))
-                result = std::move(*lattice);
+        std::vector<PlanResult> plans = planOnLattice(request, result, control, *prepared);
+        if (!plans.empty()) {
+            plans.insert(plans.begin(), std::move(result)); // the first of equals
+            result = std::move(plans[choosePlan(plans)]);
+        }
     } catch (const InputError&) {
         // The lattice is an offer: where it cannot be planned, the first plan stands.
     }

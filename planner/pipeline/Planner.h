@@ -128,6 +128,16 @@ inline constexpr double kReportedLossFraction = 0.005;
 // that does not; then the shorter estimated time, then the shorter path. A shorter path
 // never buys less coverage.
 bool betterPlanChoice(const Metrics& candidate, const Metrics& best);
+
+// Estimated times this close (a share) count as equal when several plans of one request are
+// weighed (choosePlan).
+inline constexpr double kTimeTie = 0.01;
+
+// Which of several plans of one request to keep: the best by betterPlanChoice, unless another
+// that covers as much is within kTimeTie of its time and shorter (the time's turn model is
+// rough; at the same time the path metres shorter is the better one); the first of equals.
+size_t choosePlan(const std::vector<const Metrics*>& candidates);
+size_t choosePlan(const std::vector<PlanResult>& plans);
 // Whether a plan covers everything reachable: uncovered at most kReportedLossFraction.
 bool completePlan(const Metrics& metrics);
 

@@ -145,6 +145,30 @@ TEST(RobotDisc, AutoNeverTradesCoverageForTime) {
     EXPECT_TRUE(betterPlanChoice(faster, complete));
 }
 
+// Among plans that cover as much, times within 1% are equal and the shorter path wins; the
+// fastest is the reference, so that a run of slightly slower plans cannot drift further.
+TEST(PlanChoice, WithinOnePercentOfTheTimeTheShorterPathWins) {
+    auto plan = [](double time, double length, double uncovered) {
+        Metrics m;
+        m.requiredArea = 100.0, m.time = time, m.length = length, m.uncoveredArea = uncovered;
+        return m;
+    };
+    const Metrics fastest = plan(673.8, 291.9, 0.0), shorter = plan(675.8, 275.9, 0.0);
+    EXPECT_EQ(choosePlan(std::vector<const Metrics*>{&fastest, &shorter}), 1u);
+    EXPECT_EQ(choosePlan(std::vector<const Metrics*>{&shorter, &fastest}), 0u);
+    const Metrics slower = plan(690.0, 250.0, 0.0); // 2.4% slower: time decides
+    EXPECT_EQ(choosePlan(std::vector<const Metrics*>{&fastest, &slower}), 0u);
+    // 0.9% and 1.8% slower, each shorter: only the first is within 1% of the fastest.
+    const Metrics a = plan(100.0, 50.0, 0.0), b = plan(100.9, 49.0, 0.0),
+                  c = plan(101.8, 48.0, 0.0);
+    EXPECT_EQ(choosePlan(std::vector<const Metrics*>{&a, &b, &c}), 1u);
+    // A shorter plan that leaves more uncovered never wins.
+    const Metrics incomplete = plan(673.9, 200.0, 3.0);
+    EXPECT_EQ(choosePlan(std::vector<const Metrics*>{&fastest, &incomplete}), 0u);
+    // Equal plans: the first.
+    EXPECT_EQ(choosePlan(std::vector<const Metrics*>{&fastest, &fastest}), 0u);
+}
+
 TEST(PerRoomSweep, RoomsFollowTheirOwnWallsAtAnyRotation) {
     const Plan office = samplePlan("office");
     const auto upright = roomSweepAngles(office, {});
