@@ -43,6 +43,15 @@ private:
 
 // Is q inside the strip of half-width h around segment ab, between its ends extended by
 // `before` and `after`?
+// Whether the path turns from direction u to v by at most a right angle, give or take
+// kRightAngleSlack: a traced wall a millimetre off makes a stripe end's turn 90.6 degrees,
+// whose mitre still sweeps the corner (the metric bevels only beyond a 2 W mitre, turns
+// past 150 degrees), and the seal kept for it cost two turns.
+constexpr double kRightAngleSlack = 0.1736; // sin 10 degrees
+bool turnsAtMostSquare(Vec2 u, Vec2 v) {
+    return dot(u, v) >= -kRightAngleSlack * std::sqrt(dot(u, u) * dot(v, v));
+}
+
 bool inStrip(Vec2 q, Vec2 a, Vec2 b, double h, double before, double after) {
     const Vec2 d = b - a;
     const double len = std::sqrt(dot(d, d));
@@ -76,7 +85,7 @@ std::vector<char> prunableExcursions(const Polyline& pts,
         if (distance(pts[before + 1], v) > 1e-9 || distance(pts[after], v) > 1e-9)
             return false;
         const Vec2 a = pts[before], c = pts[after + 1];
-        return dot(v - a, c - v) >= 0 && distance(q, v) <= h * std::sqrt(2.0) &&
+        return turnsAtMostSquare(v - a, c - v) && distance(q, v) <= h * std::sqrt(2.0) &&
                inStrip(q, a, v, h, 0, h) && inStrip(q, v, c, h, h, 0);
     };
     auto covered = [&](Vec2 q, int skipBegin, int skipEnd) { // nearby: filled per excursion
@@ -92,7 +101,7 @@ std::vector<char> prunableExcursions(const Polyline& pts,
             // bevelled, so their wide wedge is not swept).
             const int j = i + 1;
             if (j + 1 < static_cast<int>(pts.size()) && segmentActive[j] &&
-                dot(pts[j] - pts[i], pts[j + 1] - pts[j]) >= 0 && // at most a right angle
+                turnsAtMostSquare(pts[j] - pts[i], pts[j + 1] - pts[j]) &&
                 !(j >= skipBegin && j < skipEnd) && distance(q, pts[j]) <= h * std::sqrt(2.0) &&
                 inStrip(q, pts[i], pts[j], h, 0, h) && inStrip(q, pts[j], pts[j + 1], h, h, 0))
                 return true;

@@ -107,3 +107,22 @@ TEST(ExcursionFold, KeepsTheSealWhereTheShortcutHitsAWallOrNoTransitIsNext) {
         EXPECT_EQ(out.points.size(), path.size());
     }
 }
+
+// A seal at a stripe end whose next move turns a hair more than a right angle (a wall traced
+// a millimetre off) is dropped like one at a square turn: the turn's mitre sweeps its margin.
+// At a sharp turn the mitre is not assumed and the seal stays.
+TEST(ExcursionPruning, ANearlySquareTurnSweepsTheSealsMargin) {
+    const double w = 1.0;
+    // Up a stripe to (7.5, 4.5) under a wall at y = 5, a seal half a column to the left and
+    // back, then away to the right.
+    auto path = [](Vec2 next) {
+        return Polyline{{7.5, 0.5}, {7.5, 4.5}, {7.0, 4.5}, {7.5, 4.5}, next, {next.x, 0.5}};
+    };
+    const std::vector<PathExcursion> seal{{1, 3, true}};
+    const std::vector<char> square = detail::prunableExcursions(path({8.5, 4.5}), seal, w);
+    EXPECT_FALSE(square[2]); // the seal's far end is dropped
+    const std::vector<char> nearly = detail::prunableExcursions(path({8.5, 4.49}), seal, w);
+    EXPECT_FALSE(nearly[2]); // 90.6 degrees
+    const std::vector<char> sharp = detail::prunableExcursions(path({8.5, 3.5}), seal, w);
+    EXPECT_TRUE(sharp[2]); // 135 degrees: kept
+}
