@@ -58,6 +58,35 @@ void joinStart(LocalPath& local, const ClearanceField& field, const Decompositio
         append(local.path, {first}, SegmentKind::Transit);
 }
 
+// A fold runs a transit straight to a seal's far end, along the wall: a seal whose margin
+// only that transit sweeps could not be dropped before it (noisy room-obstacle: two seals at
+// one stripe end). The pruning runs again on the folded path.
+void pruneAgainAfterFolding(const LocalPath& local, double width, std::vector<char>& keep) {
+    const Polyline& pts = local.path.points;
+    std::vector<int> compactIndex(pts.size(), -1), original;
+    Polyline compact;
+    for (size_t i = 0; i < pts.size(); ++i)
+        if (keep[i]) {
+            compactIndex[i] = static_cast<int>(compact.size());
+            original.push_back(static_cast<int>(i));
+            compact.push_back(pts[i]);
+        }
+    std::vector<detail::PathExcursion> whole;
+    for (const detail::PathExcursion& ex : local.excursions) {
+        bool kept = true;
+        for (int k = ex.begin; k <= ex.end; ++k)
+            kept = kept && keep[k];
+        if (kept)
+            whole.push_back({compactIndex[ex.begin], compactIndex[ex.end], ex.towardsCeiling});
+    }
+    if (whole.empty())
+        return;
+    const std::vector<char> again = detail::prunableExcursions(compact, whole, width);
+    for (size_t i = 0; i < compact.size(); ++i)
+        if (!again[i])
+            keep[original[i]] = 0;
+}
+
 // Joins the end point, drops the seal excursions whose margin the rest of the path already
 // sweeps, and converts to the world frame.
 CoveragePath finish(LocalPath& local, const ClearanceField& field, const Decomposition& dec,
@@ -73,6 +102,7 @@ CoveragePath finish(LocalPath& local, const ClearanceField& field, const Decompo
         arriving[i] = local.path.kinds[i - 1];
     detail::foldExcursionsIntoTransits(local.path.points, local.excursions, field, dec.robot, keep,
                                        arriving);
+    pruneAgainAfterFolding(local, dec.coverageWidth(), keep);
     CoveragePath world;
     for (size_t i = 0; i < local.path.points.size(); ++i) {
         if (!keep[i])
