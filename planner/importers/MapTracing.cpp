@@ -235,12 +235,8 @@ PassageClosing withoutNarrowPassages(const OGRGeometry& free, double radius) {
     const std::pair<int, int> topology = topologyOf(free);
     GeometryPtr closed = std::make_unique<OGRMultiPolygon>();
     for (const Polygon2& part : parts) {
-        OGRPolygon polygon;
-        auto* shell = new OGRLinearRing;
-        for (const Vec2& p : part.shell)
-            shell->addPoint(p.x, p.y);
-        shell->closeRings();
-        polygon.addRingDirectly(shell);
+        OGRPolygon polygon; // the shell: a passage all round a speck closes over it too
+        polygon.addRingDirectly(ogrRing(part.shell));
         if (polygon.get_Area() < kMinPassageArea)
             continue;
         const GeometryPtr simple(polygon.SimplifyPreserveTopology(kPassageTolerance));
