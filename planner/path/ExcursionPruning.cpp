@@ -41,8 +41,6 @@ private:
     std::unordered_map<long long, std::vector<int>> buckets_;
 };
 
-// Is q inside the strip of half-width h around segment ab, between its ends extended by
-// `before` and `after`?
 // Whether the path turns from direction u to v by at most a right angle, give or take
 // kRightAngleSlack: a traced wall a millimetre off makes a stripe end's turn 90.6 degrees,
 // whose mitre still sweeps the corner (the metric bevels only beyond a 2 W mitre, turns
@@ -52,6 +50,8 @@ bool turnsAtMostSquare(Vec2 u, Vec2 v) {
     return dot(u, v) >= -kRightAngleSlack * std::sqrt(dot(u, u) * dot(v, v));
 }
 
+// Is q inside the strip of half-width h around segment ab, between its ends extended by
+// `before` and `after`?
 bool inStrip(Vec2 q, Vec2 a, Vec2 b, double h, double before, double after) {
     const Vec2 d = b - a;
     const double len = std::sqrt(dot(d, d));

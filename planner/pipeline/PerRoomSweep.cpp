@@ -588,6 +588,7 @@ PlanResult planPerRoom(const PlanRequest& request, const SolveControl& control,
                0.5 * static_cast<double>(&plan - plans.data()) / static_cast<double>(plans.size()));
         try {
             done.push_back(plan.get());
+            keepContenders(done);
         } catch (...) {
             if (!failure)
                 failure = std::current_exception();

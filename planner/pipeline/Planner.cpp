@@ -465,30 +465,59 @@ bool betterPlanChoice(const Metrics& candidate, const Metrics& best) {
     return candidate.length < best.length;
 }
 
-size_t choosePlan(const std::vector<const Metrics*>& candidates) {
+namespace {
+
+// Whether `c` covers as much as the best plan `b` and is within kTimeTie of its time: one
+// choosePlan may take for being shorter.
+bool tiesWith(const Metrics& c, const Metrics& b) {
+    const bool coversAsMuch =
+        completePlan(c) == completePlan(b) &&
+        (completePlan(b) || std::abs(c.uncoveredArea - b.uncoveredArea) <= 1e-3 * b.requiredArea);
+    return coversAsMuch && c.time <= b.time * (1 + kTimeTie);
+}
+
+size_t bestByTime(const std::vector<const Metrics*>& candidates) {
     size_t best = 0;
     for (size_t i = 1; i < candidates.size(); ++i)
         if (betterPlanChoice(*candidates[i], *candidates[best]))
             best = i;
-    const Metrics& b = *candidates[best];
-    size_t chosen = best;
-    for (size_t i = 0; i < candidates.size(); ++i) {
-        const Metrics& c = *candidates[i];
-        const bool coversAsMuch = completePlan(c) == completePlan(b) &&
-                                  (completePlan(b) || std::abs(c.uncoveredArea - b.uncoveredArea) <=
-                                                          1e-3 * b.requiredArea);
-        if (coversAsMuch && c.time <= b.time * (1 + kTimeTie) &&
-            c.length < candidates[chosen]->length - 1e-9 * std::max(1.0, b.length))
-            chosen = i;
-    }
-    return chosen;
+    return best;
 }
 
-size_t choosePlan(const std::vector<PlanResult>& plans) {
+std::vector<const Metrics*> metricsOf(const std::vector<PlanResult>& plans) {
     std::vector<const Metrics*> metrics;
     for (const PlanResult& plan : plans)
         metrics.push_back(&plan.metrics);
-    return choosePlan(metrics);
+    return metrics;
+}
+
+} // namespace
+
+size_t choosePlan(const std::vector<const Metrics*>& candidates) {
+    const size_t best = bestByTime(candidates);
+    const Metrics& b = *candidates[best];
+    size_t chosen = best;
+    for (size_t i = 0; i < candidates.size(); ++i)
+        if (tiesWith(*candidates[i], b) &&
+            candidates[i]->length < candidates[chosen]->length - 1e-9 * std::max(1.0, b.length))
+            chosen = i;
+    return chosen;
+}
+
+void keepContenders(std::vector<PlanResult>& plans) {
+    if (plans.empty())
+        return;
+    const std::vector<const Metrics*> metrics = metricsOf(plans);
+    const Metrics best = *metrics[bestByTime(metrics)];
+    std::vector<PlanResult> kept;
+    for (PlanResult& plan : plans)
+        if (tiesWith(plan.metrics, best))
+            kept.push_back(std::move(plan));
+    plans = std::move(kept);
+}
+
+size_t choosePlan(const std::vector<PlanResult>& plans) {
+    return choosePlan(metricsOf(plans));
 }
 
 std::vector<std::string> coverageLossWarnings(const Metrics& metrics) {
@@ -540,6 +569,7 @@ PlanResult planWithoutTouchUps(const PlanRequest& request, const SolveControl& c
             PlanResult r = planOneAngle(request, angle, control, prepared);
             applyTouchUps(request, r);
             plans.push_back(std::move(r));
+            keepContenders(plans); // a floor's graphs are large: only near-ties are kept
         } catch (const InputError& e) {
             // One angle may fail (e.g. the start cannot be joined at that angle) where
             // another succeeds; only when every angle fails is the request bad.

@@ -138,6 +138,9 @@ inline constexpr double kTimeTie = 0.01;
 // rough; at the same time the path metres shorter is the better one); the first of equals.
 size_t choosePlan(const std::vector<const Metrics*>& candidates);
 size_t choosePlan(const std::vector<PlanResult>& plans);
+// Drops the plans choosePlan can no longer take, whatever plans come next: those that lose
+// to the best so far by more than a tie. The first of equals stays first.
+void keepContenders(std::vector<PlanResult>& plans);
 // Whether a plan covers everything reachable: uncovered at most kReportedLossFraction.
 bool completePlan(const Metrics& metrics);
 

@@ -167,6 +167,13 @@ TEST(PlanChoice, WithinOnePercentOfTheTimeTheShorterPathWins) {
     EXPECT_EQ(choosePlan(std::vector<const Metrics*>{&fastest, &incomplete}), 0u);
     // Equal plans: the first.
     EXPECT_EQ(choosePlan(std::vector<const Metrics*>{&fastest, &fastest}), 0u);
+    // Plans kept while a search goes on: only those choosePlan may still take, in order.
+    std::vector<PlanResult> plans(3);
+    plans[0].metrics = slower, plans[1].metrics = fastest, plans[2].metrics = shorter;
+    keepContenders(plans);
+    ASSERT_EQ(plans.size(), 2u);
+    EXPECT_EQ(plans[0].metrics.length, fastest.length);
+    EXPECT_EQ(plans[choosePlan(plans)].metrics.length, shorter.length);
 }
 
 TEST(PerRoomSweep, RoomsFollowTheirOwnWallsAtAnyRotation) {
