@@ -86,7 +86,7 @@ double narrowStripeX(const Cell& cell, const ClearanceField& field, double prefe
     return bestX;
 }
 
-std::vector<ClearRange> clearRanges(const Cell& cell, const ClearanceField& field) {
+std::vector<ClearRange> clearRanges(const Cell& cell, const ClearanceField& field, double placed) {
     const double r = field.inset();
     const double step = 0.25 * r;
     // Stripes lie at least W/2 inside the cell's ends; closer to an end, the slice sees
@@ -97,8 +97,11 @@ std::vector<ClearRange> clearRanges(const Cell& cell, const ClearanceField& fiel
         // A cell narrower than W holds one stripe anywhere its head still spans the whole
         // cell, x in [x1 - W/2, x0 + W/2] (possibly outside the cell, e.g. W/2 from a bed
         // whose side is the cell's end): take the slice with the longest clear spans.
-        const double x = narrowStripeX(cell, field);
-        const std::vector<Interval> spans = spansAt(cell, x, field);
+        std::vector<Interval> spans;
+        if (!std::isnan(placed))
+            spans = spansAt(cell, placed, field);
+        if (spans.empty())
+            spans = spansAt(cell, narrowStripeX(cell, field), field);
         ClearRange whole{cell.x0, cell.x1, static_cast<int>(spans.size()), {}};
         for (size_t k = 0; k + 1 < spans.size(); ++k) {
             const double y = 0.5 * (spans[k].hi + spans[k + 1].lo);

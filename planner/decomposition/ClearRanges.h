@@ -30,6 +30,9 @@ double narrowStripeX(const Cell& cell, const ClearanceField& field,
 
 // Splits [cell.x0, cell.x1] where the number of clear spans changes. Margins next to the
 // cell's own ends where nothing is clear belong to the neighbouring range.
-std::vector<ClearRange> clearRanges(const Cell& cell, const ClearanceField& field);
+// placed: where the stripe of a cell narrower than W is placed (a lattice line), used where
+// the robot fits there; NaN: the x of narrowStripeX.
+std::vector<ClearRange> clearRanges(const Cell& cell, const ClearanceField& field,
+                                    double placed = std::numeric_limits<double>::quiet_NaN());
 
 } // namespace fc::detail

@@ -16,6 +16,8 @@ namespace {
 
 // Floors of at most this many raw cells may hand slivers across (see layOutStripes' use).
 constexpr std::size_t kHandOffMaxCells = 60;
+// The share of the stripes' length the dense lattice must save to be offered.
+constexpr double kDenseMinSaving = 0.1;
 
 using detail::SlabSweep;
 using detail::Trapezoid;
@@ -185,6 +187,46 @@ Cell makeCell(int id, CellKind kind, int room, double x0, double x1, Polyline fl
     return c;
 }
 
+// Cells swept by their neighbours' stripes are not visited: the cells on their left are
+// joined to the first cells with stripes on their right, through the border where they
+// leave (the graph connects the corners of that side to all of the far cell's corners).
+void joinAcrossSweptCells(Decomposition& out) {
+    const size_t n = out.cells.size();
+    std::vector<std::vector<size_t>> rightOf(n);
+    for (size_t k = 0; k < out.adjacencies.size(); ++k)
+        if (out.adjacencies[k].kind == Adjacency::Kind::AcrossSweep)
+            rightOf[out.adjacencies[k].first].push_back(k);
+    std::vector<Adjacency> added;
+    for (size_t p = 0; p < n; ++p) {
+        if (out.cells[p].sweptByNeighbours)
+            continue;
+        for (size_t k : rightOf[p]) {
+            const Adjacency leaving = out.adjacencies[k];
+            if (!out.cells[leaving.second].sweptByNeighbours)
+                continue;
+            std::vector<int> todo{leaving.second};
+            std::vector<char> seen(n, 0), joined(n, 0);
+            seen[leaving.second] = 1;
+            while (!todo.empty()) {
+                const int z = todo.back();
+                todo.pop_back();
+                for (size_t m : rightOf[z]) {
+                    const int q = out.adjacencies[m].second;
+                    if (out.cells[q].sweptByNeighbours) {
+                        if (!seen[q])
+                            seen[q] = 1, todo.push_back(q);
+                    } else if (!joined[q]) {
+                        joined[q] = 1;
+                        added.push_back(
+                            {Adjacency::Kind::AcrossSweep, static_cast<int>(p), q, leaving.shared});
+                    }
+                }
+            }
+        }
+    }
+    out.adjacencies.insert(out.adjacencies.end(), added.begin(), added.end());
+}
+
 } // namespace
 
 Decomposition decompose(const Plan& plan, const DecompositionOptions& options) {
@@ -305,6 +347,9 @@ Decomposition decompose(const Plan& plan, const DecompositionOptions& options) {
         latticeCells.push_back({c.room, c.x0, c.x1,
                                 c.ceiling.empty() ? 0.0 : c.ceiling.front().y - c.floor.front().y,
                                 c.ceiling.empty() ? 0.0 : c.ceiling.back().y - c.floor.back().y});
+    for (const RawAdjacency& a : adj)
+        if (a.kind == Adjacency::Kind::AlongSweep)
+            latticeCells[a.first].keepsStripe = latticeCells[a.second].keepsStripe = true;
     std::vector<detail::LatticeLink> latticeLinks;
     for (const RawAdjacency& a : adj)
         if (a.kind == Adjacency::Kind::AcrossSweep && raw[a.first].x1 == a.x0 &&
@@ -319,13 +364,31 @@ Decomposition decompose(const Plan& plan, const DecompositionOptions& options) {
     const double handOff =
         raw.size() <= kHandOffMaxCells ? detail::maxHandOff(w, options.robot.robotDiameter) : 0.0;
     detail::StripeLayout layout =
-        detail::layOutStripes(latticeCells, latticeLinks, w, true, handOff);
-    detail::StripeLayout own = detail::layOutStripes(latticeCells, latticeLinks, w, false);
+        detail::layOutStripes(latticeCells, latticeLinks, w, LatticeMode::AtCorners, handOff);
+    detail::StripeLayout own =
+        detail::layOutStripes(latticeCells, latticeLinks, w, LatticeMode::Own);
+    detail::StripeLayout dense =
+        detail::layOutStripes(latticeCells, latticeLinks, w, LatticeMode::Dense);
     out.stripeLatticeAvailable = layout.stripes != own.stripes;
-    if (options.stripeLattice)
+    // The dense lattice is offered where it saves a tenth of the stripes' length (traced
+    // maps); on drawn plans it saves little and would double the planning time.
+    auto stripeLength = [&](const detail::StripeLayout& l) {
+        double sum = 0;
+        for (size_t i = 0; i < raw.size(); ++i)
+            sum += l.stripes[i].size() * 0.5 *
+                   (latticeCells[i].leftHeight + latticeCells[i].rightHeight);
+        return sum;
+    };
+    out.denseLatticeAvailable = stripeLength(dense) < (1 - kDenseMinSaving) * stripeLength(own);
+    if (options.stripeLattice == LatticeMode::AtCorners) {
         out.stripeLattice = out.stripeLatticeAvailable;
-    else
+    } else if (options.stripeLattice == LatticeMode::Dense) {
+        out.stripeLattice = out.denseLatticeAvailable;
+        layout = std::move(dense);
+    } else {
         layout = std::move(own); // every cell on its own
+    }
+    const bool mayBeEmpty = options.stripeLattice == LatticeMode::Dense;
 
     // Split where the clear region changes (narrow passages, spans stacked in y), cut
     // transition strips and create the final cells.
@@ -380,7 +443,9 @@ Decomposition decompose(const Plan& plan, const DecompositionOptions& options) {
             for (double x : grid)
                 if (x >= a && (x < b || (b == whole.x1 && x <= b)))
                     xs.push_back(x);
-            return xs.empty() ? stripePositions(a, b, w) : xs;
+            return xs.empty() && !(mayBeEmpty && !latticeCells[i].keepsStripe)
+                       ? stripePositions(a, b, w)
+                       : xs;
         };
         for (size_t seg = 0; seg + 1 < cuts.size(); ++seg) {
             RawCell r = whole;
@@ -391,11 +456,18 @@ Decomposition decompose(const Plan& plan, const DecompositionOptions& options) {
             const bool rightSlice = seg + 2 < cuts.size() || rightCritical[i];
             Cell probe;
             probe.x0 = r.x0, probe.x1 = r.x1, probe.floor = r.floor, probe.ceiling = r.ceiling;
-            for (const detail::ClearRange& part : detail::clearRanges(probe, field)) {
+            double placed = NAN; // a narrow piece's lattice line
+            if (mayBeEmpty && onLattice && r.x1 - r.x0 < w) {
+                const std::vector<double> lines = linesIn(r.x0, r.x1);
+                if (lines.size() == 1)
+                    placed = lines[0];
+            }
+            for (const detail::ClearRange& part : detail::clearRanges(probe, field, placed)) {
                 const Polyline floor = detail::clipFunction(r.floor, part.x0, part.x1);
                 const Polyline ceiling = detail::clipFunction(r.ceiling, part.x0, part.x1);
                 auto add = [&](Cell c, int layer, int layers) {
-                    c.stripesPlaced = layout.sweepsSliver[i] != 0;
+                    c.stripesPlaced = layout.sweepsSliver[i] != 0 || mayBeEmpty;
+                    c.sweptByNeighbours = c.stripes.empty();
                     pieces[i].push_back({c.id, c.x0, c.x1, layer, layers});
                     out.cells.push_back(std::move(c));
                 };
@@ -475,6 +547,7 @@ Decomposition decompose(const Plan& plan, const DecompositionOptions& options) {
         }
     }
 
+    joinAcrossSweptCells(out);
     detail::planStripeSpans(out);
     return out;
 }

@@ -4,6 +4,7 @@
 #pragma once
 
 #include "decomposition/DerivedCache.h"
+#include "decomposition/StripeLattice.h"
 #include "geometry/Clearance.h"
 #include "geometry/Geometry.h"
 #include "model/Plan.h"
@@ -34,6 +35,10 @@ struct Cell {
     // Its stripe also sweeps a sliver of the cell across (StripeLattice's hand-off): a cell
     // narrower than W keeps it where planned if the robot fits there, not in its middle.
     bool stripesPlaced = false;
+    // No stripe of its own: the lattice lines of the cells on either side sweep it (a
+    // sliver between two slices of a traced map; LatticeMode::Dense). Not required, and
+    // its neighbours are joined across it.
+    bool sweptByNeighbours = false;
 
     double width() const { return x1 - x0; }
     bool reachable() const;           // at least one stripe with a clear span
@@ -78,8 +83,10 @@ struct Decomposition {
     std::vector<UnreachableArea> unreachable;
     std::vector<Ring> freeSpace; // sweep frame: [0] boundary (ccw), then holes (cw)
     bool stripeLattice = false;  // some cells' stripes lie on a shared lattice
-    // Whether DecompositionOptions::stripeLattice would move some cells' stripes.
+    // Whether DecompositionOptions::stripeLattice AtCorners (Dense) would move some cells'
+    // stripes.
     bool stripeLatticeAvailable = false;
+    bool denseLatticeAvailable = false;
 
     int primaryCount() const;
     int transitionCount() const;
@@ -106,9 +113,9 @@ struct DecompositionOptions {
     RobotProfile robot = RobotProfile{1.0, 1.0, 1.0};
     double stripeAngleDeg = 90.0;
     bool transitionCells = true; // the paper's modification; off = classic BCD
-    // Wide cells meeting at an obstacle's corner share one stripe lattice
-    // (StripeLattice.h) instead of each restarting W/2 inside its edges.
-    bool stripeLattice = false;
+    // Wide cells meeting at an obstacle's corner share one stripe lattice, or every cell
+    // does (StripeLattice.h), instead of each restarting W/2 inside its edges.
+    LatticeMode stripeLattice = LatticeMode::Own;
     // Where the clearance field and derived values of a free space decomposed before are
     // taken from (FloorCache.h); null: made afresh.
     std::shared_ptr<FloorCache> floorCache;

@@ -106,6 +106,90 @@ void handOffExcess(const std::vector<LatticeCell>& cells, const std::vector<Latt
     }
 }
 
+// Dense: a side gets a stripe W/2 inside it when the wall on it is longer than this share
+// of the cell's height or than kDenseWallWidths W; shorter wall faces (a pillar's side, a
+// ragged wall's step) are left to the wall touch-ups, a stroke along the face instead of
+// a stripe the cell's whole height.
+constexpr double kDenseWallShare = 0.5;
+constexpr double kDenseWallWidths = 2.0;
+// A lattice line this share of W past the inset position still sweeps the side.
+constexpr double kDenseInsetTolerance = 0.05;
+
+std::map<int, double> roomStarts(const std::vector<LatticeCell>& cells) {
+    std::map<int, double> start; // each room's lattice starts W/2 inside its first wall
+    for (const LatticeCell& c : cells) {
+        auto [it, inserted] = start.emplace(c.room, c.x0);
+        if (!inserted)
+            it->second = std::min(it->second, c.x0);
+    }
+    return start;
+}
+
+StripeLayout denseLayout(const std::vector<LatticeCell>& cells,
+                         const std::vector<LatticeLink>& links, double w) {
+    const size_t n = cells.size();
+    std::vector<double> leftShared(n, 0.0), rightShared(n, 0.0); // with the same room
+    for (const LatticeLink& l : links) {
+        if (cells[l.left].room != cells[l.right].room)
+            continue;
+        rightShared[l.left] += l.length;
+        leftShared[l.right] += l.length;
+    }
+    const std::map<int, double> start = roomStarts(cells);
+    StripeLayout out;
+    out.stripes.resize(n);
+    out.onLattice.assign(n, 1);
+    out.sweepsSliver.assign(n, 0);
+    const double eps = 1e-9 * w, tol = kDenseInsetTolerance * w;
+    for (size_t i = 0; i < n; ++i) {
+        const LatticeCell& c = cells[i];
+        const double height = std::max(c.leftHeight, c.rightHeight);
+        auto longWall = [&](double sideHeight, double shared) {
+            const double wall = sideHeight - shared;
+            return wall > kDenseWallShare * height || wall > kDenseWallWidths * w;
+        };
+        const double first = start.at(c.room) + 0.5 * w;
+        // The lattice lines nearest each side, inside the cell or not.
+        const double lineRightOfX0 = first + std::ceil((c.x0 - eps - first) / w) * w;
+        const double lineLeftOfX1 = first + std::floor((c.x1 + eps - first) / w) * w;
+        const bool leftNeeds =
+            longWall(c.leftHeight, leftShared[i]) && lineRightOfX0 > c.x0 + 0.5 * w + tol;
+        const bool rightNeeds =
+            longWall(c.rightHeight, rightShared[i]) && lineLeftOfX1 < c.x1 - 0.5 * w - tol;
+        std::vector<double>& xs = out.stripes[i];
+        if ((leftNeeds || rightNeeds || c.keepsStripe) && c.x1 - c.x0 <= w + eps) {
+            xs = evenStripePositions(c.x0, c.x1, w);
+            out.onLattice[i] = 0;
+            continue;
+        }
+        if (leftNeeds)
+            xs.push_back(c.x0 + 0.5 * w);
+        for (double x = lineRightOfX0; x <= lineLeftOfX1 + eps; x += w)
+            if (x >= c.x0 - eps && x <= c.x1 + eps)
+                xs.push_back(std::clamp(x, c.x0, c.x1));
+        if (rightNeeds)
+            xs.push_back(c.x1 - 0.5 * w);
+        if (xs.empty() && c.keepsStripe)
+            xs = evenStripePositions(c.x0, c.x1, w);
+    }
+    // A cell without stripes relies on the lattice lines beyond its sides; where a
+    // neighbour's stripe is off the lattice (a narrow cell's one stripe, in its middle), it
+    // sweeps its own middle too, and so on across cells without stripes.
+    for (bool changed = true; changed;) {
+        changed = false;
+        for (const LatticeLink& l : links) {
+            for (const auto& [a, b] : {std::pair{l.left, l.right}, std::pair{l.right, l.left}}) {
+                if (out.stripes[a].empty() && !out.onLattice[b] && cells[a].room == cells[b].room) {
+                    out.stripes[a] = evenStripePositions(cells[a].x0, cells[a].x1, w);
+                    out.onLattice[a] = 0;
+                    changed = true;
+                }
+            }
+        }
+    }
+    return out;
+}
+
 } // namespace
 
 double maxHandOff(double w, double robotDiameter) {
@@ -124,8 +208,11 @@ std::vector<double> evenStripePositions(double x0, double x1, double w) {
 }
 
 StripeLayout layOutStripes(const std::vector<LatticeCell>& cells,
-                           const std::vector<LatticeLink>& links, double w, bool lattice,
+                           const std::vector<LatticeLink>& links, double w, LatticeMode mode,
                            double handOff) {
+    if (mode == LatticeMode::Dense)
+        return denseLayout(cells, links, w);
+    const bool lattice = mode == LatticeMode::AtCorners;
     const size_t n = cells.size();
     // A side is open where neighbours share (almost) all of it, within one room, both
     // cells wide, and the neighbour's facing side is open too.
@@ -150,13 +237,7 @@ StripeLayout layOutStripes(const std::vector<LatticeCell>& cells,
     }
     leftOpen = leftKeep, rightOpen = rightKeep;
 
-    // Each room's lattice starts W/2 inside its first wall.
-    std::map<int, double> roomStart;
-    for (const LatticeCell& c : cells) {
-        auto [it, inserted] = roomStart.emplace(c.room, c.x0);
-        if (!inserted)
-            it->second = std::min(it->second, c.x0);
-    }
+    std::map<int, double> roomStart = roomStarts(cells);
     // Cells joined through open sides share the lattice; a group takes it only where it
     // saves stripes over spacing each cell evenly.
     std::vector<int> parent(n);

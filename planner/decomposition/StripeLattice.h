@@ -7,6 +7,20 @@
 
 #include <vector>
 
+namespace fc {
+
+// How a decomposition places its cells' stripes (DecompositionOptions::stripeLattice).
+enum class LatticeMode {
+    Own,       // every cell spaced on its own
+    AtCorners, // wide cells meeting at an obstacle's corner share the room's lattice
+    // Every cell on the room's lattice, with a stripe W/2 inside a side only where a long
+    // wall lies on it; a cell no lattice line crosses gets no stripe of its own. For traced
+    // maps, whose ragged outlines start cells a few centimetres wide across the whole floor.
+    Dense,
+};
+
+} // namespace fc
+
 namespace fc::detail {
 
 // Evenly spaced stripes in [x0, x1], the first and last W/2 inside (one in the middle when
@@ -17,6 +31,7 @@ struct LatticeCell {
     int room = 0;
     double x0 = 0, x1 = 0;
     double leftHeight = 0, rightHeight = 0; // ceiling - floor at x0 and x1
+    bool keepsStripe = false;               // borders another room along the sweep (a doorway)
 };
 
 // Two raw cells sharing a piece of a slice: `left` ends at x, `right` starts there.
@@ -27,7 +42,7 @@ struct LatticeLink {
 };
 
 struct StripeLayout {
-    std::vector<std::vector<double>> stripes; // per raw cell
+    std::vector<std::vector<double>> stripes; // per raw cell; empty: swept by its neighbours
     std::vector<char> onLattice;              // stripes on the room's lattice
     std::vector<char> sweepsSliver;           // receives a neighbour's sliver (hand-off)
 };
@@ -36,10 +51,9 @@ struct StripeLayout {
 // clear of a wall on the shared slice (W/2 - sliver >= L/2).
 double maxHandOff(double w, double robotDiameter);
 
-// lattice false: no cell on the lattice (each spaced on its own). Slivers up to handOff
-// wide are handed off (0: none).
+// Slivers up to handOff wide are handed off (0: none; not in Dense).
 StripeLayout layOutStripes(const std::vector<LatticeCell>& cells,
-                           const std::vector<LatticeLink>& links, double w, bool lattice = true,
-                           double handOff = 0.0);
+                           const std::vector<LatticeLink>& links, double w,
+                           LatticeMode mode = LatticeMode::AtCorners, double handOff = 0.0);
 
 } // namespace fc::detail

@@ -177,6 +177,9 @@ void fitStripes(Cell& cell, const ClearanceField& field) {
         return;
     const double w = 2 * field.inset();
     if (cell.stripes.size() == 1 && cell.width() < w) {
+        // A placed stripe (a lattice line, a hand-off) stays where the robot can drive it.
+        if (cell.stripesPlaced && !spanAt(cell, cell.stripes[0], field).empty())
+            return;
         cell.stripes[0] = cell.stripesPlaced ? narrowStripeX(cell, field, cell.stripes[0])
                                              : narrowStripeX(cell, field);
         return;
@@ -190,6 +193,26 @@ void fitStripes(Cell& cell, const ClearanceField& field) {
         if (!std::isnan(right) || !std::isnan(left))
             cell.stripes[0] =
                 std::isnan(left) || (!std::isnan(right) && right - x < x - left) ? right : left;
+        return;
+    }
+    if (cell.stripesPlaced) {
+        // Placed on a lattice the neighbours share: only an end stripe the robot cannot
+        // drive moves, to the nearest clear x inwards, or goes where it would pass the next.
+        std::vector<double>& xs = cell.stripes;
+        if (spanAt(cell, xs.front(), field).empty()) {
+            const double x = firstFeasible(cell, xs.front(), xs.back(), field);
+            if (std::isnan(x) || x >= xs[1])
+                xs.erase(xs.begin());
+            else
+                xs.front() = x;
+        }
+        if (xs.size() >= 2 && spanAt(cell, xs.back(), field).empty()) {
+            const double x = firstFeasible(cell, xs.back(), xs.front(), field);
+            if (std::isnan(x) || x <= xs[xs.size() - 2])
+                xs.pop_back();
+            else
+                xs.back() = x;
+        }
         return;
     }
     double a = cell.stripes.front(), b = cell.stripes.back();
@@ -216,7 +239,7 @@ void planStripeSpans(Decomposition& dec) {
         cell.stripeSpans.clear();
         for (double x : cell.stripes)
             cell.stripeSpans.push_back(spanAt(cell, x, field));
-        if (!cell.reachable()) {
+        if (!cell.reachable() && !cell.sweptByNeighbours) {
             const Ring outline = cell.outline();
             Vec2 centre;
             for (const Vec2& p : outline)

@@ -4,7 +4,7 @@ namespace fc {
 
 PlanStages buildPlanStages(const Plan& plan, const RobotProfile& robot, double stripeAngleDeg,
                            bool transitionCells, const std::shared_ptr<FloorCache>& floorCache,
-                           bool stripeLattice) {
+                           LatticeMode stripeLattice) {
     DecompositionOptions options;
     options.robot = robot;
     options.stripeAngleDeg = stripeAngleDeg;

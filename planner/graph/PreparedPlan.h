@@ -22,7 +22,7 @@ struct PlanStages {
 PlanStages buildPlanStages(const Plan& plan, const RobotProfile& robot, double stripeAngleDeg,
                            bool transitionCells,
                            const std::shared_ptr<FloorCache>& floorCache = nullptr,
-                           bool stripeLattice = false);
+                           LatticeMode stripeLattice = LatticeMode::Own);
 
 struct PreparedPlan {
     Plan plan; // normalized

@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <future>
 #include <iomanip>
 #include <limits>
 #include <map>
@@ -33,7 +34,7 @@ void addClassicStages(PreparedPlan& prepared, const std::shared_ptr<FloorCache>&
 
 PreparedPlan preparePlan(const Plan& plan, const RobotProfile& robot, double stripeAngleDeg,
                          bool transitionCells, bool classicStages,
-                         const std::shared_ptr<FloorCache>& floorCache, bool stripeLattice) {
+                         const std::shared_ptr<FloorCache>& floorCache, LatticeMode stripeLattice) {
     PreparedPlan prepared;
     prepared.plan = normalizedPlan(plan);
     prepared.robot = robot;
@@ -641,36 +642,63 @@ std::vector<PlanResult> planOnLattice(const PlanRequest& request, const PlanResu
                 angle = std::fmod(angle + 90.0, 180.0);
         variants.push_back(turned);
     }
-    const PreparedPlans lattice(request.plan, request.robot, request.transitionCells,
-                                prepared.floorCache(), true);
-    std::vector<PlanResult> plans;
-    for (const std::map<std::string, double>& angles : variants) {
-        std::set<double> distinct;
-        for (const auto& entry : angles)
-            distinct.insert(PreparedPlans::roundedAngle(entry.second));
-        bool known = true, moves = false;
-        for (double angle : distinct) {
-            known = known && prepared.asked(angle, false);
-            moves = moves ||
-                    (known && prepared.shared(angle, false)->decomposition.stripeLatticeAvailable);
+    // Each layout's preparations are shared by its variants, which are planned at once.
+    std::vector<std::unique_ptr<PreparedPlans>> layouts;
+    std::vector<std::future<PlanResult>> pending;
+    SolveControl quiet;
+    quiet.cancelled = control.cancelled;
+    for (const LatticeMode mode : {LatticeMode::AtCorners, LatticeMode::Dense}) {
+        layouts.push_back(std::make_unique<PreparedPlans>(
+            request.plan, request.robot, request.transitionCells, prepared.floorCache(), mode));
+        const PreparedPlans& lattice = *layouts.back();
+        for (const std::map<std::string, double>& angles : variants) {
+            std::set<double> distinct;
+            for (const auto& entry : angles)
+                distinct.insert(PreparedPlans::roundedAngle(entry.second));
+            bool known = true, moves = false;
+            for (double angle : distinct) {
+                known = known && prepared.asked(angle, false);
+                if (!known)
+                    break;
+                const Decomposition& plain = prepared.shared(angle, false)->decomposition;
+                moves = moves || (mode == LatticeMode::Dense ? plain.denseLatticeAvailable
+                                                             : plain.stripeLatticeAvailable);
+            }
+            if (!known || !moves)
+                continue;
+            pending.push_back(std::async(std::launch::async, [&request, &lattice, angles, quiet]() {
+                PlanResult again;
+                const bool single =
+                    std::all_of(angles.begin(), angles.end(), [&](const auto& entry) {
+                        return entry.second == angles.begin()->second;
+                    });
+                if (single && !request.sweep.perRoom) {
+                    again = planOneAngle(request, angles.begin()->second, quiet, &lattice);
+                } else {
+                    std::map<std::string, double> all = familyAngles(request.plan, request.sweep);
+                    for (const auto& [room, angle] : angles)
+                        all[room] = angle;
+                    again = planWithRoomAngles(request, all, quiet, lattice);
+                }
+                applyTouchUps(request, again);
+                return again;
+            }));
         }
-        if (!known || !moves)
-            continue;
-        PlanResult again;
-        const bool single = std::all_of(angles.begin(), angles.end(), [&](const auto& entry) {
-            return entry.second == angles.begin()->second;
-        });
-        if (single && !request.sweep.perRoom) {
-            again = planOneAngle(request, angles.begin()->second, control, &lattice);
-        } else {
-            std::map<std::string, double> all = familyAngles(request.plan, request.sweep);
-            for (const auto& [room, angle] : angles)
-                all[room] = angle;
-            again = planWithRoomAngles(request, all, control, lattice);
-        }
-        applyTouchUps(request, again);
-        plans.push_back(std::move(again));
     }
+    std::vector<PlanResult> plans;
+    std::exception_ptr failure;
+    for (std::future<PlanResult>& plan : pending) { // every one is waited for
+        try {
+            plans.push_back(plan.get());
+        } catch (const InputError&) {
+            // The lattice is an offer: a variant that cannot be planned is not one.
+        } catch (...) {
+            if (!failure)
+                failure = std::current_exception(); // cancelled
+        }
+    }
+    if (failure)
+        std::rethrow_exception(failure);
     return plans;
 }
 

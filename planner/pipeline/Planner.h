@@ -75,7 +75,7 @@ struct PlanResult {
 PreparedPlan preparePlan(const Plan& plan, const RobotProfile& robot, double stripeAngleDeg,
                          bool transitionCells = true, bool classicStages = false,
                          const std::shared_ptr<FloorCache>& floorCache = nullptr,
-                         bool stripeLattice = false);
+                         LatticeMode stripeLattice = LatticeMode::Own);
 
 // Whether the named solver plans on PreparedPlan::classic (false for unknown names).
 bool solverNeedsClassicStages(const std::string& name);

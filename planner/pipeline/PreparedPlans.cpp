@@ -8,7 +8,7 @@
 namespace fc {
 
 PreparedPlans::PreparedPlans(const Plan& plan, const RobotProfile& robot, bool transitionCells,
-                             std::shared_ptr<FloorCache> floorCache, bool stripeLattice)
+                             std::shared_ptr<FloorCache> floorCache, LatticeMode stripeLattice)
     : plan_(plan), robot_(robot), transitionCells_(transitionCells), stripeLattice_(stripeLattice),
       floorCache_(floorCache ? std::move(floorCache) : std::make_shared<FloorCache>()) {}
 

@@ -23,12 +23,13 @@ public:
     // of every edit); null: a cache of its own, shared by its angles.
     // stripeLattice: DecompositionOptions::stripeLattice for every angle.
     PreparedPlans(const Plan& plan, const RobotProfile& robot, bool transitionCells,
-                  std::shared_ptr<FloorCache> floorCache = nullptr, bool stripeLattice = false);
+                  std::shared_ptr<FloorCache> floorCache = nullptr,
+                  LatticeMode stripeLattice = LatticeMode::Own);
 
     const Plan& plan() const { return plan_; }
     const RobotProfile& robot() const { return robot_; }
     bool transitionCells() const { return transitionCells_; }
-    bool stripeLattice() const { return stripeLattice_; }
+    LatticeMode stripeLattice() const { return stripeLattice_; }
     const std::shared_ptr<FloorCache>& floorCache() const { return floorCache_; }
 
     // A copy of the plan prepared at the angle rounded to 1e-9 degrees (so that 7.15 + 90
@@ -50,7 +51,7 @@ private:
     Plan plan_;
     RobotProfile robot_;
     bool transitionCells_;
-    bool stripeLattice_;
+    LatticeMode stripeLattice_;
     std::shared_ptr<FloorCache> floorCache_;
     mutable std::mutex mutex_;
     mutable std::map<std::tuple<long long, bool>, Built> built_;

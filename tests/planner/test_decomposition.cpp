@@ -211,7 +211,7 @@ TEST(StripeLattice, WideCellsAtAnObstacleCornerShareOneLattice) {
     DecompositionOptions o;
     o.stripeAngleDeg = 0.0; // stripes along the 12 m walls: 8 lanes across the 8 m
     auto lanes = [&](bool lattice) {
-        o.stripeLattice = lattice;
+        o.stripeLattice = lattice ? LatticeMode::AtCorners : LatticeMode::Own;
         const Decomposition d = decompose(p, o);
         EXPECT_TRUE(d.stripeLatticeAvailable);
         EXPECT_EQ(d.stripeLattice, lattice);
@@ -263,6 +263,19 @@ TEST(StripeLattice, CellsKeepTheirOwnStripesWhereTheLatticeWouldNotHold) {
     }
 }
 
+// Every x in [from, to] lies within W/2 of some cell's stripe.
+void expectEveryDepthSwept(const detail::StripeLayout& layout, double from, double to, double w) {
+    std::vector<double> all;
+    for (const auto& s : layout.stripes)
+        all.insert(all.end(), s.begin(), s.end());
+    for (double x = from; x <= to; x += 0.01) {
+        double nearest = INFINITY;
+        for (double s : all)
+            nearest = std::min(nearest, std::abs(s - x));
+        EXPECT_LE(nearest, 0.5 * w + 1e-9) << "at " << x;
+    }
+}
+
 TEST(StripeLattice, ACellBarelyWiderThanItsStripesHandsTheSliverAcross) {
     using detail::LatticeCell;
     const double w = 1.0;
@@ -277,9 +290,11 @@ TEST(StripeLattice, ACellBarelyWiderThanItsStripesHandsTheSliverAcross) {
     const double handOff = detail::maxHandOff(w, 0.6);
     EXPECT_NEAR(handOff, 0.15, 1e-12);
     EXPECT_NEAR(detail::maxHandOff(w, 0.9), 0.04, 1e-12); // W/2 - sliver stays >= L/2
-    const detail::StripeLayout layout = detail::layOutStripes(cells, links, w, true, handOff);
+    const detail::StripeLayout layout =
+        detail::layOutStripes(cells, links, w, LatticeMode::AtCorners, handOff);
     EXPECT_EQ(layout.stripes[0], detail::evenStripePositions(0.0, 3.0, w));
-    EXPECT_EQ(detail::layOutStripes(cells, links, w, false, handOff).stripes, layout.stripes);
+    EXPECT_EQ(detail::layOutStripes(cells, links, w, LatticeMode::Own, handOff).stripes,
+              layout.stripes);
     EXPECT_EQ(detail::layOutStripes(cells, links, w).stripes[1].size(), 3u); // none handed
     for (int side : {1, 2}) {
         ASSERT_EQ(layout.stripes[side].size(), 2u);
@@ -292,15 +307,7 @@ TEST(StripeLattice, ACellBarelyWiderThanItsStripesHandsTheSliverAcross) {
     EXPECT_NEAR(layout.stripes[3].back(), 7.45, 1e-12);
     // Every depth of the room lies within W/2 of a stripe, and the sliver's stripe runs
     // in the cell below, whose slice spans the side cells' whole lower sides.
-    std::vector<double> all;
-    for (const auto& s : layout.stripes)
-        all.insert(all.end(), s.begin(), s.end());
-    for (double y = 0.0; y <= 7.95; y += 0.01) {
-        double nearest = INFINITY;
-        for (double s : all)
-            nearest = std::min(nearest, std::abs(s - y));
-        EXPECT_LE(nearest, 0.5 * w + 1e-9) << "at " << y;
-    }
+    expectEveryDepthSwept(layout, 0.0, 7.95, w);
 
     // No hand-off: 0.2 m over 2 W (more than the share), a wall on the shared side, or a
     // cell below without room to spare.
@@ -308,14 +315,101 @@ TEST(StripeLattice, ACellBarelyWiderThanItsStripesHandsTheSliverAcross) {
     wider[1].x1 = wider[2].x1 = wider[3].x0 = 5.2;
     std::vector<detail::LatticeLink> widerLinks = links;
     widerLinks[2].x = widerLinks[3].x = 5.2;
-    EXPECT_EQ(detail::layOutStripes(wider, widerLinks, w, true, handOff).stripes[1].size(), 3u);
+    EXPECT_EQ(detail::layOutStripes(wider, widerLinks, w, LatticeMode::AtCorners, handOff)
+                  .stripes[1]
+                  .size(),
+              3u);
     std::vector<detail::LatticeLink> walled = links;
     walled[2].length = 3.0; // a wall takes 1 m of the side cell's lower side
-    EXPECT_EQ(detail::layOutStripes(cells, walled, w, true, handOff).stripes[1].size(), 3u);
+    EXPECT_EQ(
+        detail::layOutStripes(cells, walled, w, LatticeMode::AtCorners, handOff).stripes[1].size(),
+        3u);
     std::vector<LatticeCell> full = cells;
     full[3].x1 = 8.05; // 3 m below: no spare room
-    EXPECT_EQ(detail::layOutStripes(full, links, w, true, handOff).stripes[1].size(), 3u);
+    EXPECT_EQ(
+        detail::layOutStripes(full, links, w, LatticeMode::AtCorners, handOff).stripes[1].size(),
+        3u);
     std::vector<LatticeCell> thin = cells;
     thin[3].x1 = 5.9; // a cell below narrower than W: its stripe goes where the robot fits
-    EXPECT_EQ(detail::layOutStripes(thin, links, w, true, handOff).stripes[1].size(), 3u);
+    EXPECT_EQ(
+        detail::layOutStripes(thin, links, w, LatticeMode::AtCorners, handOff).stripes[1].size(),
+        3u);
+}
+
+// A traced map's ragged outline starts cells a few centimetres wide across the whole floor
+// (an event at each wall tooth). Restarting W/2 inside every such cell gives each its own
+// full-length stripe; on the dense lattice they take the room's lattice lines, and a cell
+// no line crosses is swept by its neighbours' stripes.
+TEST(StripeLattice, DenseLatticeSweepsSliversWithTheNeighboursLines) {
+    using detail::LatticeCell;
+    const double w = 1.0;
+    // One 10 m tall room: slices at 3.0, 3.3 (a 0.3 m sliver), 4.2 and 7.0; the sliver and
+    // the next cell are shared whole with their neighbours but for 0.2 m of a pillar's face.
+    const std::vector<LatticeCell> cells{
+        {0, 0.0, 3.0, 10, 10}, {0, 3.0, 3.3, 10, 10}, {0, 3.3, 4.2, 10, 10}, {0, 4.2, 7.0, 10, 10}};
+    const std::vector<detail::LatticeLink> links{
+        {0, 1, 3.0, 10}, {1, 2, 3.3, 9.8}, {2, 3, 4.2, 9.8}};
+    const detail::StripeLayout own = detail::layOutStripes(cells, links, w, LatticeMode::Own);
+    const detail::StripeLayout dense = detail::layOutStripes(cells, links, w, LatticeMode::Dense);
+    size_t ownCount = 0, denseCount = 0;
+    for (size_t i = 0; i < cells.size(); ++i)
+        ownCount += own.stripes[i].size(), denseCount += dense.stripes[i].size();
+    EXPECT_EQ(ownCount, 3u + 1u + 1u + 3u);
+    EXPECT_EQ(denseCount, 7u);             // one lattice line every W across the room's 7 m
+    EXPECT_TRUE(dense.stripes[1].empty()); // the sliver: swept from both sides
+    ASSERT_EQ(dense.stripes[2].size(), 1u);
+    EXPECT_NEAR(dense.stripes[2][0], 3.5, 1e-12);
+    // Every x of the room lies within W/2 of a stripe.
+    expectEveryDepthSwept(dense, 0.0, 7.0, w);
+
+    // A long wall on a side still gets its stripe W/2 inside it: a room ending at 7.3 m has
+    // no lattice line within W/2 of its end wall (6.5 m is 0.8 m from it).
+    std::vector<LatticeCell> longer = cells;
+    longer[3].x1 = 7.3;
+    const detail::StripeLayout walled = detail::layOutStripes(longer, links, w, LatticeMode::Dense);
+    ASSERT_EQ(walled.stripes[3].size(), 4u);
+    EXPECT_NEAR(walled.stripes[3][2], 6.5, 1e-12);
+    EXPECT_NEAR(walled.stripes[3][3], 6.8, 1e-12);
+
+    // A narrow cell at a doorway keeps its own stripe in its middle, off the lattice; the
+    // sliver beside it then cannot rely on the lattice and sweeps itself.
+    std::vector<LatticeCell> narrow = cells;
+    narrow[2].keepsStripe = true;
+    const detail::StripeLayout chained =
+        detail::layOutStripes(narrow, links, w, LatticeMode::Dense);
+    ASSERT_EQ(chained.stripes[2].size(), 1u);
+    EXPECT_NEAR(chained.stripes[2][0], 3.75, 1e-12);
+    EXPECT_FALSE(chained.onLattice[2]);
+    ASSERT_EQ(chained.stripes[1].size(), 1u);
+    EXPECT_NEAR(chained.stripes[1][0], 3.15, 1e-12);
+}
+
+// Cells without stripes are not required and their neighbours are joined across them.
+TEST(StripeLattice, DenseDecompositionJoinsTheCellsAcrossASliver) {
+    Plan p;
+    p.boundary = rectangle(0, 0, 10, 8);
+    // Two small pillars whose slices cut the room into cells 0.2-0.5 m wide.
+    p.obstacles = {rectangle(3.0, 2.0, 3.2, 2.2), rectangle(3.4, 5.0, 3.6, 5.2)};
+    DecompositionOptions o;
+    o.stripeAngleDeg = 90.0;
+    o.stripeLattice = LatticeMode::Dense;
+    const Decomposition d = decompose(p, o);
+    EXPECT_TRUE(d.stripeLattice);
+    int swept = 0;
+    for (const Cell& c : d.cells) {
+        if (!c.sweptByNeighbours)
+            continue;
+        ++swept;
+        EXPECT_TRUE(c.stripes.empty());
+        // Some cell on its left is joined to some cell on its right.
+        bool joined = false;
+        for (const Adjacency& a : d.adjacencies)
+            if (a.kind == Adjacency::Kind::AcrossSweep && d.cells[a.first].x1 <= c.x0 + 1e-9 &&
+                d.cells[a.second].x0 >= c.x1 - 1e-9 && !d.cells[a.first].sweptByNeighbours &&
+                !d.cells[a.second].sweptByNeighbours)
+                joined = true;
+        EXPECT_TRUE(joined) << c.id;
+    }
+    EXPECT_GT(swept, 0);
+    EXPECT_TRUE(d.unreachable.empty());
 }
