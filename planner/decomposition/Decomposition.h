@@ -81,8 +81,9 @@ struct Decomposition {
     std::vector<Adjacency> adjacencies;
     std::vector<CriticalSlice> criticalSlices;
     std::vector<UnreachableArea> unreachable;
-    std::vector<Ring> freeSpace; // sweep frame: [0] boundary (ccw), then holes (cw)
-    bool stripeLattice = false;  // some cells' stripes lie on a shared lattice
+    std::vector<Ring> freeSpace;           // sweep frame: [0] boundary (ccw), then holes (cw)
+    bool stripeLattice = false;            // some cells' stripes lie on a shared lattice
+    LatticeMode layout = LatticeMode::Own; // how the stripes were laid out (never Auto)
     // Whether DecompositionOptions::stripeLattice AtCorners (Dense) would move some cells'
     // stripes.
     bool stripeLatticeAvailable = false;

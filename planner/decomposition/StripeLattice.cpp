@@ -125,8 +125,10 @@ std::map<int, double> roomStarts(const std::vector<LatticeCell>& cells) {
     return start;
 }
 
-StripeLayout denseLayout(const std::vector<LatticeCell>& cells,
-                         const std::vector<LatticeLink>& links, double w) {
+// The dense layout with each room's lattice starting at `start` (plus W/2).
+StripeLayout denseLayoutFrom(const std::vector<LatticeCell>& cells,
+                             const std::vector<LatticeLink>& links, double w,
+                             const std::map<int, double>& start) {
     const size_t n = cells.size();
     std::vector<double> leftShared(n, 0.0), rightShared(n, 0.0); // with the same room
     for (const LatticeLink& l : links) {
@@ -135,7 +137,6 @@ StripeLayout denseLayout(const std::vector<LatticeCell>& cells,
         rightShared[l.left] += l.length;
         leftShared[l.right] += l.length;
     }
-    const std::map<int, double> start = roomStarts(cells);
     StripeLayout out;
     out.stripes.resize(n);
     out.onLattice.assign(n, 1);
@@ -188,6 +189,38 @@ StripeLayout denseLayout(const std::vector<LatticeCell>& cells,
         }
     }
     return out;
+}
+
+// Phases of a room's lattice tried by the dense layout (fractions of W).
+constexpr int kDensePhases = 10;
+
+// Each room's lattice phase is the one of kDensePhases with the least estimated stripe
+// length (stripes times the cell's height): a traced room's first wall is often a blob the
+// laser barely saw, and a lattice W/2 inside it may miss every long wall by a little, each
+// then getting a stripe of its own.
+StripeLayout denseLayout(const std::vector<LatticeCell>& cells,
+                         const std::vector<LatticeLink>& links, double w) {
+    const std::map<int, double> first = roomStarts(cells);
+    std::map<int, std::pair<double, double>> best; // room -> (length, phase)
+    for (int k = 0; k < kDensePhases; ++k) {
+        std::map<int, double> start = first;
+        for (auto& [room, x] : start)
+            x += w * k / kDensePhases;
+        const StripeLayout layout = denseLayoutFrom(cells, links, w, start);
+        std::map<int, double> length;
+        for (size_t i = 0; i < cells.size(); ++i)
+            length[cells[i].room] +=
+                layout.stripes[i].size() * 0.5 * (cells[i].leftHeight + cells[i].rightHeight);
+        for (const auto& [room, sum] : length) {
+            auto it = best.find(room);
+            if (it == best.end() || sum < it->second.first - 1e-9 * w)
+                best[room] = {sum, w * k / kDensePhases};
+        }
+    }
+    std::map<int, double> start = first;
+    for (auto& [room, x] : start)
+        x += best[room].second;
+    return denseLayoutFrom(cells, links, w, start);
 }
 
 } // namespace

@@ -17,6 +17,9 @@ enum class LatticeMode {
     // wall lies on it; a cell no lattice line crosses gets no stripe of its own. For traced
     // maps, whose ragged outlines start cells a few centimetres wide across the whole floor.
     Dense,
+    // Dense where it saves at least a quarter of the estimated stripe length (a traced
+    // map's ragged floor), Own elsewhere.
+    Auto,
 };
 
 } // namespace fc

@@ -458,7 +458,8 @@ PlanResult planPerRoom(const PlanRequest& request, const SolveControl& control,
     const std::map<std::string, double> walls = roomSweepAngles(request.plan, request.sweep);
     std::optional<PreparedPlans> own;
     if (!shared)
-        own.emplace(request.plan, request.robot, request.transitionCells);
+        own.emplace(request.plan, request.robot, request.transitionCells, nullptr,
+                    firstLayoutFor(request));
     const PreparedPlans& prepared = shared ? *shared : *own;
     const std::vector<std::pair<double, int>> groups = angleGroups(walls);
     const std::map<std::string, double> family = familyAngles(request.plan, request.sweep);

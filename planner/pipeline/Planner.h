@@ -77,6 +77,12 @@ PreparedPlan preparePlan(const Plan& plan, const RobotProfile& robot, double str
                          const std::shared_ptr<FloorCache>& floorCache = nullptr,
                          LatticeMode stripeLattice = LatticeMode::Own);
 
+// The stripe layout of a request's first plan (PreparedPlans): the dense lattice where it
+// saves a quarter of the stripes (LatticeMode::Auto) for the solvers that plan any corner
+// graph and where request.stripeLattice allows; the learnt and baseline solvers keep the
+// plain layout their models and definitions assume.
+LatticeMode firstLayoutFor(const PlanRequest& request);
+
 // Whether the named solver plans on PreparedPlan::classic (false for unknown names).
 bool solverNeedsClassicStages(const std::string& name);
 

@@ -24,7 +24,7 @@ public:
     // stripeLattice: DecompositionOptions::stripeLattice for every angle.
     PreparedPlans(const Plan& plan, const RobotProfile& robot, bool transitionCells,
                   std::shared_ptr<FloorCache> floorCache = nullptr,
-                  LatticeMode stripeLattice = LatticeMode::Own);
+                  LatticeMode stripeLattice = LatticeMode::Auto);
 
     const Plan& plan() const { return plan_; }
     const RobotProfile& robot() const { return robot_; }
