@@ -184,13 +184,19 @@ Query makeQuery(const PreparedPlan& prepared, const std::vector<std::string>& ro
 
     int componentCount = 0;
     const std::vector<int> comp = graphComponents(g, componentCount);
-    // The corner nearest p among those of component `only` (-1: any).
+    // The corner nearest p among those of component `only` (-1: any), of a cell the robot
+    // sweeps where there is one: a cell without stripes (too narrow, or swept by its
+    // neighbours on the dense lattice) keeps a corner at its middle that nothing joins.
     auto nearestIn = [&](Vec2 p, int only) {
         int best = -1;
-        double bestDistance = INFINITY;
-        for (const GraphNode& node : g.nodes)
-            if ((only < 0 || comp[node.id] == only) && distance(node.position, p) < bestDistance)
-                bestDistance = distance(node.position, p), best = node.id;
+        for (int pass = 0; pass < 2 && best < 0; ++pass) {
+            double bestDistance = INFINITY;
+            for (const GraphNode& node : g.nodes)
+                if ((pass == 1 || g.cells[node.cell].reachable) &&
+                    (only < 0 || comp[node.id] == only) &&
+                    distance(node.position, p) < bestDistance)
+                    bestDistance = distance(node.position, p), best = node.id;
+        }
         return best;
     };
     const int mainPart = mainRegionAt ? comp[nearestNode(g, dec.frame.toLocal(*mainRegionAt))] : -1;

@@ -249,5 +249,33 @@ TEST(FloorCache, MetricsWithTheCachedRasterEqualFreshOnes) {
     }
 }
 
+// On the dense lattice a sliver between two slices has no stripe; the corner the graph keeps
+// at its middle joins nothing. An end point placed there still ends the path: it is joined to
+// the nearest corner of a cell the robot sweeps.
+TEST(PreparedPlans, AnEndBesideASweptSliverJoinsASweptCell) {
+    Plan plan;
+    plan.boundary = {{0, 0}, {10, 0}, {10, 8}, {0, 8}};
+    plan.obstacles = {{{3.0, 2.0}, {3.0, 2.2}, {3.2, 2.2}, {3.2, 2.0}},
+                      {{3.4, 5.0}, {3.4, 5.2}, {3.6, 5.2}, {3.6, 5.0}}};
+    PlanRequest request;
+    request.plan = plan;
+    request.robot.robotDiameter = 0.6;
+    request.solver = "greedy";
+    const PreparedPlans dense(plan, request.robot, true, nullptr, LatticeMode::Dense);
+    const Decomposition& d = dense.shared(90.0, false)->decomposition;
+    int tried = 0;
+    for (const Cell& c : d.cells) {
+        if (!c.sweptByNeighbours)
+            continue;
+        const double x = 0.5 * (c.x0 + c.x1);
+        request.end = d.frame.toWorld({x, 0.5 * (c.floorAt(x) + c.ceilingAt(x))});
+        PlanResult result;
+        ASSERT_NO_THROW(result = planAtAngle(request, 90.0, {}, &dense)) << c.id;
+        EXPECT_LT(distance(result.path.points.back(), *request.end), 1e-6) << c.id;
+        ++tried;
+    }
+    EXPECT_GT(tried, 0);
+}
+
 } // namespace
 } // namespace fc
