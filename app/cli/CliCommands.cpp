@@ -5,6 +5,7 @@
 #include "formats/FileIO.h"
 #include "formats/PathIO.h"
 #include "formats/PlanIO.h"
+#include "model/RobotPlacement.h"
 #include "pipeline/Comparison.h"
 #include "pipeline/Planner.h"
 
@@ -26,7 +27,9 @@ commands:
                 adjacency-ga-centres] [--model FILE]
                 [--seed N] [--out FILE] [--strict]
                 (--robot-diameter L, default 0.6: the robot is a disc; its centre keeps L/2
-                from walls, so passages at least L wide are driven and swept)
+                from walls, so passages at least L wide are driven and swept; a --start
+                or --end inside an obstacle or outside the floor is refused, one closer
+                than L/2 to a wall moves to where the robot fits, with a note)
                 (--angle per-room, the default: each room's stripes follow its own walls;
                 --angle auto: the shortest estimated time among the angles that cover
                 everything reachable, or within 1% of it the shortest path; losses above
@@ -143,11 +146,52 @@ PlanRequest requestFrom(const Project& project, const Arguments& args) {
     return r;
 }
 
+namespace {
+
+// A start or end point where the robot cannot stand is refused with its reason; one beside a
+// wall moves to where the robot fits, with a note (as the editor's Place tools do): planning
+// from it failed with "cannot be joined to the corner graph without collision".
+void placeEndpoint(const std::string& path, const PlanRequest& request, std::optional<Vec2>& point,
+                   const char* what) {
+    if (!point)
+        return;
+    const double diameter = request.robot.robotDiameter > 0.0 ? request.robot.robotDiameter
+                                                              : request.robot.coverageWidth;
+    const RobotPlacement placed = placeRobot(request.plan, *point, diameter);
+    char at[96], size[32];
+    std::snprintf(at, sizeof at, "(%.3f, %.3f)", point->x, point->y);
+    std::snprintf(size, sizeof size, "%.2f m", diameter);
+    switch (placed.problem) {
+    case PlacementProblem::OutsideFloor:
+        throw InputError(std::string("the ") + what + " point " + at + " lies outside the floor");
+    case PlacementProblem::InsideObstacle:
+        throw InputError(std::string("the ") + what + " point " + at + " lies inside an obstacle");
+    case PlacementProblem::NoRoom:
+        throw InputError(std::string("the robot (") + size +
+                         " across) does not fit at or near the " + what + " point " + at);
+    case PlacementProblem::None:
+        break;
+    }
+    if (placed.moved > 0.0) {
+        char to[96];
+        std::snprintf(to, sizeof to, "%.2f m to (%.3f, %.3f)", placed.moved, placed.position.x,
+                      placed.position.y);
+        std::cerr << "floorcover-cli: note: " << path << ": the " << what << " point " << at
+                  << " is closer to a wall than the robot allows; moved " << to
+                  << ", where the robot (" << size << " across) fits\n";
+        point = placed.position;
+    }
+}
+
+} // namespace
+
 PlanResult planFromArguments(const std::string& path, const Project& project, const Arguments& args,
                              PlanRequest& request) {
     PlanResult result;
     try {
         request = requestFrom(project, args);
+        placeEndpoint(path, request, request.start, "start");
+        placeEndpoint(path, request, request.end, "end");
         result = planCoverage(request);
     } catch (const InputError& e) {
         throw InputError(path + ": " + e.what());

@@ -152,6 +152,12 @@ expect_bad_input "unknown room" "$plans/office.geojson" --rooms Kitchen
 expect_bad_input "unknown solver" "$plans/simple.geojson" --solver nonsense
 expect_bad_input "exact above its limit" "$plans/ward.geojson" --solver exact
 expect_bad_input "nan start" "$plans/simple.geojson" --start nan,1
+expect_bad_input "start in the pillar" "$plans/simple.geojson" --start 6,4
+expect_bad_input "end outside the floor" "$plans/simple.geojson" --end -5,4
+# A start 0.15 m from the wall (the 0.6 m robot needs 0.3 m) moves to where it fits.
+check "start beside a wall" cli plan "$plans/simple.geojson" --start 0.15,4.2
+cp "$work/err" "$work/moved.err"
+check "start beside a wall is moved with a note" grep -q "moved 0.1[0-9] m to" "$work/moved.err"
 
 # The Double-DQN planner from the user's side: train, plan with the model, resume, Ctrl-C,
 # and a clear refusal of another plan's, a broken or a missing model.
