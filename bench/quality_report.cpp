@@ -264,9 +264,10 @@ int main(int argc, char** argv) {
             "gets back: our paths return to their start (the default end), and a room swept in "
             "one direction must be crossed back once it is done; the published planner chooses "
             "a sweep direction per cell (around an obstacle, along each notch), so cells swept "
-            "across can carry the tour back. Ours chooses one direction per room, with stripes "
-            "on one lattice across an obstacle's corners where that plans faster "
-            "(docs/architecture.md, stripe lattice).\n\n",
+            "across can carry the tour back. Ours chooses one direction per room, with a "
+            "headland (one pass along each wall the stripes end at, which a tour can come back "
+            "along) and stripes on one lattice across an obstacle's corners where those plan "
+            "faster (docs/architecture.md, stripe lattice, headlands).\n\n",
             list(publishedMissed).c_str());
 
     // Rotation invariance.

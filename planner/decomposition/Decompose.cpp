@@ -21,6 +21,9 @@ constexpr double kDenseMinSaving = 0.1;
 // LatticeMode::Auto lays out the dense lattice at once where it saves this share: on the
 // faculty map 39% (at 7 degrees), the lab 31% (0 degrees), drawn plans nothing.
 constexpr double kDenseAutoSaving = 0.25;
+// Headland bands follow walls at most this steep across the sweep (tan 10 degrees): along a
+// steeper wall the band's single pass would run closer than L/2 to it.
+constexpr double kHeadlandMaxSlope = 0.176;
 
 using detail::SlabSweep;
 using detail::Trapezoid;
@@ -306,6 +309,12 @@ Decomposition decompose(const Plan& plan, const DecompositionOptions& options) {
             out.roomNames.push_back("Unassigned " + std::to_string(i - plan.rooms.size() + 1));
         detail::fuseSameRoomStacks(sweep, 1e-9 * extent);
     }
+    const int roomCount = static_cast<int>(out.roomNames.size());
+    if (options.headland != Headland::None)
+        out.headland =
+            detail::splitHeadlands(sweep, roomCount, w, options.headland != Headland::Ceilings,
+                                   options.headland != Headland::Floors, kHeadlandMaxSlope,
+                                   1e-9 * extent) > 0;
 
     // Merge trapezoids while the slice connectivity inside their room does not change.
     const int nt = static_cast<int>(sweep.trapezoids.size());
@@ -557,6 +566,10 @@ Decomposition decompose(const Plan& plan, const DecompositionOptions& options) {
 
     joinAcrossSweptCells(out);
     detail::planStripeSpans(out);
+    // A headland's cells belong to the room they border (splitHeadlands' labels).
+    for (Cell& cell : out.cells)
+        if (cell.room >= roomCount)
+            cell.room -= roomCount;
     return out;
 }
 

@@ -88,6 +88,7 @@ struct Decomposition {
     // stripes.
     bool stripeLatticeAvailable = false;
     bool denseLatticeAvailable = false;
+    bool headland = false; // some walls have a headland band (DecompositionOptions::headland)
 
     int primaryCount() const;
     int transitionCount() const;
@@ -108,6 +109,11 @@ struct Decomposition {
 
 class FloorCache;
 
+// Which walls the stripes end at get a headland band (DecompositionOptions::headland): in
+// the sweep frame, floors (below the stripes), ceilings (above them), or both. One side
+// lets a tour with an even number of stripes come back along it; both make a spiral.
+enum class Headland { None, Floors, Ceilings, Both };
+
 struct DecompositionOptions {
     // W and L <= W (the robot centre keeps L/2 from walls; L = 0 is read as L = W); only
     // these two are used. The default is a robot that sweeps its own diameter, L = W = 1.
@@ -117,6 +123,10 @@ struct DecompositionOptions {
     // Wide cells meeting at an obstacle's corner share one stripe lattice, or every cell
     // does (StripeLattice.h), instead of each restarting W/2 inside its edges.
     LatticeMode stripeLattice = LatticeMode::Own;
+    // A band one coverage width deep along the walls the stripes end at is swept along the
+    // wall by one pass (a headland), and the stripes end where it begins: a tour can return
+    // along it instead of over swept floor.
+    Headland headland = Headland::None;
     // Where the clearance field and derived values of a free space decomposed before are
     // taken from (FloorCache.h); null: made afresh.
     std::shared_ptr<FloorCache> floorCache;

@@ -201,6 +201,74 @@ SlabSweep sweepSlabs(const std::vector<Ring>& freeRings, const std::vector<Ring>
     return out;
 }
 
+int splitHeadlands(SlabSweep& sweep, int roomCount, double w, bool floors, bool ceilings,
+                   double maxSlope, double epsY) {
+    int bands = 0;
+    const size_t n = sweep.trapezoids.size();
+    std::vector<char> floorIsWall(n, 1), ceilingIsWall(n, 1);
+    for (const TrapezoidStack& s : sweep.stacks) {
+        ceilingIsWall[s.lower] = 0;
+        floorIsWall[s.upper] = 0;
+    }
+    std::vector<Trapezoid> split;
+    std::vector<std::vector<int>> members(sweep.slabMembers.size());
+    std::vector<TrapezoidStack> stacks;
+    std::vector<int> lowest(n, -1), highest(n, -1);
+    for (size_t k = 0; k < sweep.slabMembers.size(); ++k) {
+        for (int t : sweep.slabMembers[k]) {
+            const Trapezoid& z = sweep.trapezoids[t];
+            const double width = z.xb - z.xa;
+            auto gentle = [&](double ya, double yb) {
+                return width > 0 && std::abs(yb - ya) <= maxSlope * width;
+            };
+            const bool band = z.room >= 0 && z.room < roomCount;
+            const bool low = band && floors && floorIsWall[t] && gentle(z.fa, z.fb);
+            const bool high = band && ceilings && ceilingIsWall[t] && gentle(z.ca, z.cb);
+            const double height = std::min(z.ca - z.fa, z.cb - z.fb);
+            const double needed = (low ? w : 0.0) + (high ? w : 0.0);
+            std::vector<Trapezoid> pieces;
+            if ((low || high) && height > needed + w) {
+                Trapezoid middle = z;
+                if (low) {
+                    Trapezoid b = z;
+                    b.room = roomCount + z.room;
+                    b.ca = z.fa + w, b.cb = z.fb + w;
+                    middle.fa = b.ca, middle.fb = b.cb;
+                    pieces.push_back(b);
+                }
+                pieces.push_back(middle);
+                if (high) {
+                    Trapezoid b = z;
+                    b.room = roomCount + z.room;
+                    b.fa = z.ca - w, b.fb = z.cb - w;
+                    pieces.back().ca = b.fa, pieces.back().cb = b.fb;
+                    pieces.push_back(b);
+                }
+                bands += (low ? 1 : 0) + (high ? 1 : 0);
+            } else {
+                pieces.push_back(z);
+            }
+            for (size_t i = 0; i < pieces.size(); ++i) {
+                const int id = static_cast<int>(split.size());
+                if (i == 0)
+                    lowest[t] = id;
+                else
+                    stacks.push_back({id - 1, id});
+                highest[t] = id;
+                members[k].push_back(id);
+                split.push_back(pieces[i]);
+            }
+        }
+    }
+    for (const TrapezoidStack& s : sweep.stacks)
+        stacks.push_back({highest[s.lower], lowest[s.upper]});
+    sweep.trapezoids = std::move(split);
+    sweep.slabMembers = std::move(members);
+    sweep.stacks = std::move(stacks);
+    computeLinks(sweep, epsY);
+    return bands;
+}
+
 int assignLeftovers(SlabSweep& sweep, int roomCount) {
     auto& traps = sweep.trapezoids;
     const int n = static_cast<int>(traps.size());

@@ -54,4 +54,15 @@ void computeLinks(SlabSweep& sweep, double epsY);
 // Fuses trapezoids stacked on a room border with the same room on both sides; relinks.
 void fuseSameRoomStacks(SlabSweep& sweep, double epsY);
 
+// Headlands: in every trapezoid of room r (0 <= r < roomCount) taller than the bands need,
+// the band of height w above a floor wall (with floors) and below a ceiling wall (with
+// ceilings) becomes its own piece,
+// labelled roomCount + r, so that it forms cells of its own, swept along the wall by one
+// pass, where the stripes of the rest end (a field's headland). Only walls at most
+// maxSlope steep (in the sweep frame) get a band; room borders (doorways) get none.
+// Relinks.
+// Returns the number of bands.
+int splitHeadlands(SlabSweep& sweep, int roomCount, double w, bool floors, bool ceilings,
+                   double maxSlope, double epsY);
+
 } // namespace fc::detail

@@ -22,7 +22,8 @@ struct PlanStages {
 PlanStages buildPlanStages(const Plan& plan, const RobotProfile& robot, double stripeAngleDeg,
                            bool transitionCells,
                            const std::shared_ptr<FloorCache>& floorCache = nullptr,
-                           LatticeMode stripeLattice = LatticeMode::Own);
+                           LatticeMode stripeLattice = LatticeMode::Own,
+                           Headland headland = Headland::None);
 
 struct PreparedPlan {
     Plan plan; // normalized

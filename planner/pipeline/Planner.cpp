@@ -3,6 +3,7 @@
 #include "graph/ComponentBridges.h"
 #include "model/Validation.h"
 #include "path/CoverageRepair.h"
+#include "pipeline/LayoutOffers.h"
 #include "pipeline/PathChoice.h"
 #include "pipeline/PerRoomSweep.h"
 #include "pipeline/PreparedPlans.h"
@@ -34,7 +35,8 @@ void addClassicStages(PreparedPlan& prepared, const std::shared_ptr<FloorCache>&
 
 PreparedPlan preparePlan(const Plan& plan, const RobotProfile& robot, double stripeAngleDeg,
                          bool transitionCells, bool classicStages,
-                         const std::shared_ptr<FloorCache>& floorCache, LatticeMode stripeLattice) {
+                         const std::shared_ptr<FloorCache>& floorCache, LatticeMode stripeLattice,
+                         Headland headland) {
     PreparedPlan prepared;
     prepared.plan = normalizedPlan(plan);
     prepared.robot = robot;
@@ -42,7 +44,7 @@ PreparedPlan preparePlan(const Plan& plan, const RobotProfile& robot, double str
     if (!std::isfinite(stripeAngleDeg))
         throw InputError("the sweep angle must be a finite number of degrees");
     PlanStages stages = buildPlanStages(prepared.plan, robot, stripeAngleDeg, transitionCells,
-                                        floorCache, stripeLattice);
+                                        floorCache, stripeLattice, headland);
     prepared.decomposition = std::move(stages.decomposition);
     prepared.graph = std::move(stages.graph);
     if (classicStages)
@@ -411,7 +413,7 @@ Metrics measurePath(const PreparedPlan& prepared, const std::vector<std::string>
     return computeMetrics(in);
 }
 
-namespace {
+namespace detail {
 
 PlanResult planOneAngle(const PlanRequest& request, double angle, const SolveControl& control,
                         const PreparedPlans* prepared) {
@@ -454,7 +456,7 @@ PlanResult planOneAngle(const PlanRequest& request, double angle, const SolveCon
     return result;
 }
 
-} // namespace
+} // namespace detail
 
 bool completePlan(const Metrics& metrics) {
     return metrics.uncoveredArea <= kReportedLossFraction * metrics.requiredArea;
@@ -551,7 +553,7 @@ std::vector<std::string> coverageLossWarnings(const Metrics& metrics) {
 PlanResult planAtAngle(const PlanRequest& request, double angleDeg, const SolveControl& control,
                        const PreparedPlans* prepared) {
     request.robot.validate();
-    return planOneAngle(request, angleDeg, control, prepared);
+    return detail::planOneAngle(request, angleDeg, control, prepared);
 }
 
 namespace {
@@ -560,12 +562,12 @@ PlanResult planWithoutTouchUps(const PlanRequest& request, const SolveControl& c
                                const PreparedPlans* prepared) {
     request.robot.validate();
     if (!request.sweep.automatic && !request.sweep.perRoom)
-        return planOneAngle(request, request.sweep.angleDeg, control, prepared);
+        return detail::planOneAngle(request, request.sweep.angleDeg, control, prepared);
     // A solver bound to one graph (a trained model) plans at the angle it was trained at.
     if (std::optional<RegisteredSolver> registered = findRegisteredSolver(request.solver))
         if (registered->sweepAngle)
             if (std::optional<double> angle = registered->sweepAngle(request.modelPath))
-                return planOneAngle(request, *angle, control, prepared);
+                return detail::planOneAngle(request, *angle, control, prepared);
     if (!request.sweep.automatic)
         return planPerRoom(request, control, prepared);
     const auto t0 = std::chrono::steady_clock::now();
@@ -573,7 +575,7 @@ PlanResult planWithoutTouchUps(const PlanRequest& request, const SolveControl& c
     std::string firstError;
     for (double angle : candidateAngles(request.plan)) {
         try {
-            PlanResult r = planOneAngle(request, angle, control, prepared);
+            PlanResult r = detail::planOneAngle(request, angle, control, prepared);
             applyTouchUps(request, r);
             plans.push_back(std::move(r));
             keepContenders(plans); // a floor's graphs are large: only near-ties are kept
@@ -621,114 +623,18 @@ void applyTouchUps(const PlanRequest& request, PlanResult& result) {
     }
 }
 
-namespace {
+namespace detail {
 
-// Solvers that plan whatever corner graph they are given (not learnt on one, not bound to
-// their own decomposition).
 bool plansAnyGraph(const std::string& solver) {
     return solver == "heuristic" || solver == "greedy" || solver == "exact";
 }
 
-} // namespace
+} // namespace detail
 
 LatticeMode firstLayoutFor(const PlanRequest& request) {
-    return request.stripeLattice && plansAnyGraph(request.solver) ? LatticeMode::Auto
-                                                                  : LatticeMode::Own;
+    return request.stripeLattice && detail::plansAnyGraph(request.solver) ? LatticeMode::Auto
+                                                                          : LatticeMode::Own;
 }
-
-namespace {
-
-// Where wide cells meet at an obstacle's corner, stripes on one lattice save a stripe per
-// cell (12 m on simple-diamond), or cost turns where lattice lines graze the corner: only
-// the path tells. Plans again on the lattice at the angles of `first`, and (where the sweep
-// is the planner's choice) with the free rooms turned by 90 degrees, as the per-room search
-// did; returns the best of those, if any. Only where some cell would move its stripes, only
-// at angles `prepared` built already and on floors of at most 60 rooms; not for solvers bound
-// to their own graph.
-std::vector<PlanResult> planOnLattice(const PlanRequest& request, const PlanResult& first,
-                                      const SolveControl& control, const PreparedPlans& prepared) {
-    // Planning a second time is what the per-room search affords on floors it searches; a
-    // 1,000-room floor would take half as long again (8 s to 13 s).
-    constexpr size_t kLatticeMaxRooms = 60;
-    if (!request.stripeLattice || request.plan.rooms.size() > kLatticeMaxRooms ||
-        !plansAnyGraph(request.solver))
-        return {};
-    const std::map<std::string, double> chosen = roomAnglesOf(first, request.plan);
-    std::vector<std::map<std::string, double>> variants{chosen};
-    if (request.sweep.perRoom || request.sweep.automatic) {
-        std::map<std::string, double> turned = chosen;
-        for (auto& [room, angle] : turned)
-            if (request.sweep.automatic || request.sweep.roomAngles.count(room) == 0)
-                angle = std::fmod(angle + 90.0, 180.0);
-        variants.push_back(turned);
-    }
-    // Each layout's preparations are shared by its variants, which are planned at once.
-    std::vector<std::unique_ptr<PreparedPlans>> layouts;
-    std::vector<std::future<PlanResult>> pending;
-    SolveControl quiet;
-    quiet.cancelled = control.cancelled;
-    for (const LatticeMode mode : {LatticeMode::AtCorners, LatticeMode::Dense}) {
-        layouts.push_back(std::make_unique<PreparedPlans>(
-            request.plan, request.robot, request.transitionCells, prepared.floorCache(), mode));
-        const PreparedPlans& lattice = *layouts.back();
-        // The dense lattice follows the chosen sweep: turned, it never won on the maps it
-        // is for (faculty 8,127 s against 7,912 s; lab 1,299 s against 1,167 s).
-        const size_t tried = mode == LatticeMode::Dense ? 1 : variants.size();
-        for (size_t v = 0; v < tried; ++v) {
-            const std::map<std::string, double>& angles = variants[v];
-            std::set<double> distinct;
-            for (const auto& entry : angles)
-                distinct.insert(PreparedPlans::roundedAngle(entry.second));
-            bool known = true, moves = false;
-            for (double angle : distinct) {
-                known = known && prepared.asked(angle, false);
-                if (!known)
-                    break;
-                const Decomposition& plain = prepared.shared(angle, false)->decomposition;
-                moves = moves ||
-                        (mode == LatticeMode::Dense
-                             ? plain.denseLatticeAvailable && plain.layout != LatticeMode::Dense
-                             : plain.stripeLatticeAvailable);
-            }
-            if (!known || !moves)
-                continue;
-            pending.push_back(std::async(std::launch::async, [&request, &lattice, angles, quiet]() {
-                PlanResult again;
-                const bool single =
-                    std::all_of(angles.begin(), angles.end(), [&](const auto& entry) {
-                        return entry.second == angles.begin()->second;
-                    });
-                if (single && !request.sweep.perRoom) {
-                    again = planOneAngle(request, angles.begin()->second, quiet, &lattice);
-                } else {
-                    std::map<std::string, double> all = familyAngles(request.plan, request.sweep);
-                    for (const auto& [room, angle] : angles)
-                        all[room] = angle;
-                    again = planWithRoomAngles(request, all, quiet, lattice);
-                }
-                applyTouchUps(request, again);
-                return again;
-            }));
-        }
-    }
-    std::vector<PlanResult> plans;
-    std::exception_ptr failure;
-    for (std::future<PlanResult>& plan : pending) { // every one is waited for
-        try {
-            plans.push_back(plan.get());
-        } catch (const InputError&) {
-            // The lattice is an offer: a variant that cannot be planned is not one.
-        } catch (...) {
-            if (!failure)
-                failure = std::current_exception(); // cancelled
-        }
-    }
-    if (failure)
-        std::rethrow_exception(failure);
-    return plans;
-}
-
-} // namespace
 
 PlanResult planCoverage(const PlanRequest& request, const SolveControl& control,
                         const PreparedPlans* prepared) {
@@ -746,7 +652,8 @@ PlanResult planCoverage(const PlanRequest& request, const SolveControl& control,
     // one angle gets them here.
     applyTouchUps(request, result);
     try {
-        std::vector<PlanResult> plans = planOnLattice(request, result, control, *prepared);
+        std::vector<PlanResult> plans =
+            detail::planLayoutOffers(request, result, control, *prepared);
         if (!plans.empty()) {
             plans.insert(plans.begin(), std::move(result)); // the first of equals
             result = std::move(plans[choosePlan(plans)]);
@@ -776,10 +683,11 @@ PlanResult draftCoverage(const PlanRequest& request, const PreparedPlans& prepar
         }
         result = planWithRoomAngles(quick, angles, control, prepared);
     } else
-        result = planOneAngle(quick,
-                              request.sweep.automatic ? candidateAngles(request.plan).front()
-                                                      : request.sweep.angleDeg,
-                              control, &prepared);
+        result =
+            detail::planOneAngle(quick,
+                                 request.sweep.automatic ? candidateAngles(request.plan).front()
+                                                         : request.sweep.angleDeg,
+                                 control, &prepared);
     result.metrics.seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     return result;

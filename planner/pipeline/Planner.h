@@ -31,7 +31,8 @@ struct PlanRequest {
     std::string modelPath; // for learnt solvers
     bool transitionCells = true;
     // planCoverage also plans with stripes on a shared lattice where wide cells meet at an
-    // obstacle's corner (DecompositionOptions::stripeLattice), keeping the better path.
+    // obstacle's corner (DecompositionOptions::stripeLattice) and, on small floors, with
+    // headlands along the walls (DecompositionOptions::headland), keeping the better path.
     bool stripeLattice = true;
     // The path planned before the last edits (world frame; empty: none): the query's
     // orderHint follows it. The editor gives it to live replanning's quick draft, which then
@@ -71,11 +72,12 @@ struct PlanResult {
 // Validates (throws InputError) and builds decomposition and graph for one sweep angle
 // (graph/PreparedPlan.h); with classicStages also PreparedPlan::classic.
 // floorCache (optional): what earlier preparations of the same free space built
-// (DecompositionOptions::floorCache). stripeLattice: DecompositionOptions::stripeLattice.
+// (DecompositionOptions::floorCache). stripeLattice, headland: DecompositionOptions'.
 PreparedPlan preparePlan(const Plan& plan, const RobotProfile& robot, double stripeAngleDeg,
                          bool transitionCells = true, bool classicStages = false,
                          const std::shared_ptr<FloorCache>& floorCache = nullptr,
-                         LatticeMode stripeLattice = LatticeMode::Own);
+                         LatticeMode stripeLattice = LatticeMode::Own,
+                         Headland headland = Headland::None);
 
 // The stripe layout of a request's first plan (PreparedPlans): the dense lattice where it
 // saves a quarter of the stripes (LatticeMode::Auto) for the solvers that plan any corner

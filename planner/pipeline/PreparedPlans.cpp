@@ -8,8 +8,10 @@
 namespace fc {
 
 PreparedPlans::PreparedPlans(const Plan& plan, const RobotProfile& robot, bool transitionCells,
-                             std::shared_ptr<FloorCache> floorCache, LatticeMode stripeLattice)
+                             std::shared_ptr<FloorCache> floorCache, LatticeMode stripeLattice,
+                             Headland headland)
     : plan_(plan), robot_(robot), transitionCells_(transitionCells), stripeLattice_(stripeLattice),
+      headland_(headland),
       floorCache_(floorCache ? std::move(floorCache) : std::make_shared<FloorCache>()) {}
 
 double PreparedPlans::roundedAngle(double angleDeg) {
@@ -53,7 +55,7 @@ std::shared_ptr<const PreparedPlan> PreparedPlans::shared(double angleDeg,
         try {
             promise.set_value(std::make_shared<const PreparedPlan>(
                 preparePlan(plan_, robot_, angle, transitionCells_, classicStages, floorCache_,
-                            stripeLattice_)));
+                            stripeLattice_, headland_)));
         } catch (...) {
             promise.set_exception(std::current_exception());
         }

@@ -21,15 +21,17 @@ public:
     // replanning) while the document moves on. floorCache: what plans of the same floor
     // prepared before built from its free space (the editor passes one cache to the plans
     // of every edit); null: a cache of its own, shared by its angles.
-    // stripeLattice: DecompositionOptions::stripeLattice for every angle.
+    // stripeLattice, headland: DecompositionOptions' for every angle.
     PreparedPlans(const Plan& plan, const RobotProfile& robot, bool transitionCells,
                   std::shared_ptr<FloorCache> floorCache = nullptr,
-                  LatticeMode stripeLattice = LatticeMode::Auto);
+                  LatticeMode stripeLattice = LatticeMode::Auto,
+                  Headland headland = Headland::None);
 
     const Plan& plan() const { return plan_; }
     const RobotProfile& robot() const { return robot_; }
     bool transitionCells() const { return transitionCells_; }
     LatticeMode stripeLattice() const { return stripeLattice_; }
+    Headland headland() const { return headland_; }
     const std::shared_ptr<FloorCache>& floorCache() const { return floorCache_; }
 
     // A copy of the plan prepared at the angle rounded to 1e-9 degrees (so that 7.15 + 90
@@ -52,6 +54,7 @@ private:
     RobotProfile robot_;
     bool transitionCells_;
     LatticeMode stripeLattice_;
+    Headland headland_;
     std::shared_ptr<FloorCache> floorCache_;
     mutable std::mutex mutex_;
     mutable std::map<std::tuple<long long, bool>, Built> built_;

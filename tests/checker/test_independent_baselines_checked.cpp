@@ -1,7 +1,7 @@
 // The independent baselines (baselines/IndependentBaselines.h: adjacency-ga, reeb-cpp)
-// checked by the independent checker: their paths keep L/2 from every wall and sweep at least 99% of what the disc can sweep, on
-// the sample plans and on generated floors at odd rotations (slanted walls, stars with
-// obstacles, doors, UTM-sized offsets).
+// checked by the independent checker: their paths keep L/2 from every wall and sweep at least 99%
+// of what the disc can sweep, on the sample plans and on generated floors at odd rotations (slanted
+// walls, stars with obstacles, doors, UTM-sized offsets).
 #include "PlanGenerator.h"
 #include "PropertyCheck.h"
 #include "formats/PlanIO.h"

@@ -413,3 +413,67 @@ TEST(StripeLattice, DenseDecompositionJoinsTheCellsAcrossASliver) {
     EXPECT_GT(swept, 0);
     EXPECT_TRUE(d.unreachable.empty());
 }
+
+// Headlands (DecompositionOptions::headland): along the walls the stripes end at, a band
+// one W deep becomes cells of their own whose single pass runs W/2 from the wall; the
+// stripes of the rest end W/2 inside the band. The bands belong to the room they border.
+TEST(Headland, BandsAlongTheWallsTheStripesEndAt) {
+    Plan p;
+    p.boundary = rectangle(0, 0, 10, 6);
+    p.rooms = {{"Hall", rectangle(0, 0, 10, 6)}};
+    DecompositionOptions o;
+    o.stripeAngleDeg = 90.0; // stripes along y in the world, ending at y = 0 and y = 6
+    o.headland = Headland::Both;
+    const Decomposition d = decompose(p, o);
+    ASSERT_TRUE(d.headland);
+    EXPECT_NEAR(totalArea(d), 60.0, 1e-9);
+    ASSERT_EQ(d.roomNames.size(), 1u);
+    int bandCells = 0;
+    double lowestInnerEnd = INFINITY;
+    for (const Cell& c : d.cells) {
+        EXPECT_EQ(c.room, 0);
+        const double height = c.ceilingAt(0.5 * (c.x0 + c.x1)) - c.floorAt(0.5 * (c.x0 + c.x1));
+        for (const Interval& span : c.stripeSpans) {
+            ASSERT_FALSE(span.empty());
+            if (height <= 1.0 + 1e-9) { // a band: one pass W/2 from its wall
+                EXPECT_NEAR(span.hi - span.lo, 0.0, 1e-9);
+                EXPECT_NEAR(std::min(std::abs(span.lo - 0.5), std::abs(span.lo - 5.5)), 0.0, 1e-9);
+            } else {
+                lowestInnerEnd = std::min(lowestInnerEnd, span.lo);
+            }
+        }
+        bandCells += height <= 1.0 + 1e-9 ? 1 : 0;
+    }
+    EXPECT_GE(bandCells, 2);
+    EXPECT_NEAR(lowestInnerEnd, 1.5, 1e-9);
+    // Without the option nothing changes.
+    o.headland = Headland::None;
+    const Decomposition plain = decompose(p, o);
+    EXPECT_FALSE(plain.headland);
+    for (const Cell& c : plain.cells)
+        for (const Interval& span : c.stripeSpans)
+            EXPECT_NEAR(span.lo, 0.5, 1e-9);
+}
+
+// No band where the room is too shallow for one beside a sweep (a 2.5 W corridor across
+// the stripes), nor where a slab narrows to nothing (a wedge: its band would end in a point
+// the robot cannot reach); the cells are the plain ones.
+TEST(Headland, NoBandInShallowRoomsOrWedges) {
+    DecompositionOptions o;
+    o.stripeAngleDeg = 0.0; // stripes along world x
+    o.headland = Headland::Both;
+    Plan corridor;
+    corridor.boundary = rectangle(0, 0, 20, 2.5); // stripes across its 2.5 m
+    o.stripeAngleDeg = 90.0;
+    const Decomposition c = decompose(corridor, o);
+    EXPECT_FALSE(c.headland);
+    EXPECT_NEAR(totalArea(c), 50.0, 1e-9);
+    Plan wedge;
+    wedge.boundary = {{0, 0}, {10, 0}, {0, 10}};
+    o.stripeAngleDeg = 0.0;
+    const Decomposition d = decompose(wedge, o);
+    EXPECT_FALSE(d.headland);
+    EXPECT_NEAR(totalArea(d), 50.0, 1e-9);
+    o.headland = Headland::None;
+    EXPECT_EQ(decompose(wedge, o).cells.size(), d.cells.size());
+}

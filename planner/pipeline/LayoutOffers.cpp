@@ -1,0 +1,172 @@
+#include "pipeline/LayoutOffers.h"
+
+#include "pipeline/PerRoomSweep.h"
+
+#include <algorithm>
+#include <cmath>
+#include <future>
+#include <map>
+#include <memory>
+#include <set>
+
+namespace fc::detail {
+namespace {
+
+// Planning a second time is what the per-room search affords on floors it searches; a
+// 1,000-room floor would take half as long again (8 s to 13 s).
+constexpr size_t kLatticeMaxRooms = 60;
+// Headlands are planned on floors of at most this many cells at every angle of the
+// variant: they pay where one tour's way back is a large share of it (a hall), and would
+// triple the planning time of an office floor (0.66 -> 2.0 s), where they did not shorten
+// the path.
+constexpr int kHeadlandMaxCells = 40;
+// Headland layouts (three sides' choices, two layouts, two angles) are screened with the
+// greedy solver; this many of the best are planned with the requested one.
+constexpr size_t kHeadlandFinalists = 2;
+
+struct Layout {
+    LatticeMode mode;
+    Headland headland;
+};
+
+struct Variant {
+    const PreparedPlans* layout;
+    std::map<std::string, double> angles;
+};
+
+PlanResult planVariant(const PlanRequest& request, const Variant& variant,
+                       const SolveControl& control, bool touchUps) {
+    PlanResult again;
+    const auto& angles = variant.angles;
+    const bool single = std::all_of(angles.begin(), angles.end(), [&](const auto& entry) {
+        return entry.second == angles.begin()->second;
+    });
+    if (single && !request.sweep.perRoom) {
+        again = planOneAngle(request, angles.begin()->second, control, variant.layout);
+    } else {
+        std::map<std::string, double> all = familyAngles(request.plan, request.sweep);
+        for (const auto& [room, angle] : angles)
+            all[room] = angle;
+        again = planWithRoomAngles(request, all, control, *variant.layout);
+    }
+    if (touchUps)
+        applyTouchUps(request, again);
+    return again;
+}
+
+// Waits for every one of `pending`; keeps what planned, drops offers that cannot be
+// planned, rethrows anything else (cancellation) after all have finished.
+template <typename T> std::vector<T> collect(std::vector<std::future<T>>& pending) {
+    std::vector<T> done;
+    std::exception_ptr failure;
+    for (std::future<T>& plan : pending) {
+        try {
+            done.push_back(plan.get());
+        } catch (const InputError&) {
+            // An offer: a variant that cannot be planned is not one.
+        } catch (const SolverError&) {
+            // Nor one beyond the solver's limits (exact: a headland's cells over its limit).
+        } catch (...) {
+            if (!failure)
+                failure = std::current_exception(); // cancelled
+        }
+    }
+    if (failure)
+        std::rethrow_exception(failure);
+    return done;
+}
+
+} // namespace
+
+// Where wide cells meet at an obstacle's corner, stripes on one lattice save a stripe per
+// cell (12 m on simple-diamond), or cost turns where lattice lines graze the corner: only
+// the path tells. Plans again on the lattice at the angles of `first`, and (where the sweep
+// is the planner's choice) with the free rooms turned by 90 degrees, as the per-room search
+// did; returns the best of those, if any. Only where some cell would move its stripes, only
+// at angles `prepared` built already and on floors of at most 60 rooms; not for solvers bound
+// to their own graph.
+std::vector<PlanResult> planLayoutOffers(const PlanRequest& request, const PlanResult& first,
+                                         const SolveControl& control,
+                                         const PreparedPlans& prepared) {
+    if (!request.stripeLattice || request.plan.rooms.size() > kLatticeMaxRooms ||
+        !plansAnyGraph(request.solver))
+        return {};
+    const std::map<std::string, double> chosen = roomAnglesOf(first, request.plan);
+    std::vector<std::map<std::string, double>> variants{chosen};
+    if (request.sweep.perRoom || request.sweep.automatic) {
+        std::map<std::string, double> turned = chosen;
+        for (auto& [room, angle] : turned)
+            if (request.sweep.automatic || request.sweep.roomAngles.count(room) == 0)
+                angle = std::fmod(angle + 90.0, 180.0);
+        variants.push_back(turned);
+    }
+    // Each layout's preparations are shared by its variants, which are planned at once.
+    std::vector<std::unique_ptr<PreparedPlans>> layouts;
+    std::vector<std::future<PlanResult>> pending;
+    std::vector<Variant> headlands; // screened first
+    SolveControl quiet;
+    quiet.cancelled = control.cancelled;
+    // Headlands (DecompositionOptions::headland) on the first plan's layout and on the
+    // lattice, at the chosen angles: where a tour must come back (its end beside its start),
+    // returning along a wall sweeps that wall's band instead of crossing swept floor.
+    std::vector<Layout> offers{{LatticeMode::AtCorners, Headland::None},
+                               {LatticeMode::Dense, Headland::None}};
+    bool cornerLattice = false; // whether the corner lattice moves stripes at some angle
+    for (const auto& angles : variants)
+        for (const auto& entry : angles)
+            cornerLattice =
+                cornerLattice ||
+                (prepared.asked(entry.second, false) &&
+                 prepared.shared(entry.second, false)->decomposition.stripeLatticeAvailable);
+    for (const Headland sides : {Headland::Both, Headland::Floors, Headland::Ceilings})
+        offers.push_back(
+            {cornerLattice ? LatticeMode::AtCorners : prepared.stripeLattice(), sides});
+    for (const Layout layout : offers) {
+        const bool headland = layout.headland != Headland::None;
+        const LatticeMode mode = layout.mode;
+        layouts.push_back(
+            std::make_unique<PreparedPlans>(request.plan, request.robot, request.transitionCells,
+                                            prepared.floorCache(), mode, layout.headland));
+        const PreparedPlans& lattice = *layouts.back();
+        // The dense lattice follows the chosen sweep: turned, it never won on the maps it
+        // is for (faculty 8,127 s against 7,912 s; lab 1,299 s against 1,167 s).
+        const size_t tried = mode == LatticeMode::Dense ? 1 : variants.size();
+        for (size_t v = 0; v < tried; ++v) {
+            const std::map<std::string, double>& angles = variants[v];
+            std::set<double> distinct;
+            for (const auto& entry : angles)
+                distinct.insert(PreparedPlans::roundedAngle(entry.second));
+            bool known = true, moves = false, small = true;
+            for (double angle : distinct) {
+                known = known && prepared.asked(angle, false);
+                if (!known)
+                    break;
+                const Decomposition& plain = prepared.shared(angle, false)->decomposition;
+                small = small && static_cast<int>(plain.cells.size()) <= kHeadlandMaxCells;
+                if (headland)
+                    moves = true;
+                else
+                    moves = moves ||
+                            (mode == LatticeMode::Dense
+                                 ? plain.denseLatticeAvailable && plain.layout != LatticeMode::Dense
+                                 : plain.stripeLatticeAvailable);
+            }
+            if (!known || !moves || (headland && !small))
+                continue;
+            if (headland)
+                headlands.push_back({&lattice, angles});
+            else
+                pending.push_back(std::async(std::launch::async,
+                                             [&request, quiet, v = Variant{&lattice, angles}]() {
+                                                 return planVariant(request, v, quiet, true);
+                                             }));
+        }
+    }
+    // The headland layouts, planned with the requested solver.
+    for (const Variant& v : headlands)
+        pending.push_back(std::async(std::launch::async, [&request, quiet, v]() {
+            return planVariant(request, v, quiet, true);
+        }));
+    return collect(pending);
+}
+} // namespace fc::detail
