@@ -129,7 +129,8 @@ std::string percent(double ratio) {
     if (!std::isfinite(ratio))
         return "n/a";
     char text[32];
-    std::snprintf(text, sizeof text, "%.1f%%", 100.0 * ratio);
+    // A path as long as the ideal has an extra of a few micrometres either way: not "-0.0%".
+    std::snprintf(text, sizeof text, "%.1f%%", std::abs(ratio) < 5e-4 ? 0.0 : 100.0 * ratio);
     return text;
 }
 
@@ -153,7 +154,8 @@ void printPlan(const PlanRun& run) {
                 "planning s |\n|---|---:|---:|---:|---:|---:|---:|---:|\n");
     for (const auto& [solver, m] : run.answered)
         std::printf("| %s | %.1f | %.1f | %.1f | %d | %.2f%% | %.0f | %.3f |\n", solver.c_str(),
-                    m.length, m.ideal, m.extra, m.turns, 100.0 * m.coverage, m.time, m.seconds);
+                    m.length, m.ideal, std::abs(m.extra) < 0.05 ? 0.0 : m.extra, m.turns,
+                    100.0 * m.coverage, m.time, m.seconds);
     for (const auto& [solver, why] : run.refused)
         std::printf("| %s | refused: %s | | | | | | |\n", solver.c_str(), why.c_str());
     std::printf("\n");
@@ -279,8 +281,9 @@ void printTargetPlans(const std::vector<PlanRun>& runs) {
             const bool met = r.extraRatio <= kPaperExtraRatio.high;
             std::printf("- `%s`, extra distance vs `%s`: %.2f m / %.2f m = %s: %s the required "
                         "<= 43%%",
-                        plan, r.baseline.c_str(), ours->extra, base->extra,
-                        percent(r.extraRatio).c_str(), met ? "meets" : "**does not meet**");
+                        plan, r.baseline.c_str(), std::abs(ours->extra) < 5e-3 ? 0.0 : ours->extra,
+                        base->extra, percent(r.extraRatio).c_str(),
+                        met ? "meets" : "**does not meet**");
             if (!met)
                 std::printf(" (ours would need at most %.2f m, %.2f m less)",
                             kPaperExtraRatio.high * base->extra,

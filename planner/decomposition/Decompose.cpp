@@ -568,8 +568,10 @@ Decomposition decompose(const Plan& plan, const DecompositionOptions& options) {
     detail::planStripeSpans(out);
     // A headland's cells belong to the room they border (splitHeadlands' labels).
     for (Cell& cell : out.cells)
-        if (cell.room >= roomCount)
+        if (cell.room >= roomCount) {
             cell.room -= roomCount;
+            cell.headland = true;
+        }
     return out;
 }
 

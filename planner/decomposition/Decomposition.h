@@ -39,6 +39,9 @@ struct Cell {
     // sliver between two slices of a traced map; LatticeMode::Dense). Not required, and
     // its neighbours are joined across it.
     bool sweptByNeighbours = false;
+    // Part of a headland band (DecompositionOptions::headland): the step to the next piece
+    // of its band sweeps the band, as a step between stripes does.
+    bool headland = false;
 
     double width() const { return x1 - x0; }
     bool reachable() const;           // at least one stripe with a clear span

@@ -133,7 +133,12 @@ CoveragePath buildCoveragePath(const Decomposition& dec, const CornerGraph& grap
         Polyline piece = e.geometry;
         if (reversed)
             piece.assign(e.geometry.rbegin(), e.geometry.rend());
-        const std::vector<int> index = append(local.path, piece, kindOf(e.kind));
+        // Between two pieces of a headland band the step sweeps the band.
+        const bool alongBand = e.kind == EdgeKind::Inter &&
+                               dec.cells[graph.nodes[e.u].cell].headland &&
+                               dec.cells[graph.nodes[e.v].cell].headland;
+        const std::vector<int> index =
+            append(local.path, piece, alongBand ? SegmentKind::Stripe : kindOf(e.kind));
         const int last = static_cast<int>(piece.size()) - 1;
         for (const Excursion& x : e.excursions) {
             const int b = reversed ? last - x.end : x.begin;

@@ -205,3 +205,22 @@ TEST(Pipeline, CurvedWallsOfManySegments) {
         EXPECT_GE(res.metrics.coverage, 0.99) << angle;
     }
 }
+
+// Issue 13, headlands: a closed tour of an empty hall sweeps its stripes out and comes back
+// along the band by the far wall, so it is as long as the ideal; the band's pieces are
+// swept (kind stripe), and no transit is longer than a step between stripes.
+TEST(Pipeline, AHallsClosedTourComesBackAlongAHeadland) {
+    Plan p;
+    p.boundary = {{0, 0}, {14, 0}, {14, 10.3}, {0, 10.3}};
+    const PlanResult res = planCoverage(requestFor(p, "heuristic"));
+    expectCollisionFree(res, "hall");
+    EXPECT_GE(res.metrics.coverage, 0.999);
+    EXPECT_LE(res.metrics.length, 1.01 * res.metrics.ideal);
+    const CoveragePath& path = res.path;
+    ASSERT_FALSE(path.empty());
+    EXPECT_LT(distance(path.points.front(), path.points.back()), 1e-6); // back at the start
+    for (size_t i = 0; i + 1 < path.points.size(); ++i)
+        if (path.kinds[i] == SegmentKind::Transit) {
+            EXPECT_LE(distance(path.points[i], path.points[i + 1]), 1.0 + 1e-6) << i;
+        }
+}
