@@ -20,9 +20,6 @@ constexpr size_t kLatticeMaxRooms = 60;
 // triple the planning time of an office floor (0.66 -> 2.0 s), where they did not shorten
 // the path.
 constexpr int kHeadlandMaxCells = 40;
-// Headland layouts (three sides' choices, two layouts, two angles) are screened with the
-// greedy solver; this many of the best are planned with the requested one.
-constexpr size_t kHeadlandFinalists = 2;
 
 struct Layout {
     LatticeMode mode;
@@ -59,7 +56,7 @@ PlanResult planVariant(const PlanRequest& request, const Variant& variant,
 template <typename T> std::vector<T> collect(std::vector<std::future<T>>& pending) {
     std::vector<T> done;
     std::exception_ptr failure;
-    for (std::future<T>& plan : pending) {
+    for (std::future<PlanResult>& plan : pending) {
         try {
             done.push_back(plan.get());
         } catch (const InputError&) {
@@ -103,7 +100,6 @@ std::vector<PlanResult> planLayoutOffers(const PlanRequest& request, const PlanR
     // Each layout's preparations are shared by its variants, which are planned at once.
     std::vector<std::unique_ptr<PreparedPlans>> layouts;
     std::vector<std::future<PlanResult>> pending;
-    std::vector<Variant> headlands; // screened first
     SolveControl quiet;
     quiet.cancelled = control.cancelled;
     // Headlands (DecompositionOptions::headland) on the first plan's layout and on the
@@ -155,20 +151,12 @@ std::vector<PlanResult> planLayoutOffers(const PlanRequest& request, const PlanR
             // (36-61 cells on room-obstacle and room-notches) ran it into that limit.
             if (!known || !moves || (headland && (!small || request.solver == "exact")))
                 continue;
-            if (headland)
-                headlands.push_back({&lattice, angles});
-            else
-                pending.push_back(std::async(std::launch::async,
-                                             [&request, quiet, v = Variant{&lattice, angles}]() {
-                                                 return planVariant(request, v, quiet, true);
-                                             }));
+            pending.push_back(
+                std::async(std::launch::async, [&request, quiet, v = Variant{&lattice, angles}]() {
+                    return planVariant(request, v, quiet, true);
+                }));
         }
     }
-    // The headland layouts, planned with the requested solver.
-    for (const Variant& v : headlands)
-        pending.push_back(std::async(std::launch::async, [&request, quiet, v]() {
-            return planVariant(request, v, quiet, true);
-        }));
     return collect(pending);
 }
 } // namespace fc::detail
