@@ -25,7 +25,10 @@ commands:
                 [--turn-time S] [--angle per-room|auto|DEG] [--rooms A,B] [--start X,Y] [--end X,Y]
                 [--solver exact|heuristic|greedy|dqn|dqn-search|reeb-cpp|adjacency-ga|
                 adjacency-ga-centres] [--model FILE]
-                [--seed N] [--out FILE] [--strict]
+                [--seed N] [--out FILE] [--strict] [--no-wall-loop]
+                (--no-wall-loop: never drive once along the outer walls first; by default
+                that is planned beside the stripes where it is estimated shorter, on ragged
+                traced walls, and kept when it is faster)
                 (--robot-diameter L, default 0.6: the robot is a disc; its centre keeps L/2
                 from walls, so passages at least L wide are driven and swept; a --start
                 or --end inside an obstacle or outside the floor is refused, one closer
@@ -92,11 +95,12 @@ Exit codes: 0 success, 2 bad input (one line on stderr), 3 coverage loss with --
 } // namespace
 
 const std::vector<std::string> kPlanOptions{
-    "--width",  "--robot-diameter", "--cleaning-diameter",
-    "--speed",  "--turn-time",      "--angle",
-    "--rooms",  "--start",          "--end",
-    "--solver", "--model",          "--seed",
-    "--out",    "--strict",         "--no-transition-cells"};
+    "--width",       "--robot-diameter", "--cleaning-diameter",
+    "--speed",       "--turn-time",      "--angle",
+    "--rooms",       "--start",          "--end",
+    "--solver",      "--model",          "--seed",
+    "--out",         "--strict",         "--no-transition-cells",
+    "--no-wall-loop"};
 
 // A request from the project file's settings, overridden by command-line options.
 PlanRequest requestFrom(const Project& project, const Arguments& args) {
@@ -142,6 +146,7 @@ PlanRequest requestFrom(const Project& project, const Arguments& args) {
     if (auto s = args.integer("--seed"))
         r.seed = static_cast<std::uint64_t>(*s);
     r.transitionCells = !args.has("--no-transition-cells");
+    r.wallLoop = !args.has("--no-wall-loop");
     r.robot.validate();
     return r;
 }
@@ -353,8 +358,9 @@ int run(int argc, char** argv) {
     const std::string command = argv[1];
     try {
         const Arguments args(argc, argv, 2,
-                             {"--json", "--no-transition-cells", "--help", "--resume", "--strict",
-                              "--no-cleaning", "--repair", "--from-scratch"});
+                             {"--json", "--no-transition-cells", "--no-wall-loop", "--help",
+                              "--resume", "--strict", "--no-cleaning", "--repair",
+                              "--from-scratch"});
         if (args.has("--help")) {
             std::cout << kUsage;
             return 0;

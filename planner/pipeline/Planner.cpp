@@ -3,12 +3,14 @@
 #include "graph/ComponentBridges.h"
 #include "model/Validation.h"
 #include "path/CoverageRepair.h"
+#include "pipeline/EdgePass.h"
 #include "pipeline/LayoutOffers.h"
 #include "pipeline/PathChoice.h"
 #include "pipeline/PerRoomSweep.h"
 #include "pipeline/PreparedPlans.h"
 
 #include <algorithm>
+#include <atomic>
 #include <chrono>
 #include <cmath>
 #include <future>
@@ -639,6 +641,27 @@ LatticeMode firstLayoutFor(const PlanRequest& request) {
 PlanResult planCoverage(const PlanRequest& request, const SolveControl& control,
                         const PreparedPlans* prepared) {
     const auto t0 = std::chrono::steady_clock::now();
+    // On ragged walls a loop along them first is drafted on another thread while the first
+    // plan is made (pipeline/EdgePass.h); it is stopped as soon as its estimate shows it
+    // cannot pay, and always before this returns.
+    std::promise<double> loopEstimate;
+    std::future<double> estimated = loopEstimate.get_future();
+    std::atomic<bool> stopLoop{false};
+    std::future<detail::WallLoopDraft> loop;
+    if (detail::wantsWallLoop(request)) {
+        SolveControl loopControl;
+        loopControl.cancelled = [&stopLoop, cancelled = control.cancelled] {
+            return stopLoop.load() || (cancelled && cancelled());
+        };
+        loop = std::async(std::launch::async, [&request, loopControl, &loopEstimate] {
+            return detail::draftWallLoop(request, loopControl, loopEstimate);
+        });
+    }
+    struct StopOnExit {
+        std::atomic<bool>& stop;
+        ~StopOnExit() { stop = true; } // before `loop` waits for the draft
+    } stopOnExit{stopLoop};
+
     std::optional<PreparedPlans> own; // shared by the first plan and the lattice's check
     if (!prepared)
         prepared = &own.emplace(request.plan, request.robot, request.transitionCells, nullptr,
@@ -651,15 +674,29 @@ PlanResult planCoverage(const PlanRequest& request, const SolveControl& control,
     // that leaves wedges along slanted walls may be the best once they are swept); a plan of
     // one angle gets them here.
     applyTouchUps(request, result);
+    std::vector<PlanResult> plans;
     try {
-        std::vector<PlanResult> plans =
-            detail::planLayoutOffers(request, result, control, *prepared);
-        if (!plans.empty()) {
-            plans.insert(plans.begin(), std::move(result)); // the first of equals
-            result = std::move(plans[choosePlan(plans)]);
-        }
+        plans = detail::planLayoutOffers(request, result, control, *prepared);
     } catch (const InputError&) {
         // The lattice is an offer: where it cannot be planned, the first plan stands.
+    }
+    if (loop.valid()) {
+        if (estimated.get() < detail::kEdgeEstimateGain * result.metrics.length) {
+            try {
+                plans.push_back(detail::wallLoopPlan(request, result, loop.get()));
+            } catch (const InputError&) {
+                // An offer too: a floor whose pieces cannot be joined keeps the first plan.
+            } catch (const SolverError&) {
+                if (control.cancelled && control.cancelled())
+                    throw;
+            }
+        } else {
+            stopLoop = true;
+        }
+    }
+    if (!plans.empty()) {
+        plans.insert(plans.begin(), std::move(result)); // the first of equals
+        result = std::move(plans[choosePlan(plans)]);
     }
     result.metrics.seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();

@@ -34,6 +34,9 @@ struct PlanRequest {
     // obstacle's corner (DecompositionOptions::stripeLattice) and, on small floors, with
     // headlands along the walls (DecompositionOptions::headland), keeping the better path.
     bool stripeLattice = true;
+    // planCoverage also offers a loop along the outer walls first, then stripes over what it
+    // left (pipeline/EdgePass.h), where that is estimated shorter: ragged traced walls.
+    bool wallLoop = true;
     // The path planned before the last edits (world frame; empty: none): the query's
     // orderHint follows it. The editor gives it to live replanning's quick draft, which then
     // keeps the last plan's order where that is cheaper than greedy's.

@@ -42,6 +42,7 @@ fc::Plan hallWithBox(std::uint64_t seed) {
 // Returns the plans' metrics (with, without).
 std::pair<fc::Metrics, fc::Metrics> checkOffer(const fc::Plan& plan, const std::string& name) {
     fc::PlanRequest request = defaultRequest(plan);
+    request.wallLoop = false; // the lattice alone (the wall loop: maps.WallLoopMaps.*)
     const Outcome outcome = planAndCheck(request);
     request.stripeLattice = false;
     const Outcome even = planAndCheck(request);

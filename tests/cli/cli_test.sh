@@ -78,6 +78,7 @@ fi
 check "rooms subset" cli plan "$plans/office.geojson" --rooms S01,Corridor,N03 --start 1,1 --end 29,19
 check "metrics rooms subset" metrics_ok
 check "auto angle" "$cli" plan "$plans/room-notches.geojson" --angle auto
+check "no wall loop" "$cli" plan "$plans/simple.geojson" --no-wall-loop
 check "slanted sweep" cli plan "$plans/simple.geojson" --angle 30
 check "metrics slanted" metrics_ok
 a=$("$cli" plan "$plans/office.geojson" --seed 7 --out "$work/a.csv" | python3 -c "import json,sys; d=json.load(sys.stdin); print(d['graph_cost'])")

@@ -1,0 +1,218 @@
+#include "decomposition/WallFollowing.h"
+
+// Boost.Geometry's envelope code trips GCC 12's -Wmaybe-uninitialized (a false positive
+// inside the library); silence it for this file only.
+#pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
+
+#include <boost/geometry.hpp>
+#include <boost/geometry/geometries/linestring.hpp>
+#include <boost/geometry/geometries/multi_polygon.hpp>
+#include <boost/geometry/geometries/point_xy.hpp>
+#include <boost/geometry/geometries/polygon.hpp>
+#include <cmath>
+#include <limits>
+
+namespace fc {
+namespace {
+
+namespace bg = boost::geometry;
+using BPoint = bg::model::d2::point_xy<double>;
+using BPolygon = bg::model::polygon<BPoint>;
+using BMulti = bg::model::multi_polygon<BPolygon>;
+using BLine = bg::model::linestring<BPoint>;
+
+// Points per full circle of the round joins: a chord of a 0.3 m arc then cuts it by 1.4 mm.
+constexpr int kCirclePoints = 32;
+// Added to the clearance so that those chords keep it (see the header).
+constexpr double kChordMargin = 0.005;
+// The band the loop's head sweeps is taken this much narrower than the head, so that what
+// stripes must cover overlaps it rather than leaving a hairline between.
+constexpr double kBandOverlap = 0.02;
+
+// Coordinates relative to `origin`: a plan in UTM coordinates loses its digits otherwise.
+void appendRing(const Ring& ring, Vec2 origin, bg::model::ring<BPoint>& out) {
+    for (const Vec2& p : ring)
+        out.push_back(BPoint(p.x - origin.x, p.y - origin.y));
+    if (!ring.empty())
+        out.push_back(out.front());
+}
+
+Ring toRing(const bg::model::ring<BPoint>& ring, Vec2 origin) {
+    Ring out;
+    for (size_t i = 0; i + 1 < ring.size(); ++i)
+        out.push_back({ring[i].x() + origin.x, ring[i].y() + origin.y});
+    return out;
+}
+
+template <typename Geometry> BMulti buffered(const Geometry& geometry, double distance) {
+    BMulti out;
+    bg::buffer(geometry, out, bg::strategy::buffer::distance_symmetric<double>(distance),
+               bg::strategy::buffer::side_straight(),
+               bg::strategy::buffer::join_round(kCirclePoints),
+               bg::strategy::buffer::end_round(kCirclePoints),
+               bg::strategy::buffer::point_circle(kCirclePoints));
+    return out;
+}
+
+// A piece's outline is mostly the band's edge, a line the robot need not follow: simplified
+// (its arcs and the loop's wiggles would each start cells), then cut back to the free floor.
+BMulti simplified(const BMulti& pieces, const BPolygon& free, double tolerance) {
+    if (tolerance <= 0.0)
+        return pieces;
+    BMulti out;
+    for (const BPolygon& piece : pieces) {
+        // Grown first, so that the simplified outline never cuts into the piece: floor
+        // between the band and the stripes would go unswept.
+        BMulti grown;
+        bg::buffer(piece, grown, bg::strategy::buffer::distance_symmetric<double>(tolerance),
+                   bg::strategy::buffer::side_straight(), bg::strategy::buffer::join_miter(),
+                   bg::strategy::buffer::end_flat(), bg::strategy::buffer::point_square());
+        for (const BPolygon& part : grown) {
+            BPolygon simple;
+            bg::simplify(part, simple, tolerance);
+            bg::correct(simple);
+            BMulti inFree;
+            bg::intersection(simple, free, inFree);
+            for (BPolygon& kept : inFree)
+                out.push_back(std::move(kept));
+        }
+    }
+    return out;
+}
+
+// A piece with a waist narrower than the robot is several floors to it: split there (each
+// part grown back from where the robot centre may be, within the piece).
+BMulti robotParts(const BMulti& pieces, double clearance) {
+    BMulti out;
+    for (const BPolygon& piece : pieces) {
+        const BMulti centres = buffered(piece, -(clearance + kChordMargin));
+        if (centres.size() <= 1) {
+            out.push_back(piece);
+            continue;
+        }
+        for (const BPolygon& centre : centres) {
+            BMulti part;
+            bg::intersection(buffered(centre, clearance + 2 * kChordMargin), piece, part);
+            for (BPolygon& kept : part)
+                out.push_back(std::move(kept));
+        }
+    }
+    return out;
+}
+
+void keepPieces(const BMulti& pieces, int room, Vec2 origin, double minPieceArea, WallLoop& out) {
+    for (const BPolygon& piece : pieces) {
+        const double area = bg::area(piece);
+        if (area < minPieceArea) {
+            out.droppedArea += area;
+            continue;
+        }
+        out.rest.push_back(toRing(piece.outer(), origin));
+        out.restHoles.emplace_back();
+        for (const auto& inner : piece.inners())
+            out.restHoles.back().push_back(toRing(inner, origin));
+        out.restRoom.push_back(room);
+        out.restArea += area;
+    }
+}
+
+} // namespace
+
+std::optional<WallLoop> wallLoop(const Plan& plan, double clearance, double headWidth,
+                                 std::optional<Vec2> near, double minPieceArea,
+                                 double simplifyTolerance) {
+    if (plan.boundary.size() < 3)
+        return std::nullopt;
+    const Vec2 origin = plan.boundary.front();
+    BPolygon free;
+    appendRing(plan.boundary, origin, free.outer());
+    for (const Ring& obstacle : plan.obstacles) {
+        free.inners().emplace_back();
+        appendRing(obstacle, origin, free.inners().back());
+    }
+    bg::correct(free);
+    const BMulti eroded = buffered(free, -(clearance + kChordMargin));
+    // The part holding `near` (else nearest it), or the largest.
+    const BPolygon* part = nullptr;
+    double best = std::numeric_limits<double>::infinity();
+    for (const BPolygon& candidate : eroded) {
+        const double score =
+            near ? bg::distance(BPoint(near->x - origin.x, near->y - origin.y), candidate)
+                 : -bg::area(candidate);
+        if (score < best) {
+            best = score;
+            part = &candidate;
+        }
+    }
+    if (!part || part->outer().size() < 4)
+        return std::nullopt;
+
+    WallLoop out;
+    const auto& outer = part->outer();
+    // It starts nearest `near`, or farthest from the part's centre (the same point at any
+    // rotation of the plan).
+    BPoint at;
+    if (near)
+        at = BPoint(near->x - origin.x, near->y - origin.y);
+    else
+        bg::centroid(*part, at);
+    size_t first = 0;
+    for (size_t i = 0; i + 1 < outer.size(); ++i) {
+        const double d = bg::comparable_distance(outer[i], at),
+                     f = bg::comparable_distance(outer[first], at);
+        if (near ? d < f : d > f)
+            first = i;
+    }
+    BLine line;
+    for (size_t k = 0; k + 1 < outer.size(); ++k)
+        line.push_back(outer[(first + k) % (outer.size() - 1)]);
+    line.push_back(line.front());
+    for (const BPoint& p : line)
+        out.loop.push_back({p.x() + origin.x, p.y() + origin.y});
+    out.length = bg::length(line);
+
+    const BMulti band = buffered(line, std::max(0.5 * headWidth - kBandOverlap, 0.0));
+    BMulti rest;
+    bg::difference(free, band, rest);
+    rest = simplified(rest, free, simplifyTolerance);
+    BMulti outside = rest;
+    for (size_t r = 0; r < plan.rooms.size(); ++r) {
+        BPolygon room;
+        appendRing(plan.rooms[r].outline, origin, room.outer());
+        bg::correct(room);
+        BMulti inRoom, left;
+        bg::intersection(rest, room, inRoom);
+        keepPieces(robotParts(inRoom, clearance), static_cast<int>(r), origin, minPieceArea, out);
+        bg::difference(outside, room, left);
+        outside = std::move(left);
+    }
+    keepPieces(robotParts(outside, clearance), -1, origin, minPieceArea, out);
+    return out;
+}
+
+std::optional<Vec2> clearPointNear(const Ring& outline, const std::vector<Ring>& holes,
+                                   double clearance, Vec2 near) {
+    if (outline.size() < 3)
+        return std::nullopt;
+    const Vec2 origin = outline.front();
+    BPolygon floor;
+    appendRing(outline, origin, floor.outer());
+    for (const Ring& hole : holes) {
+        floor.inners().emplace_back();
+        appendRing(hole, origin, floor.inners().back());
+    }
+    bg::correct(floor);
+    const BMulti inside = buffered(floor, -(clearance + 0.01));
+    const BPoint at(near.x - origin.x, near.y - origin.y);
+    std::optional<Vec2> best;
+    double nearest = std::numeric_limits<double>::infinity();
+    for (const BPolygon& part : inside)
+        for (const BPoint& p : part.outer())
+            if (bg::distance(p, at) < nearest) {
+                nearest = bg::distance(p, at);
+                best = Vec2{p.x() + origin.x, p.y() + origin.y};
+            }
+    return best;
+}
+
+} // namespace fc

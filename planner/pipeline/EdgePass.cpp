@@ -1,0 +1,226 @@
+#include "pipeline/EdgePass.h"
+
+#include "decomposition/WallFollowing.h"
+#include "geometry/Clearance.h"
+#include "model/Validation.h"
+#include "pipeline/LayoutOffers.h"
+#include "pipeline/PerRoomSweep.h"
+#include "pipeline/PreparedPlans.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <string>
+
+namespace fc::detail {
+namespace {
+
+// The floor's walls as the planner's clearance field sees them, in a frame at the plan's
+// first corner (UTM-sized coordinates keep their digits; 90 degrees: not turned).
+struct FloorField {
+    FloorField(const Plan& plan, double radius)
+        : frame(plan.boundary.front(), 90.0), field(ringsOf(plan, frame), radius) {}
+
+    static std::vector<Ring> ringsOf(const Plan& plan, const Frame& frame) {
+        std::vector<Ring> rings{frame.toLocal(plan.boundary)};
+        if (signedArea(rings.front()) < 0.0)
+            std::reverse(rings.front().begin(), rings.front().end());
+        for (const Ring& obstacle : plan.obstacles) {
+            rings.push_back(frame.toLocal(obstacle));
+            if (signedArea(rings.back()) > 0.0)
+                std::reverse(rings.back().begin(), rings.back().end());
+        }
+        return rings;
+    }
+
+    Frame frame;
+    ClearanceField field;
+};
+
+// Appends a collision-free transit from the path's last point to `to` (nothing when there).
+void appendTransit(const FloorField& floor, CoveragePath& path, Vec2 to) {
+    const Vec2 from = path.points.back();
+    if (norm(to - from) < 1e-9)
+        return;
+    const Polyline local = floor.field.findPath(floor.frame.toLocal(from), floor.frame.toLocal(to));
+    if (local.size() < 2)
+        throw InputError("the wall loop's pieces cannot be joined without collision");
+    const Polyline world = floor.frame.toWorld(local);
+    for (size_t i = 1; i < world.size(); ++i) {
+        path.points.push_back(i + 1 == world.size() ? to : world[i]);
+        path.kinds.push_back(SegmentKind::Transit);
+    }
+}
+
+void append(CoveragePath& path, const CoveragePath& more) {
+    for (size_t i = 1; i < more.points.size(); ++i) {
+        path.points.push_back(more.points[i]);
+        path.kinds.push_back(more.kinds[i - 1]);
+    }
+}
+
+double averageWallPiece(const Plan& plan) {
+    double length = 0.0;
+    size_t pieces = 0;
+    auto add = [&](const Ring& ring) {
+        for (size_t i = 0; i < ring.size(); ++i)
+            length += norm(ring[(i + 1) % ring.size()] - ring[i]);
+        pieces += ring.size();
+    };
+    add(plan.boundary);
+    for (const Ring& obstacle : plan.obstacles)
+        add(obstacle);
+    return pieces ? length / static_cast<double>(pieces) : 0.0;
+}
+
+void throwIfStopped(const SolveControl& control) {
+    if (control.cancelled && control.cancelled())
+        throw SolverError("wall loop: cancelled");
+}
+
+// Plans one piece of the rest as a floor of its own, from the point of it nearest `from`
+// to the point nearest `towards`. Empty where the robot fits nowhere in it.
+std::optional<PlanResult> planPiece(const PlanRequest& request, const WallLoop& walls, size_t index,
+                                    Vec2 from, Vec2 towards, const SolveControl& control) {
+    PlanRequest piece;
+    piece.plan.boundary = walls.rest[index];
+    piece.plan.obstacles = walls.restHoles[index];
+    piece.plan.name = request.plan.name;
+    piece.robot = request.robot;
+    piece.sweep = request.sweep;
+    piece.sweep.roomAngles.clear();
+    piece.solver = request.solver;
+    piece.seed = request.seed;
+    piece.modelPath = request.modelPath;
+    piece.transitionCells = request.transitionCells;
+    piece.wallLoop = false;
+    const double radius = 0.5 * request.robot.robotDiameter;
+    piece.start = clearPointNear(piece.plan.boundary, piece.plan.obstacles, radius, from);
+    piece.end = clearPointNear(piece.plan.boundary, piece.plan.obstacles, radius, towards);
+    if (!piece.start || !piece.end)
+        return std::nullopt;
+    try {
+        const PreparedPlans prepared(piece.plan, piece.robot, piece.transitionCells);
+        PlanResult planned = planPerRoom(piece, control, &prepared);
+        if (planned.path.empty())
+            return std::nullopt;
+        return planned;
+    } catch (const InputError&) {
+        // Smaller than a coverage square, or a pocket the robot cannot turn in: left to the
+        // touch-ups, and measured with the whole path.
+        return std::nullopt;
+    } catch (const SolverError&) {
+        throwIfStopped(control);
+        return std::nullopt;
+    }
+}
+
+} // namespace
+
+bool wantsWallLoop(const PlanRequest& request) {
+    return request.wallLoop && request.rooms.empty() && plansAnyGraph(request.solver) &&
+           request.solver != "exact" &&
+           averageWallPiece(request.plan) < kEdgeRaggedWallInWidths * request.robot.coverageWidth;
+}
+
+WallLoopDraft draftWallLoop(const PlanRequest& request, const SolveControl& control,
+                            std::promise<double>& estimate) {
+    const RobotProfile& robot = request.robot;
+    const double width = robot.coverageWidth, radius = 0.5 * robot.robotDiameter;
+    // The estimate is promised whatever happens before it is known: the caller waits on it.
+    std::optional<WallLoop> walls;
+    Plan plan;
+    try {
+        plan = normalizedPlan(request.plan);
+        walls = wallLoop(plan, radius, width, request.start, kEdgeMinPieceInWidths2 * width * width,
+                         kEdgeSimplifyInWidths * width);
+    } catch (...) {
+        estimate.set_value(std::numeric_limits<double>::infinity());
+        throw;
+    }
+    if (!walls || walls->loop.size() < 4) {
+        estimate.set_value(std::numeric_limits<double>::infinity());
+        throw InputError("the robot fits nowhere along the walls");
+    }
+    const Vec2 start = request.start.value_or(walls->loop.front());
+    const Vec2 end = request.end.value_or(start);
+    estimate.set_value(norm(walls->loop.front() - start) + walls->length +
+                       kEdgeStripeFactor * walls->restArea / width);
+
+    const FloorField floor(plan, radius);
+    WallLoopDraft draft;
+    CoveragePath& path = draft.path;
+    path.points.push_back(start);
+    appendTransit(floor, path, walls->loop.front());
+    for (size_t i = 1; i < walls->loop.size(); ++i) {
+        path.points.push_back(walls->loop[i]);
+        path.kinds.push_back(SegmentKind::Contour);
+    }
+    // The rest piece by piece, the nearest next; each ends where the piece after it is
+    // nearest (the last one where the path ends).
+    const size_t count = walls->rest.size();
+    std::vector<char> done(count, 0);
+    for (size_t k = 0; k < count; ++k) {
+        throwIfStopped(control);
+        const Vec2 at = path.points.back();
+        size_t next = count;
+        double nearest = INFINITY;
+        for (size_t i = 0; i < count; ++i)
+            for (const Vec2& p : walls->rest[i])
+                if (!done[i] && norm(p - at) < nearest) {
+                    nearest = norm(p - at);
+                    next = i;
+                }
+        done[next] = 1;
+        Vec2 towards = end;
+        double after = INFINITY;
+        for (size_t i = 0; i < count; ++i)
+            for (const Vec2& p : walls->rest[i])
+                for (const Vec2& q : walls->rest[next])
+                    if (!done[i] && norm(p - q) < after) {
+                        after = norm(p - q);
+                        towards = p;
+                    }
+        const std::optional<PlanResult> planned =
+            planPiece(request, *walls, next, at, towards, control);
+        if (!planned)
+            continue;
+        appendTransit(floor, path, planned->path.points.front());
+        append(path, planned->path);
+        draft.graphCost += planned->metrics.graphCost;
+        draft.cells += planned->metrics.cells;
+        draft.lowerBound = draft.lowerBound >= 0.0 && planned->metrics.lowerBound >= 0.0
+                               ? draft.lowerBound + planned->metrics.lowerBound
+                               : -1.0;
+    }
+    appendTransit(floor, path, end);
+    return draft;
+}
+
+PlanResult wallLoopPlan(const PlanRequest& request, const PlanResult& first, WallLoopDraft draft) {
+    PlanResult result;
+    result.prepared = first.prepared;
+    result.query = first.query;
+    result.solution.solver = request.solver;
+    result.solution.graphCost = draft.graphCost;
+    result.solution.lowerBound = draft.lowerBound;
+    result.stripeAngleDeg = first.stripeAngleDeg;
+    const std::vector<std::string>& required = first.prepared.decomposition.roomNames;
+    result.path = std::move(draft.path);
+    result.metrics = measurePath(first.prepared, required, result.path);
+    if (result.metrics.uncoveredArea > kTouchUpFraction * result.metrics.requiredArea)
+        touchUpCoverage(first.prepared, required, result.path, result.metrics);
+    result.touchedUp = true;
+    result.metrics.graphCost = draft.graphCost;
+    result.metrics.lowerBound = draft.lowerBound;
+    result.metrics.cells = draft.cells;
+    const std::vector<std::string> firstLosses = coverageLossWarnings(first.metrics);
+    for (const std::string& warning : first.warnings)
+        if (std::find(firstLosses.begin(), firstLosses.end(), warning) == firstLosses.end())
+            result.warnings.push_back(warning);
+    for (const std::string& loss : coverageLossWarnings(result.metrics))
+        result.warnings.push_back(loss);
+    return result;
+}
+
+} // namespace fc::detail

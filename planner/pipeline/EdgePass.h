@@ -1,0 +1,53 @@
+// Internal to pipeline/: the wall-loop offer (issue 15). The robot first drives once around
+// the outer walls (geometry/WallFollowing.h), as a robot vacuum's edge mode does, then
+// stripes cover what that loop's head left, each piece of it planned as a floor of its own
+// (its outline is the band's smooth edge, not the ragged wall) and joined by transits.
+// planCoverage drafts it beside its first plan, on walls ragged enough to be worth it.
+#pragma once
+
+#include "pipeline/Planner.h"
+
+#include <future>
+#include <optional>
+
+namespace fc::detail {
+
+// Pieces of floor smaller than this (in W^2) are left to the touch-ups: a floor of its own
+// would cost a visit of its own.
+inline constexpr double kEdgeMinPieceInWidths2 = 0.25;
+// The rest's outlines are simplified by this much (in W): they are the band's edge, which
+// the stripes need not follow bump by bump.
+inline constexpr double kEdgeSimplifyInWidths = 0.1;
+// Drafted only where the walls are ragged: a traced map's outline, whose wall pieces
+// average less than this (in W). Drawn floors' walls run metres between corners.
+inline constexpr double kEdgeRaggedWallInWidths = 0.5;
+// Kept planning only where the loop plus stripes over the rest (estimated as its area / W
+// times kEdgeStripeFactor) come to less than this share of the first plan's length.
+inline constexpr double kEdgeEstimateGain = 0.9;
+inline constexpr double kEdgeStripeFactor = 1.5;
+
+struct WallLoopDraft {
+    CoveragePath path; // world frame, from the start to the end
+    double graphCost = 0.0;
+    double lowerBound = 0.0; // the pieces' bounds added up; -1 where one has none
+    int cells = 0;
+};
+
+// Whether planCoverage drafts a wall loop for `request`: every room asked for (a subset
+// would need a loop around its walls alone), a solver that plans any graph (not exact: the
+// rest's many small floors would take it to its limit), and ragged walls.
+bool wantsWallLoop(const PlanRequest& request);
+
+// Plans the loop from request.start (without one, from the loop's point farthest from the
+// floor's centre) and the rest, to request.end (else back to the start). `estimate` is
+// set as soon as the loop is known (the estimated length, see kEdgeEstimateGain; infinity
+// where the robot fits nowhere) so that the caller may cancel the rest through `control`.
+// Throws InputError where it cannot be planned, SolverError when cancelled.
+WallLoopDraft draftWallLoop(const PlanRequest& request, const SolveControl& control,
+                            std::promise<double>& estimate);
+
+// The draft as a plan of the floor `first` planned: its metrics over every room of it
+// after the wall touch-ups, first's warnings of other kinds.
+PlanResult wallLoopPlan(const PlanRequest& request, const PlanResult& first, WallLoopDraft draft);
+
+} // namespace fc::detail
