@@ -80,12 +80,24 @@ void noisyRows(int seeds) {
             const PlanResult whole = planDefault(importPlanFile(yaml, oneRoom).project.plan);
             const double wholeExtra = whole.metrics.length - whole.metrics.ideal;
             const double truthExtra = truth.metrics.length - truth.metrics.ideal;
-            std::printf("| %s | %d | %+.2f%% | %zu | %zu / %zu | %s | %.1f / %.1f | %+.0f%% | "
-                        "%.1f (%+.0f%%) | %.2f%% | %s | %.2f | %.2f |\n",
+            // Extra distances compared; where the drawing's plan has almost none (its path
+            // is the ideal), the difference as a share of the ideal length instead.
+            auto versus = [&](double mapExtra) {
+                char text[48];
+                if (truthExtra > 0.01 * truth.metrics.ideal)
+                    std::snprintf(text, sizeof text, "%+.0f%%",
+                                  100.0 * (mapExtra / truthExtra - 1));
+                else
+                    std::snprintf(text, sizeof text, "%+.1f%% of ideal",
+                                  100.0 * (mapExtra - truthExtra) / truth.metrics.ideal);
+                return std::string(text);
+            };
+            std::printf("| %s | %d | %+.2f%% | %zu | %zu / %zu | %s | %.1f / %.1f | %s | "
+                        "%.1f (%s) | %.2f%% | %s | %.2f | %.2f |\n",
                         name, seed, 100.0 * (freeAreaOf(cleaned) / freeAreaOf(plan) - 1),
                         cleaned.obstacles.size(), cleaned.rooms.size(), plan.rooms.size(), iou,
-                        extra, truthExtra, 100.0 * (extra / truthExtra - 1), wholeExtra,
-                        100.0 * (wholeExtra / truthExtra - 1), 100.0 * result.metrics.coverage,
+                        extra, std::max(truthExtra, 0.0), versus(extra).c_str(), wholeExtra,
+                        versus(wholeExtra).c_str(), 100.0 * result.metrics.coverage,
                         checked(cleaned, result).c_str(), importSeconds, planSeconds);
             std::fflush(stdout);
         }
