@@ -210,6 +210,45 @@ int splitHeadlands(SlabSweep& sweep, int roomCount, double w, bool floors, bool 
         ceilingIsWall[s.lower] = 0;
         floorIsWall[s.upper] = 0;
     }
+    // Walls gentle enough to run a band along; a trapezoid narrower than W whose wall rises
+    // less than W/2 (a chamfered corner, a traced wall's jog) continues the band of a
+    // neighbour whose wall it continues, else the band would stop a cell short of the end.
+    std::vector<char> gentleFloor(n, 0), gentleCeiling(n, 0);
+    auto slope = [&](const Trapezoid& z, double ya, double yb) {
+        return z.xb > z.xa && std::abs(yb - ya) <= maxSlope * (z.xb - z.xa);
+    };
+    for (size_t t = 0; t < n; ++t) {
+        const Trapezoid& z = sweep.trapezoids[t];
+        gentleFloor[t] = slope(z, z.fa, z.fb);
+        gentleCeiling[t] = slope(z, z.ca, z.cb);
+    }
+    const double joint = std::max(epsY, 1e-6 * w);
+    // Repeated until nothing changes: a run of narrow slabs passes the band along.
+    for (bool changed = true; changed;) {
+        changed = false;
+        for (const TrapezoidLink& link : sweep.links) {
+            for (const auto& [narrow, wide] :
+                 {std::pair{link.left, link.right}, std::pair{link.right, link.left}}) {
+                const Trapezoid& a = sweep.trapezoids[narrow];
+                const Trapezoid& b = sweep.trapezoids[wide];
+                if (a.xb - a.xa >= w)
+                    continue;
+                const bool left = narrow == link.left; // the wide one lies to its right
+                const double aFloor = left ? a.fb : a.fa, bFloor = left ? b.fa : b.fb;
+                const double aCeiling = left ? a.cb : a.ca, bCeiling = left ? b.ca : b.cb;
+                if (!gentleFloor[narrow] && gentleFloor[wide] &&
+                    std::abs(aFloor - bFloor) <= joint && std::abs(a.fb - a.fa) <= 0.5 * w) {
+                    gentleFloor[narrow] = 1;
+                    changed = true;
+                }
+                if (!gentleCeiling[narrow] && gentleCeiling[wide] &&
+                    std::abs(aCeiling - bCeiling) <= joint && std::abs(a.cb - a.ca) <= 0.5 * w) {
+                    gentleCeiling[narrow] = 1;
+                    changed = true;
+                }
+            }
+        }
+    }
     std::vector<Trapezoid> split;
     std::vector<std::vector<int>> members(sweep.slabMembers.size());
     std::vector<TrapezoidStack> stacks;
@@ -217,13 +256,9 @@ int splitHeadlands(SlabSweep& sweep, int roomCount, double w, bool floors, bool 
     for (size_t k = 0; k < sweep.slabMembers.size(); ++k) {
         for (int t : sweep.slabMembers[k]) {
             const Trapezoid& z = sweep.trapezoids[t];
-            const double width = z.xb - z.xa;
-            auto gentle = [&](double ya, double yb) {
-                return width > 0 && std::abs(yb - ya) <= maxSlope * width;
-            };
             const bool band = z.room >= 0 && z.room < roomCount;
-            const bool low = band && floors && floorIsWall[t] && gentle(z.fa, z.fb);
-            const bool high = band && ceilings && ceilingIsWall[t] && gentle(z.ca, z.cb);
+            const bool low = band && floors && floorIsWall[t] && gentleFloor[t];
+            const bool high = band && ceilings && ceilingIsWall[t] && gentleCeiling[t];
             const double height = std::min(z.ca - z.fa, z.cb - z.fb);
             const double needed = (low ? w : 0.0) + (high ? w : 0.0);
             std::vector<Trapezoid> pieces;

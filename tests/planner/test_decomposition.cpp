@@ -458,6 +458,32 @@ TEST(Headland, BandsAlongTheWallsTheStripesEndAt) {
 // No band where the room is too shallow for one beside a sweep (a 2.5 W corridor across
 // the stripes), nor where a slab narrows to nothing (a wedge: its band would end in a point
 // the robot cannot reach); the cells are the plain ones.
+// A slab narrower than W at a chamfered corner continues its neighbour's band: the band
+// runs the wall's whole length, and no corner sliver is left a cell of its own.
+TEST(Headland, BandsRunIntoChamferedCorners) {
+    Plan p;
+    const double c = 0.2;
+    p.boundary = {{c, 0},      {10 - c, 0}, {10, c},    {10, 6 - c},
+                  {10 - c, 6}, {c, 6},      {0, 6 - c}, {0, c}};
+    DecompositionOptions o;
+    o.stripeAngleDeg = 90.0;
+    o.headland = Headland::Both;
+    const Decomposition d = decompose(p, o);
+    ASSERT_TRUE(d.headland);
+    double bandFrom = INFINITY, bandTo = -INFINITY;
+    for (const Cell& cell : d.cells) {
+        const double mid = 0.5 * (cell.x0 + cell.x1);
+        if (cell.headland) {
+            bandFrom = std::min(bandFrom, cell.x0);
+            bandTo = std::max(bandTo, cell.x1);
+        } else {
+            EXPECT_GT(cell.ceilingAt(mid) - cell.floorAt(mid), 1.0) << cell.x0 << " " << cell.x1;
+        }
+    }
+    EXPECT_NEAR(bandFrom, 0.0, 1e-9);
+    EXPECT_NEAR(bandTo, 10.0, 1e-9);
+}
+
 TEST(Headland, NoBandInShallowRoomsOrWedges) {
     DecompositionOptions o;
     o.stripeAngleDeg = 0.0; // stripes along world x

@@ -224,3 +224,16 @@ TEST(Pipeline, AHallsClosedTourComesBackAlongAHeadland) {
             EXPECT_LE(distance(path.points[i], path.points[i + 1]), 1.0 + 1e-6) << i;
         }
 }
+
+// Corners cut by 0.2 m (as a traced map's cleaning rounds them, or a drawing's chamfers):
+// the narrow slabs there continue the bands, so the tour still comes back along one.
+TEST(Pipeline, AChamferedHallsClosedTourStillComesBackAlongAHeadland) {
+    Plan p;
+    const double c = 0.2;
+    p.boundary = {{c, 0},         {14 - c, 0}, {14, c},       {14, 10.3 - c},
+                  {14 - c, 10.3}, {c, 10.3},   {0, 10.3 - c}, {0, c}};
+    const PlanResult res = planCoverage(requestFor(p, "heuristic"));
+    expectCollisionFree(res, "chamfered hall");
+    EXPECT_GE(res.metrics.coverage, 0.999);
+    EXPECT_LE(res.metrics.length, 1.02 * res.metrics.ideal);
+}
