@@ -1,25 +1,14 @@
 #include "decomposition/WallFollowing.h"
 
-// Boost.Geometry's envelope code trips GCC 12's -Wmaybe-uninitialized (a false positive
-// inside the library); silence it for this file only.
-#pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
+#include "geometry/BoostGeometry.h"
 
-#include <boost/geometry.hpp>
-#include <boost/geometry/geometries/linestring.hpp>
-#include <boost/geometry/geometries/multi_polygon.hpp>
-#include <boost/geometry/geometries/point_xy.hpp>
-#include <boost/geometry/geometries/polygon.hpp>
 #include <cmath>
 #include <limits>
 
 namespace fc {
 namespace {
 
-namespace bg = boost::geometry;
-using BPoint = bg::model::d2::point_xy<double>;
-using BPolygon = bg::model::polygon<BPoint>;
-using BMulti = bg::model::multi_polygon<BPolygon>;
-using BLine = bg::model::linestring<BPoint>;
+using namespace bgeo;
 
 // Points per full circle of the round joins: a chord of a 0.3 m arc then cuts it by 1.4 mm.
 constexpr int kCirclePoints = 32;

@@ -1,25 +1,15 @@
 #include "model/RoomEdits.h"
 
+#include "geometry/BoostGeometry.h"
 #include "model/Plan.h"
 
-// Boost.Geometry's envelope code trips GCC 12's -Wmaybe-uninitialized (a false positive
-// inside the library); silence it for this file only.
-#pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
-
 #include <algorithm>
-#include <boost/geometry.hpp>
-#include <boost/geometry/geometries/multi_polygon.hpp>
-#include <boost/geometry/geometries/point_xy.hpp>
-#include <boost/geometry/geometries/polygon.hpp>
 #include <cmath>
 
 namespace fc {
 namespace {
 
-namespace bg = boost::geometry;
-using BPoint = bg::model::d2::point_xy<double>;
-using BPolygon = bg::model::polygon<BPoint>;
-using BMulti = bg::model::multi_polygon<BPolygon>;
+using namespace bgeo;
 
 // Coordinates relative to `origin`: rooms in UTM coordinates lose their digits otherwise.
 BPolygon toPolygon(const Ring& ring, Vec2 origin) {

@@ -1,14 +1,7 @@
 #include "model/SyntheticPlans.h"
 
-// Boost.Geometry's envelope code trips GCC 12's -Wmaybe-uninitialized (a false positive
-// inside the library); silence it for this file only.
-#pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
+#include "geometry/BoostGeometry.h"
 
-#include <boost/geometry.hpp>
-#include <boost/geometry/geometries/box.hpp>
-#include <boost/geometry/geometries/multi_polygon.hpp>
-#include <boost/geometry/geometries/point_xy.hpp>
-#include <boost/geometry/geometries/polygon.hpp>
 #include <cmath>
 #include <random>
 #include <stdexcept>
@@ -17,10 +10,7 @@
 namespace fc {
 namespace {
 
-namespace bg = boost::geometry;
-using BPoint = bg::model::d2::point_xy<double>;
-using BPolygon = bg::model::polygon<BPoint>;
-using BMulti = bg::model::multi_polygon<BPolygon>;
+using namespace bgeo;
 
 BPolygon box(double x0, double y0, double x1, double y1) {
     BPolygon p;
