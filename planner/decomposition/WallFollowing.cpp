@@ -18,29 +18,8 @@ constexpr double kChordMargin = 0.005;
 // stripes must cover overlaps it rather than leaving a hairline between.
 constexpr double kBandOverlap = 0.02;
 
-// Coordinates relative to `origin`: a plan in UTM coordinates loses its digits otherwise.
-void appendRing(const Ring& ring, Vec2 origin, bg::model::ring<BPoint>& out) {
-    for (const Vec2& p : ring)
-        out.push_back(BPoint(p.x - origin.x, p.y - origin.y));
-    if (!ring.empty())
-        out.push_back(out.front());
-}
-
-Ring toRing(const bg::model::ring<BPoint>& ring, Vec2 origin) {
-    Ring out;
-    for (size_t i = 0; i + 1 < ring.size(); ++i)
-        out.push_back({ring[i].x() + origin.x, ring[i].y() + origin.y});
-    return out;
-}
-
 template <typename Geometry> BMulti buffered(const Geometry& geometry, double distance) {
-    BMulti out;
-    bg::buffer(geometry, out, bg::strategy::buffer::distance_symmetric<double>(distance),
-               bg::strategy::buffer::side_straight(),
-               bg::strategy::buffer::join_round(kCirclePoints),
-               bg::strategy::buffer::end_round(kCirclePoints),
-               bg::strategy::buffer::point_circle(kCirclePoints));
-    return out;
+    return roundBuffer(geometry, distance, kCirclePoints);
 }
 
 // A piece's outline is mostly the band's edge, a line the robot need not follow: simplified

@@ -1,5 +1,6 @@
 #include "pipeline/EdgePass.h"
 
+#include "decomposition/IslandDetours.h"
 #include "decomposition/WallFollowing.h"
 #include "geometry/Clearance.h"
 #include "model/Validation.h"
@@ -85,6 +86,9 @@ std::optional<PlanResult> planPiece(const PlanRequest& request, const WallLoop& 
     PlanRequest piece;
     piece.plan.boundary = walls.rest[index];
     piece.plan.obstacles = walls.restHoles[index];
+    const double width = request.robot.coverageWidth, radius = 0.5 * request.robot.robotDiameter;
+    const IslandDetours islands = islandDetours(piece.plan.boundary, piece.plan.obstacles, radius,
+                                                kEdgeIslandInWidths2 * width * width);
     piece.plan.name = request.plan.name;
     piece.robot = request.robot;
     piece.sweep = request.sweep;
@@ -94,12 +98,25 @@ std::optional<PlanResult> planPiece(const PlanRequest& request, const WallLoop& 
     piece.modelPath = request.modelPath;
     piece.transitionCells = request.transitionCells;
     piece.wallLoop = false;
-    const double radius = 0.5 * request.robot.robotDiameter;
     piece.start = clearPointNear(piece.plan.boundary, piece.plan.obstacles, radius, from);
     piece.end = clearPointNear(piece.plan.boundary, piece.plan.obstacles, radius, towards);
     if (!piece.start || !piece.end)
         return std::nullopt;
     try {
+        // Small islands (traced furniture) out of the way of the stripes, which then drive
+        // round them; where that cannot be (a path that would start beside one), the piece
+        // is planned with every hole.
+        if (!islands.zones.empty()) {
+            PlanRequest open = piece;
+            open.plan.obstacles = islands.keptHoles;
+            const PreparedPlans prepared(open.plan, open.robot, open.transitionCells);
+            PlanResult planned = planPerRoom(open, control, &prepared);
+            std::optional<CoveragePath> round = detouredPath(planned.path, islands.zones);
+            if (round && !round->empty()) {
+                planned.path = std::move(*round);
+                return planned;
+            }
+        }
         const PreparedPlans prepared(piece.plan, piece.robot, piece.transitionCells);
         PlanResult planned = planPerRoom(piece, control, &prepared);
         if (planned.path.empty())

@@ -25,6 +25,9 @@ inline constexpr double kEdgeRaggedWallInWidths = 0.5;
 // times kEdgeStripeFactor) come to less than this share of the first plan's length.
 inline constexpr double kEdgeEstimateGain = 0.9;
 inline constexpr double kEdgeStripeFactor = 1.5;
+// Islands of the rest up to this area (in W^2) are driven round by the stripes that meet
+// them (decomposition/IslandDetours.h) instead of parting them into cells.
+inline constexpr double kEdgeIslandInWidths2 = 4.0;
 
 struct WallLoopDraft {
     CoveragePath path; // world frame, from the start to the end

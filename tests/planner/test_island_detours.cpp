@@ -1,0 +1,143 @@
+// Stripes that drive round small islands (decomposition/IslandDetours.h): which islands are
+// driven round, and that the path round them keeps the clearance and rejoins itself.
+#include "decomposition/IslandDetours.h"
+
+#include <gtest/gtest.h>
+
+namespace fc {
+namespace {
+
+Ring square(Vec2 at, double side) {
+    return {at, at + Vec2{side, 0}, at + Vec2{side, side}, at + Vec2{0, side}};
+}
+
+double distanceToRing(const Ring& ring, Vec2 p) {
+    double best = INFINITY;
+    for (size_t i = 0; i < ring.size(); ++i)
+        best = std::min(best, pointSegmentDistance(p, ring[i], ring[(i + 1) % ring.size()]));
+    return best;
+}
+
+// The smallest distance between the path's segments and the ring's edges (sampled).
+double clearanceOf(const CoveragePath& path, const Ring& ring) {
+    double best = INFINITY;
+    for (size_t i = 0; i + 1 < path.points.size(); ++i)
+        for (int k = 0; k <= 20; ++k) {
+            const Vec2 p = path.points[i] + (path.points[i + 1] - path.points[i]) * (k / 20.0);
+            best = std::min(best, distanceToRing(ring, p));
+        }
+    return best;
+}
+
+double lengthOf(const CoveragePath& path) {
+    double length = 0.0;
+    for (size_t i = 1; i < path.points.size(); ++i)
+        length += norm(path.points[i] - path.points[i - 1]);
+    return length;
+}
+
+CoveragePath line(Vec2 from, Vec2 to) {
+    return {{from, to}, {SegmentKind::Stripe}};
+}
+
+TEST(IslandDetours, SmallFreeStandingIslandsAreDrivenRoundLargeOnesKept) {
+    for (const Vec2 origin : {Vec2{0, 0}, Vec2{512345.0, 5432109.0}}) {
+        const Ring hall = square(origin, 12);
+        const Ring pillar = square(origin + Vec2{2, 2}, 0.5);
+        const Ring courtyard = square(origin + Vec2{6, 6}, 4);
+        // 0.4 m from the wall: the robot (0.6 m) cannot pass between, so no ring round it.
+        const Ring byTheWall = square(origin + Vec2{0.4, 8}, 0.5);
+        const IslandDetours islands = islandDetours(hall, {pillar, courtyard, byTheWall}, 0.3, 4.0);
+        ASSERT_EQ(islands.zones.size(), 1u);
+        ASSERT_EQ(islands.keptHoles.size(), 2u);
+        EXPECT_EQ(islands.keptHoles[0], courtyard);
+        EXPECT_EQ(islands.keptHoles[1], byTheWall);
+        // The zone's ring is the pillar's outline grown by the clearance and 5 mm.
+        for (const Vec2& p : islands.zones.front()) {
+            EXPECT_GE(distanceToRing(pillar, p), 0.3);
+            EXPECT_LE(distanceToRing(pillar, p), 0.306);
+        }
+    }
+}
+
+TEST(IslandDetours, IslandsCloseTogetherShareOneRing) {
+    const Ring hall = square({0, 0}, 10);
+    const IslandDetours islands =
+        islandDetours(hall, {square({3, 3}, 0.4), square({3.8, 3}, 0.4)}, 0.3, 4.0);
+    EXPECT_TRUE(islands.keptHoles.empty());
+    EXPECT_EQ(islands.zones.size(), 1u);
+}
+
+TEST(IslandDetours, AStripeThroughAnIslandGoesRoundItTheShorterWay) {
+    for (const Vec2 origin : {Vec2{0, 0}, Vec2{512345.0, 5432109.0}}) {
+        const Ring hall = square(origin, 10);
+        const Ring pillar = square(origin + Vec2{4.5, 4.7}, 1.0); // centre (5, 5.2)
+        const IslandDetours islands = islandDetours(hall, {pillar}, 0.3, 4.0);
+        ASSERT_EQ(islands.zones.size(), 1u);
+        const CoveragePath stripe = line(origin + Vec2{1, 5}, origin + Vec2{9, 5});
+        const std::optional<CoveragePath> round = detouredPath(stripe, islands.zones);
+        ASSERT_TRUE(round);
+        EXPECT_EQ(round->points.front(), stripe.points.front());
+        EXPECT_LT(norm(round->points.back() - stripe.points.back()), 1e-6);
+        ASSERT_EQ(round->kinds.size() + 1, round->points.size());
+        EXPECT_GE(clearanceOf(*round, pillar), 0.3);
+        // Below the pillar (the shorter side): 8 m, plus down and up 0.605 m to the ring
+        // 0.305 m below the pillar; its round corners make it a little shorter.
+        EXPECT_GT(lengthOf(*round), 8.0 + 0.8);
+        EXPECT_LT(lengthOf(*round), 8.0 + 2 * 0.605 + 1e-6);
+        for (const Vec2& p : round->points)
+            EXPECT_LT(p.y, origin.y + 5.0 + 1e-9);
+        EXPECT_EQ(round->kinds.front(), SegmentKind::Stripe);
+        EXPECT_EQ(round->kinds.back(), SegmentKind::Stripe);
+    }
+}
+
+TEST(IslandDetours, APathAlreadyClearOfTheIslandsIsKept) {
+    const Ring hall = square({0, 0}, 10);
+    const IslandDetours islands = islandDetours(hall, {square({4.5, 4.5}, 1.0)}, 0.3, 4.0);
+    const CoveragePath path{{{1, 1}, {9, 1}, {9, 2}, {1, 2}},
+                            {SegmentKind::Stripe, SegmentKind::Stripe, SegmentKind::Stripe}};
+    const std::optional<CoveragePath> round = detouredPath(path, islands.zones);
+    ASSERT_TRUE(round);
+    EXPECT_EQ(round->points, path.points);
+}
+
+TEST(IslandDetours, APathThatStartsInsideAZoneIsRefused) {
+    const Ring hall = square({0, 0}, 10);
+    const IslandDetours islands = islandDetours(hall, {square({4.5, 4.5}, 1.0)}, 0.3, 4.0);
+    EXPECT_FALSE(detouredPath(line({4.3, 5}, {9, 5}), islands.zones));
+}
+
+TEST(IslandDetours, PathsInAndOutOfSeveralZonesRejoinThemselves) {
+    // A boustrophedon over a hall with a grid of pillars: every detour keeps the clearance
+    // and the path's ends stay where they were.
+    const Ring hall = square({0, 0}, 20);
+    std::vector<Ring> pillars;
+    for (int i = 0; i < 4; ++i)
+        for (int j = 0; j < 4; ++j)
+            pillars.push_back(square({3.3 + 4.1 * i, 2.9 + 4.3 * j}, 0.45));
+    const IslandDetours islands = islandDetours(hall, pillars, 0.3, 4.0);
+    ASSERT_EQ(islands.zones.size(), pillars.size());
+    CoveragePath path{{{0.5, 0.5}}, {}};
+    for (int k = 0; k < 19; ++k) {
+        const double y = 0.5 + k;
+        const double from = k % 2 ? 19.5 : 0.5, to = k % 2 ? 0.5 : 19.5;
+        if (k > 0) {
+            path.points.push_back({from, y});
+            path.kinds.push_back(SegmentKind::Stripe);
+        }
+        path.points.push_back({to, y});
+        path.kinds.push_back(SegmentKind::Stripe);
+    }
+    const std::optional<CoveragePath> round = detouredPath(path, islands.zones);
+    ASSERT_TRUE(round);
+    EXPECT_EQ(round->points.front(), path.points.front());
+    EXPECT_LT(norm(round->points.back() - path.points.back()), 1e-6);
+    for (const Ring& pillar : pillars)
+        EXPECT_GE(clearanceOf(*round, pillar), 0.3);
+    EXPECT_GT(lengthOf(*round), lengthOf(path));
+    EXPECT_LT(lengthOf(*round), lengthOf(path) + 16 * 3 * 1.2);
+}
+
+} // namespace
+} // namespace fc
