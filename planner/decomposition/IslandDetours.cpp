@@ -113,16 +113,50 @@ const Station* crossingAt(const std::vector<Station>& stations, size_t k, int zo
     return nullptr;
 }
 
+// Holes the robot cannot pass between are one obstacle to it: merged (closed by the
+// clearance, which fills the gaps between them). A hole with no neighbour that near stays as
+// it was.
+std::vector<Ring> mergedHoles(const std::vector<Ring>& holes, double clearance, Vec2 origin) {
+    BMulti polygons;
+    std::vector<const Ring*> given;
+    for (const Ring& hole : holes)
+        if (hole.size() >= 3) {
+            polygons.push_back(polygonOf(hole, {}, origin));
+            given.push_back(&hole);
+        }
+    const double reach = clearance + kZoneMargin;
+    const BMulti closed = roundBuffer(roundBuffer(polygons, reach), -reach);
+    std::vector<Ring> out;
+    std::vector<char> used(polygons.size(), 0);
+    for (const BPolygon& group : closed) {
+        std::vector<size_t> members;
+        for (size_t i = 0; i < polygons.size(); ++i)
+            if (!used[i] && bg::intersects(group, polygons[i]))
+                members.push_back(i);
+        for (size_t i : members)
+            used[i] = 1;
+        if (members.size() == 1)
+            out.push_back(*given[members.front()]);
+        else if (members.size() > 1)
+            out.push_back(toRing(group.outer(), origin));
+    }
+    for (size_t i = 0; i < polygons.size(); ++i)
+        if (!used[i]) // lost by the buffers (a sliver): kept as it was
+            out.push_back(*given[i]);
+    return out;
+}
+
 } // namespace
 
-IslandDetours islandDetours(const Ring& outline, const std::vector<Ring>& holes, double clearance,
-                            double maxIslandArea) {
+IslandDetours islandDetours(const Ring& outline, const std::vector<Ring>& givenHoles,
+                            double clearance, double maxIslandArea) {
     IslandDetours out;
-    if (outline.size() < 3 || holes.empty()) {
-        out.keptHoles = holes;
+    if (outline.size() < 3 || givenHoles.empty()) {
+        out.keptHoles = givenHoles;
         return out;
     }
     const Vec2 origin = outline.front();
+    const std::vector<Ring> holes = mergedHoles(givenHoles, clearance, origin);
     std::vector<char> kept(holes.size());
     for (size_t i = 0; i < holes.size(); ++i)
         kept[i] = std::abs(signedArea(holes[i])) > maxIslandArea || holes[i].size() < 3;

@@ -19,8 +19,9 @@ struct IslandDetours {
     std::vector<Ring> zones;     // rings the robot centre drives round instead of the others
 };
 
-// Splits the floor `outline` minus `holes` into holes kept and islands driven round: a hole
-// of at most `maxIslandArea` is driven round when the ring at `clearance` (and a few
+// Splits the floor `outline` minus `holes` into holes kept and islands driven round. Holes
+// closer together than the robot are merged first (the gaps between them filled); a hole
+// of at most `maxIslandArea` is then driven round when the ring at `clearance` (and a few
 // millimetres) around it, merged with its neighbours' where they overlap, keeps `clearance`
 // from everything else; the rest are kept.
 IslandDetours islandDetours(const Ring& outline, const std::vector<Ring>& holes, double clearance,
