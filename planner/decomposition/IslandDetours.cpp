@@ -161,9 +161,10 @@ IslandDetours islandDetours(const Ring& outline, const std::vector<Ring>& givenH
     for (size_t i = 0; i < holes.size(); ++i)
         kept[i] = std::abs(signedArea(holes[i])) > maxIslandArea || holes[i].size() < 3;
     // A zone that comes too near a kept wall keeps its islands, which narrows the floor the
-    // other zones must fit in: repeated until nothing changes.
+    // other zones must fit in: repeated until nothing changes (each round keeps one more
+    // island or ends).
     BMulti zones;
-    for (size_t round = 0; round <= holes.size(); ++round) {
+    while (true) {
         std::vector<const Ring*> keptRings;
         BMulti islands;
         std::vector<size_t> islandHole;
@@ -174,6 +175,7 @@ IslandDetours islandDetours(const Ring& outline, const std::vector<Ring>& givenH
                 islands.push_back(polygonOf(holes[i], {}, origin));
                 islandHole.push_back(i);
             }
+        zones.clear();
         if (islands.empty())
             break;
         const BMulti centres = roundBuffer(polygonOf(outline, keptRings, origin), -clearance);
@@ -182,15 +184,19 @@ IslandDetours islandDetours(const Ring& outline, const std::vector<Ring>& givenH
         for (const BPolygon& zone : zones) {
             if (zone.inners().empty() && bg::within(zone, centres))
                 continue;
+            bool found = false;
             for (size_t k = 0; k < islands.size(); ++k)
                 if (bg::intersects(zone, islands[k])) {
                     kept[islandHole[k]] = 1;
-                    changed = true;
+                    found = true;
                 }
+            if (!found) // cannot be told apart: no island is driven round
+                for (size_t k : islandHole)
+                    kept[k] = 1;
+            changed = true;
         }
         if (!changed)
             break;
-        zones.clear();
     }
     for (size_t i = 0; i < holes.size(); ++i)
         if (kept[i])
