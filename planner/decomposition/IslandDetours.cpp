@@ -31,15 +31,8 @@ struct Zone {
 };
 
 bool inside(const Zone& zone, Vec2 p) {
-    if (p.x < zone.low.x || p.x > zone.high.x || p.y < zone.low.y || p.y > zone.high.y)
-        return false;
-    bool in = false;
-    const std::vector<Vec2>& r = zone.ring;
-    for (size_t i = 0, j = r.size() - 1; i < r.size(); j = i++)
-        if ((r[i].y > p.y) != (r[j].y > p.y) &&
-            p.x < (r[j].x - r[i].x) * (p.y - r[i].y) / (r[j].y - r[i].y) + r[i].x)
-            in = !in;
-    return in;
+    return p.x >= zone.low.x && p.x <= zone.high.x && p.y >= zone.low.y && p.y <= zone.high.y &&
+           pointInRing(zone.ring, p);
 }
 
 // A point of the path: a vertex, or where a segment crosses a zone's ring.
@@ -73,13 +66,6 @@ void addCrossings(const std::vector<Zone>& zones, size_t segment, Vec2 p, Vec2 q
     }
 }
 
-double lengthOf(const Polyline& line) {
-    double length = 0.0;
-    for (size_t i = 1; i < line.size(); ++i)
-        length += norm(line[i] - line[i - 1]);
-    return length;
-}
-
 // The shorter way along the zone's ring from crossing a to crossing b.
 Polyline roundTheZone(const Zone& zone, const Station& a, const Station& b) {
     const size_t n = zone.ring.size();
@@ -98,7 +84,7 @@ Polyline roundTheZone(const Zone& zone, const Station& a, const Station& b) {
         }
     forward.push_back(b.at);
     backward.push_back(b.at);
-    return lengthOf(forward) <= lengthOf(backward) ? forward : backward;
+    return polylineLength(forward) <= polylineLength(backward) ? forward : backward;
 }
 
 // The crossing of `zone`'s ring at station k or at a station in the same place (a path
@@ -137,7 +123,7 @@ std::vector<Ring> mergedHoles(const std::vector<Ring>& holes, double clearance, 
             used[i] = 1;
         if (members.size() == 1)
             out.push_back(*given[members.front()]);
-        else if (members.size() > 1)
+        else if (members.size() > 1) // floor they enclose is behind gaps the robot cannot pass
             out.push_back(toRing(group.outer(), origin));
     }
     for (size_t i = 0; i < polygons.size(); ++i)
