@@ -11,9 +11,11 @@
 // gamma=G, lr=R, eps=STEPS, net=paper|small, refine=none|corners|local-search, cost=SCALE (reward
 // per longest edge), sync=STEPS, batch=N, features=0|1, graphfeatures=14|16, conv=C (all three
 // layers), hidden=N, init=generalist (fine-tune the built-in generalist), fteps=E (its first
-// epsilon), starts=N (steps before the first gradient step). Writes DIR/curves-<case>-<setting>.csv
-// and prints a Markdown table (docs/dqn.md). Time is the training thread's CPU time, so a busy
-// machine does not change the figures.
+// epsilon), starts=N (steps before the first gradient step), messages=N (message rounds of the
+// graph network), demos=N and pretrain=STEPS (N expert walks of the plan and STEPS gradient
+// steps on them before training, DQfD), demoshare=F (their share of later batches). Writes
+// DIR/curves-<case>-<setting>.csv and prints a Markdown table (docs/dqn.md). Time is the
+// training thread's CPU time, so a busy machine does not change the figures.
 #include "BenchSupport.h"
 #include "formats/PlanIO.h"
 #include "learning/dqn/DqnModelFile.h"
@@ -58,6 +60,13 @@ struct Options {
 };
 
 using fc::bench::splitList;
+
+// The integer value of "+key=N" in a setting, or `fallback`.
+long settingValue(const std::string& setting, const std::string& key, long fallback) {
+    const std::string token = "+" + key + "=";
+    const std::size_t at = setting.find(token);
+    return at == std::string::npos ? fallback : std::stol(setting.substr(at + token.size()));
+}
 
 TrainingOptions settingOptions(const std::string& setting, std::uint64_t seed) {
     const std::vector<std::string> parts = [&] {
@@ -105,6 +114,8 @@ TrainingOptions settingOptions(const std::string& setting, std::uint64_t seed) {
             o.environment.costScale = std::stod(value);
         else if (key == "hidden")
             o.agent.hiddenUnits = std::stoi(value);
+        else if (key == "messages")
+            o.agent.messageRounds = std::stoi(value);
         else if (key == "features")
             o.environment.costChannels = value == "1";
         else if (key == "state") {
@@ -119,8 +130,10 @@ TrainingOptions settingOptions(const std::string& setting, std::uint64_t seed) {
             o.environment.graphFeatures = std::stoi(value);
         else if (key == "refine")
             o.refinement = refinementFromName(value);
-        else if (key == "best")
+        else if (key == "best" || key == "demos" || key == "pretrain")
             continue; // read by the training loop
+        else if (key == "demoshare")
+            o.agent.demonstrationShare = std::stod(value);
         else if (key == "fteps")
             o.fineTuneEpsilon = std::stod(value);
         else if (key == "starts")
@@ -338,6 +351,16 @@ int main(int argc, char** argv) {
             const double cpuStart = threadCpuSeconds();
             double evaluationCpu = 0.0; // not counted as training time
             auto trainingCpu = [&] { return threadCpuSeconds() - cpuStart - evaluationCpu; };
+            // demos=N: N expert walks of the plan, then pretrain=STEPS gradient steps on them
+            // alone (DQfD), all within the CPU budget.
+            const long demos = settingValue(setting, "demos", 0);
+            if (demos > 0) {
+                const long added = trainer.addDemonstrations(static_cast<int>(demos));
+                const double loss = trainer.pretrain(settingValue(setting, "pretrain", 0));
+                std::fprintf(stderr,
+                             "%s %s: %ld expert transitions, pre-training loss %.4f, %.1f s\n",
+                             name.c_str(), setting.c_str(), added, loss, trainingCpu());
+            }
             trainer.train(
                 0, 0.0,
                 [&](const TrainingProgress& p) {

@@ -46,6 +46,8 @@ nlohmann::json toJson(const DqnModelInfo& m) {
               {"input_channels", a.inputChannels},
               {"conv_channels", {a.conv1Channels, a.conv2Channels, a.conv3Channels}},
               {"hidden_units", a.hiddenUnits},
+              {"message_rounds", a.messageRounds},
+              {"message_neighbours", a.messageNeighbours},
               {"learning_rate", a.learningRate},
               {"gamma", a.gamma},
               {"batch_size", a.batchSize},
@@ -107,6 +109,8 @@ DqnModelInfo fromJson(const nlohmann::json& j) {
     p.conv2Channels = conv[1];
     p.conv3Channels = conv[2];
     p.hiddenUnits = a.at("hidden_units").get<int>();
+    p.messageRounds = a.value("message_rounds", 0); // absent in files of the first networks
+    p.messageNeighbours = a.value("message_neighbours", 12);
     p.learningRate = a.at("learning_rate").get<double>();
     p.gamma = a.at("gamma").get<double>();
     p.batchSize = a.at("batch_size").get<int>();
@@ -160,7 +164,8 @@ DqnModelInfo fromJson(const nlohmann::json& j) {
     m.trainSteps = t.at("train_steps").get<long>();
     m.trainingSeconds = t.at("seconds").get<double>();
     if (m.nodeCount <= 0 || m.cellCount <= 0 || m.nStep < 1 || p.conv1Channels <= 0 ||
-        p.conv2Channels <= 0 || p.conv3Channels <= 0 || p.hiddenUnits <= 0 ||
+        p.conv2Channels <= 0 || p.conv3Channels <= 0 || p.hiddenUnits <= 0 || p.messageRounds < 0 ||
+        p.messageRounds > 8 || p.messageNeighbours < 1 || p.messageNeighbours > 64 ||
         p.inputChannels != CoverageEnvironment::channelCountFor(o) || m.episodes < 0 ||
         m.steps < 0 || m.trainSteps < 0)
         throw std::invalid_argument("sizes and counts out of range");

@@ -108,6 +108,8 @@ DqnTrainer::DqnTrainer(const CornerGraph& graph, TrainingOptions options, double
             from.environment.graphFeatures != options_.environment.graphFeatures)
             throw InputError("fine-tuning needs a graph-setting model with the same features");
         options_.agent.hiddenUnits = from.agent.hiddenUnits;
+        options_.agent.messageRounds = from.agent.messageRounds;
+        options_.agent.messageNeighbours = from.agent.messageNeighbours;
         options_.agent.epsilonStart =
             std::min(options_.agent.epsilonStart, options_.fineTuneEpsilon);
         options_.environment = from.environment;

@@ -35,6 +35,14 @@ struct DqnHyperParameters {
     int conv2Channels = 64;
     int conv3Channels = 64;
     int hiddenUnits = 256;
+    // Graph network only: rounds of messages between neighbouring valid corners after the
+    // encoder (0: none, the first graph network). In each round a corner takes the max over
+    // its messageNeighbours nearest valid corners (itself included) of a message computed
+    // from their encoding and their offset (scaled by the state's mean neighbour distance),
+    // and adds it to its encoding (residual), so that a corner's score sees the uncovered
+    // cells around it, not only a floor-wide mean and max.
+    int messageRounds = 0;
+    int messageNeighbours = 12;
     // Learning.
     double learningRate = 2.5e-4;
     double gamma = 0.99;

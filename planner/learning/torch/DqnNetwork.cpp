@@ -1,5 +1,8 @@
 #include "learning/torch/DqnNetwork.h"
 
+#include "learning/NearestCorners.h"
+
+#include <algorithm>
 #include <stdexcept>
 
 namespace fc {
@@ -25,6 +28,19 @@ QNetworkImpl::QNetworkImpl(int imageSize, int actionCount, const DqnHyperParamet
         context_ = register_module(
             "context", torch::nn::Linear(torch::nn::LinearOptions(2 * hidden, hidden).bias(false)));
         head2_ = register_module("head2", torch::nn::Linear(hidden, 1));
+        if (params.messageRounds < 0 || params.messageNeighbours < 1)
+            throw std::invalid_argument("QNetwork: message rounds or neighbours out of range");
+        if (params.messageRounds > 0 && channels_ < 9)
+            throw std::invalid_argument("QNetwork: messages need the corners' positions "
+                                        "(graph features 7 and 8)");
+        neighbours_ = params.messageNeighbours;
+        for (int r = 0; r < params.messageRounds; ++r) {
+            const std::string round = std::to_string(r);
+            message_.push_back(
+                register_module("message" + round, torch::nn::Linear(hidden + 3, hidden)));
+            update_.push_back(
+                register_module("update" + round, torch::nn::Linear(2 * hidden, hidden)));
+        }
         return;
     }
     conv1_ = register_module("conv1", conv(params.inputChannels, params.conv1Channels));
@@ -54,6 +70,8 @@ torch::Tensor QNetworkImpl::forwardGraph(torch::Tensor x) {
     const torch::Tensor owner = torch::div(rows, corners, "floor");
     torch::Tensor h = torch::relu(encode1_->forward(flat.index_select(0, rows)));
     h = torch::relu(encode2_->forward(h)); // [valid rows, hidden]
+    if (!message_.empty() && rows.size(0) > 0)
+        h = passMessages(h, owner, flat.index_select(0, rows).slice(1, 7, 9), batch);
     const std::int64_t hidden = h.size(1);
     const torch::Tensor sum = torch::zeros({batch, hidden}).index_add(0, owner, h);
     const torch::Tensor count =
@@ -68,6 +86,53 @@ torch::Tensor QNetworkImpl::forwardGraph(torch::Tensor x) {
     torch::Tensor q = torch::relu(head1_->forward(h) + context.index_select(0, owner));
     q = head2_->forward(q).squeeze(1);
     return torch::zeros({batch * corners}).index_copy(0, rows, q).reshape({batch, corners});
+}
+
+// The neighbours of each valid row are found per sample (rows of one sample are contiguous:
+// `owner` is non-decreasing), among that sample's rows only, by straight-line distance
+// (learning/NearestCorners); a sample with fewer rows than neighbours_ repeats the row
+// itself, which the max ignores.
+torch::Tensor QNetworkImpl::passMessages(torch::Tensor h, const torch::Tensor& owner,
+                                         const torch::Tensor& positions, std::int64_t batch) {
+    const std::int64_t rows = h.size(0);
+    torch::Tensor neighbour, offset;
+    {
+        torch::NoGradGuard noGrad;
+        const torch::Tensor counts = torch::bincount(owner, {}, batch);
+        const auto* count = counts.data_ptr<std::int64_t>();
+        const torch::Tensor xy = positions.contiguous();
+        const int k = static_cast<int>(neighbours_);
+        std::vector<std::int64_t> indices(static_cast<std::size_t>(rows * neighbours_));
+        std::vector<float> scales(static_cast<std::size_t>(rows));
+        std::int64_t first = 0;
+        for (std::int64_t b = 0; b < batch; ++b) {
+            const std::int64_t n = count[b];
+            if (n == 0)
+                continue;
+            const NearestCorners near =
+                nearestCorners(xy.data_ptr<float>() + 2 * first, static_cast<int>(n), k);
+            for (std::size_t i = 0; i < near.index.size(); ++i)
+                indices[static_cast<std::size_t>(first * neighbours_) + i] = near.index[i] + first;
+            std::fill_n(scales.begin() + first, n,
+                        static_cast<float>(std::max(near.meanDistance, 1e-6)));
+            first += n;
+        }
+        neighbour = torch::from_blob(indices.data(), {rows * neighbours_}, torch::kInt64).clone();
+        const torch::Tensor scale =
+            torch::from_blob(scales.data(), {rows, 1, 1}, torch::kFloat32).clone();
+        offset = (xy.index_select(0, neighbour).reshape({rows, neighbours_, 2}) - xy.unsqueeze(1)) /
+                 scale;
+        offset = torch::cat({offset, offset.norm(2, 2, true)}, 2); // and the distance
+    }
+    for (std::size_t r = 0; r < message_.size(); ++r) {
+        const torch::Tensor from =
+            h.index_select(0, neighbour).reshape({rows, neighbours_, h.size(1)});
+        const torch::Tensor message =
+            torch::relu(message_[r]->forward(torch::cat({from, offset}, 2)));
+        const torch::Tensor pooled = std::get<0>(message.max(1)); // [rows, hidden]
+        h = h + torch::relu(update_[r]->forward(torch::cat({h, pooled}, 1)));
+    }
+    return h;
 }
 
 torch::Tensor QNetworkImpl::forwardImage(torch::Tensor x) {

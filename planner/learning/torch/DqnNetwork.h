@@ -16,6 +16,10 @@ public:
 private:
     torch::Tensor forwardImage(torch::Tensor x);
     torch::Tensor forwardGraph(torch::Tensor x);
+    // Message rounds over the valid rows h (owner: their sample, non-decreasing; positions:
+    // their features 7 and 8).
+    torch::Tensor passMessages(torch::Tensor h, const torch::Tensor& owner,
+                               const torch::Tensor& positions, std::int64_t batch);
 
     QNetworkKind kind_ = QNetworkKind::Convolutional;
     std::int64_t imageSize_ = 0, actionCount_ = 0, channels_ = 0;
@@ -25,6 +29,8 @@ private:
     // network's, so that weights of one never load into the other).
     torch::nn::Linear encode1_{nullptr}, encode2_{nullptr}, head1_{nullptr}, head2_{nullptr},
         context_{nullptr};
+    std::int64_t neighbours_ = 0;
+    std::vector<torch::nn::Linear> message_, update_;
 };
 TORCH_MODULE(QNetwork);
 
