@@ -432,12 +432,8 @@
         <translation>%1 hat keinen Namen: Räume brauchen einen in properties.name.</translation>
     </message>
     <message>
-        <source>Features %1 and %2 are both an outer wall (role boundary); a plan has exactly one.</source>
-        <translation>Die Objekte %1 und %2 sind beide eine Außenwand (Rolle boundary); ein Plan hat genau eine.</translation>
-    </message>
-    <message>
-        <source>%1 has %2 separate parts; the outer wall must be one polygon.</source>
-        <translation>%1 hat %2 getrennte Teile; die Außenwand muss ein einziges Polygon sein.</translation>
+        <source>The file holds %1 buildings (outer walls of %2 m², largest first), and a plan holds one: import each building on its own with the command-line tool&apos;s import command.</source>
+        <translation>Die Datei enthält %1 Gebäude (Außenwände von %2 m², das größte zuerst), ein Plan aber nur eines: importieren Sie jedes Gebäude einzeln mit dem Import-Befehl des Kommandozeilenwerkzeugs.</translation>
     </message>
     <message>
         <source>%1 has a hole; floor inside an obstacle is not supported.</source>

@@ -432,12 +432,8 @@
         <translation>%1 n’a pas de nom : les pièces en ont besoin d’un dans properties.name.</translation>
     </message>
     <message>
-        <source>Features %1 and %2 are both an outer wall (role boundary); a plan has exactly one.</source>
-        <translation>Les entités %1 et %2 sont toutes deux un mur extérieur (rôle boundary) ; un plan en a exactement un.</translation>
-    </message>
-    <message>
-        <source>%1 has %2 separate parts; the outer wall must be one polygon.</source>
-        <translation>%1 a %2 parties séparées ; le mur extérieur doit être un seul polygone.</translation>
+        <source>The file holds %1 buildings (outer walls of %2 m², largest first), and a plan holds one: import each building on its own with the command-line tool&apos;s import command.</source>
+        <translation>Le fichier contient %1 bâtiments (murs extérieurs de %2 m², le plus grand d’abord), et un plan n’en contient qu’un : importez chaque bâtiment séparément avec la commande import de l’outil en ligne de commande.</translation>
     </message>
     <message>
         <source>%1 has a hole; floor inside an obstacle is not supported.</source>

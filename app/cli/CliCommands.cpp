@@ -67,7 +67,10 @@ commands:
                 [--room-layers D] [--ignore-layers E] [--units M_PER_UNIT] [--gap M]
                 [--simplify M] [--epsg N] [--storey S] [--height H] [--repair: a plan
                 with self-intersections, obstacles across the wall or overlapping rooms
-                is made valid (GEOS) instead of refused; what changed on stderr]; warnings on stderr,
+                is made valid (GEOS) instead of refused; what changed on stderr]
+                [--building K: a GeoJSON site of several buildings (boundary polygons) is
+                imported one building at a time, 1 = the largest; its obstacles and rooms
+                come with it]; warnings on stderr,
                 one JSON line (areas, obstacles, rooms, warnings, start) on stdout;
                 occupancy maps are cleaned (what was removed under "cleaning"):
                 [--unknown wall|free] [--unknown-gap M2 (0.15): smaller unknown patches inside

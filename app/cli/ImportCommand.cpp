@@ -150,7 +150,7 @@ int commandImport(const Arguments& args) {
                     "--opening",       "--closing",         "--robot-diameter",
                     "--segment-rooms", "--min-room",        "--max-door",
                     "--straighten",    "--wall-band",       "--notch",
-                    "--unknown-gap",   "--repair"});
+                    "--unknown-gap",   "--repair",          "--building"});
     if (args.positional().size() != 1)
         throw InputError("import needs exactly one FILE (see floorcover-cli --help)");
     const std::string& path = args.positional()[0];
@@ -162,6 +162,12 @@ int commandImport(const Arguments& args) {
         throw InputError("--out " + *out + ": expected a .geojson plan or a .fcproj project");
     ImportOptions options = optionsFrom(args);
     options.keepInvalid = args.has("--repair");
+    if (const auto building = args.integer("--building")) {
+        if (*building < 1 || *building > 1'000'000)
+            throw InputError("--building " + std::to_string(*building) +
+                             ": expected 1 (the largest building), 2, ...");
+        options.building = static_cast<int>(*building);
+    }
     const ImportPreview preview = previewImport(path);
     ImportResult result = importPlanFile(path, options);
     for (const std::string& w : result.warnings)

@@ -122,7 +122,7 @@ void writeFileAtomically(const std::string& path, const std::string& contents) {
     syncDirectoryOf(path);
 }
 
-Project loadProjectFile(const std::string& path) {
+Project loadProjectFile(const std::string& path, std::optional<int> building) {
     const std::string extension = lowerCaseExtension(path);
     if (extension != ".fcproj" && extension != ".geojson" && extension != ".json")
         throw InputError(path + ": unsupported file type " +
@@ -137,10 +137,13 @@ Project loadProjectFile(const std::string& path) {
             const nlohmann::json root = formats::parseJsonDocument(text);
             isProject = root.is_object() && root.contains("format");
         }
+        if (isProject && building && *building != 1)
+            throw InputError("a project holds one building; --building " +
+                             std::to_string(*building) + " does not apply");
         if (isProject)
             project = readProject(text);
         else
-            project.plan = readGeoJsonPlan(text);
+            project.plan = readGeoJsonPlan(text, building);
     } catch (const InputError& e) {
         throw InputError(path + ": " + e.what());
     }

@@ -2,10 +2,13 @@
 // properties.role = boundary | obstacle | room.
 #include "formats/JsonSupport.h"
 #include "formats/PlanIO.h"
+#include "geometry/Geometry.h"
 
 #include <algorithm>
 #include <cctype>
+#include <cstdio>
 #include <map>
+#include <optional>
 
 namespace fc {
 
@@ -110,31 +113,93 @@ std::string roomNameOf(const json& properties, const std::string& label) {
     return text;
 }
 
+// One boundary polygon of the file: a building of a site when there are several.
+struct BoundaryPart {
+    Ring outline;
+    std::vector<Ring> holes; // the polygon's interior rings: obstacles
+    int featureNumber = 0;
+    json properties;
+};
+
 struct PlanReader {
     Plan plan;
-    int boundaryFeature = 0;
+    std::vector<BoundaryPart> boundaries; // every boundary polygon, in file order
     json boundaryProperties;
     std::map<std::string, int> roomFeatures; // name -> feature number
 
+    // Several boundary features, or a MultiPolygon boundary, are the buildings of a site:
+    // collected here, one of them chosen after reading (selectBuilding).
     void addBoundary(const std::vector<json>& polygons, int featureNumber, const json& properties) {
-        const std::string label = "boundary (feature " + std::to_string(featureNumber) + ")";
-        if (boundaryFeature != 0)
-            throw InputError("two boundaries (features " + std::to_string(boundaryFeature) +
-                             " and " + std::to_string(featureNumber) +
-                             "); a plan needs exactly one");
-        if (polygons.size() > 1)
-            throw InputError(label + " is a MultiPolygon with " + std::to_string(polygons.size()) +
-                             " parts; the free space must be one polygon");
-        boundaryFeature = featureNumber;
-        boundaryProperties = properties;
-        const json& rings = polygons.front();
-        plan.boundary = formats::ringFromJson(rings[0], label);
-        // Interior rings of the boundary are obstacles (holes in the free space).
-        for (size_t k = 1; k < rings.size(); ++k) {
-            const std::string what = "obstacle " + std::to_string(plan.obstacles.size() + 1) +
-                                     " (hole " + std::to_string(k) + " of the boundary)";
-            plan.obstacles.push_back(formats::ringFromJson(rings[k], what));
+        for (std::size_t part = 0; part < polygons.size(); ++part) {
+            std::string label = "boundary (feature " + std::to_string(featureNumber);
+            if (polygons.size() > 1)
+                label += ", part " + std::to_string(part + 1);
+            label += ")";
+            const json& rings = polygons[part];
+            BoundaryPart b;
+            b.outline = formats::ringFromJson(rings[0], label);
+            const std::string of = polygons.size() > 1
+                                       ? "of the boundary, part " + std::to_string(part + 1)
+                                       : "of the boundary";
+            for (size_t k = 1; k < rings.size(); ++k)
+                b.holes.push_back(
+                    formats::ringFromJson(rings[k], "obstacle " + std::to_string(k) + " (hole " +
+                                                        std::to_string(k) + " " + of + ")"));
+            b.featureNumber = featureNumber;
+            b.properties = properties;
+            boundaries.push_back(std::move(b));
         }
+    }
+
+    // The building `building` (1 = the largest) or the only one; obstacles and rooms of the
+    // other buildings are left out (the first vertex decides where one belongs).
+    void selectBuilding(std::optional<int> building) {
+        if (boundaries.empty())
+            throw InputError("no boundary: one feature needs properties.role = \"boundary\"");
+        std::stable_sort(boundaries.begin(), boundaries.end(),
+                         [](const BoundaryPart& a, const BoundaryPart& b) {
+                             return ringArea(a.outline) > ringArea(b.outline);
+                         });
+        const int count = static_cast<int>(boundaries.size());
+        if (!building && count > 1) {
+            std::string areas;
+            for (int i = 0; i < count && i < 6; ++i)
+                areas += (i > 0 ? ", " : "") + formatArea(ringArea(boundaries[i].outline));
+            if (count > 6)
+                areas += ", ...";
+            throw InputError(std::to_string(count) + " buildings (boundary polygons of " + areas +
+                             " m2, largest first); a plan holds one building: choose one with "
+                             "`floorcover-cli import FILE --building K --out PLAN.fcproj`, "
+                             "K = 1.." +
+                             std::to_string(count));
+        }
+        const int chosen = building.value_or(1);
+        if (chosen < 1 || chosen > count)
+            throw InputError("building " + std::to_string(chosen) +
+                             " does not exist: the file has " + std::to_string(count) +
+                             (count == 1 ? " building" : " buildings"));
+        BoundaryPart& b = boundaries[static_cast<std::size_t>(chosen - 1)];
+        plan.boundary = b.outline;
+        boundaryProperties = b.properties;
+        if (count > 1) {
+            auto inside = [&](const Ring& ring) {
+                return !ring.empty() && pointInRing(plan.boundary, ring.front());
+            };
+            plan.obstacles.erase(std::remove_if(plan.obstacles.begin(), plan.obstacles.end(),
+                                                [&](const Ring& r) { return !inside(r); }),
+                                 plan.obstacles.end());
+            plan.rooms.erase(std::remove_if(plan.rooms.begin(), plan.rooms.end(),
+                                            [&](const Room& r) { return !inside(r.outline); }),
+                             plan.rooms.end());
+        }
+        // Interior rings of the boundary are obstacles (holes in the free space).
+        plan.obstacles.insert(plan.obstacles.begin(), b.holes.begin(), b.holes.end());
+    }
+
+    static std::string formatArea(double area) {
+        char text[32];
+        std::snprintf(text, sizeof text, "%.0f", area);
+        return text;
     }
 
     void addObstacles(const std::vector<json>& polygons, int featureNumber) {
@@ -168,7 +233,7 @@ struct PlanReader {
 
 } // namespace
 
-Plan readGeoJsonPlan(const std::string& text) {
+Plan readGeoJsonPlan(const std::string& text, std::optional<int> building) {
     const json root = formats::parseJsonDocument(text);
     if (!root.is_object())
         throw InputError("not a GeoJSON FeatureCollection (the document is " +
@@ -213,8 +278,7 @@ Plan readGeoJsonPlan(const std::string& text) {
         else
             reader.addRoom(polygons, featureNumber, properties);
     }
-    if (reader.boundaryFeature == 0)
-        throw InputError("no boundary: one feature needs properties.role = \"boundary\"");
+    reader.selectBuilding(building);
     reader.plan.epsg = readEpsg(root, reader.boundaryProperties);
     if (root.contains("name") && root["name"].is_string())
         reader.plan.name = root["name"].get<std::string>();

@@ -4,14 +4,18 @@
 #include "model/Plan.h"
 #include "model/Project.h"
 
+#include <optional>
 #include <string>
 
 namespace fc {
 
 // GeoJSON FeatureCollection of Polygon features with properties.role =
 // boundary | obstacle | room and properties.name for rooms. Polygon interior rings of the
-// boundary become obstacles. Throws InputError (message without the file name).
-Plan readGeoJsonPlan(const std::string& text);
+// boundary become obstacles. Several boundary polygons (features or MultiPolygon parts) are
+// the buildings of a site; a plan holds one: `building` K = 1, 2, ... (largest first) picks
+// it with the obstacles and rooms inside it, and without it such a file is refused with the
+// buildings' areas. Throws InputError (message without the file name).
+Plan readGeoJsonPlan(const std::string& text, std::optional<int> building = std::nullopt);
 std::string writeGeoJsonPlan(const Plan& plan);
 
 // The native project file: a versioned JSON document holding the plan, robot profile,
@@ -21,7 +25,8 @@ Project readProject(const std::string& text);
 std::string writeProject(const Project& project);
 
 // Reads a plan or project file by extension (.geojson/.json with a FeatureCollection,
-// .fcproj), throwing InputError("FILE: problem") on any failure.
-Project loadProjectFile(const std::string& path);
+// .fcproj), throwing InputError("FILE: problem") on any failure. `building`: as in
+// readGeoJsonPlan (a project holds one building already: refused with one).
+Project loadProjectFile(const std::string& path, std::optional<int> building = std::nullopt);
 
 } // namespace fc

@@ -38,6 +38,13 @@ bool contains(const std::string& name, const std::vector<std::string>& words) {
 
 ImportResult importByExtension(const std::string& path, const std::string& extension,
                                const ImportOptions& options) {
+    const bool geoJson = extension == "geojson" || extension == "json" || extension == "fcproj";
+    if (options.building && *options.building != 1 && !geoJson)
+        throw InputError("choosing a building other than the largest applies to GeoJSON plans; "
+                         "a ." +
+                         extension +
+                         " import keeps its largest part and names what it "
+                         "leaves out");
     if (extension == "dxf")
         return importing::importDxf(path, options);
     if (extension == "yaml" || extension == "yml")
@@ -46,9 +53,10 @@ ImportResult importByExtension(const std::string& path, const std::string& exten
         return importing::importWkt(readFile(path), options);
     if (extension == "geojson" || extension == "json" || extension == "fcproj") {
         ImportResult result;
-        result.project = loadProjectFile(path);
+        result.project = loadProjectFile(path, options.building);
         return result;
     }
+
     if (isBuildingModel(extension))
         return importBuildingModel(path, options);
     throw InputError("unknown plan format \"." + extension + "\" (importable: dxf, yaml, wkt, " +

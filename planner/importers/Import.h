@@ -102,6 +102,9 @@ struct ImportOptions {
     // An editor opens a plan that validatePlan refuses for repair (repairPlan); the
     // problem is then a warning, not an error. The CLI keeps refusing.
     bool keepInvalid = false;
+    // GeoJSON sites of several buildings (boundary polygons): the one to import, 1 = the
+    // largest (readGeoJsonPlan). Other formats keep their largest part and warn of the rest.
+    std::optional<int> building;
 };
 
 // What the source held, for an import dialog to offer before the final import.

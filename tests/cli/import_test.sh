@@ -111,5 +111,29 @@ bad "obstacle across the wall" "$work/crossing.wkt" --out "$work/x.geojson"
   grep -q "repaired:" "$work/err" && "$cli" plan "$work/repaired.geojson" >/dev/null 2>&1 ||
   fail "--repair: $(cat "$work/err")"
 
+# A site of two buildings (a MultiPolygon boundary at UTM coordinates): plan refuses it and
+# names the buildings; import takes one at a time with its own obstacles and rooms.
+cat >"$work/site.geojson" <<'JSON'
+{"type":"FeatureCollection","features":[
+{"type":"Feature","properties":{"role":"boundary"},"geometry":{"type":"MultiPolygon","coordinates":[
+ [[[500000,5000000],[500020,5000000],[500020,5000012],[500000,5000012],[500000,5000000]]],
+ [[[500040,5000000],[500050,5000000],[500050,5000008],[500040,5000008],[500040,5000000]]]]}},
+{"type":"Feature","properties":{"role":"obstacle"},"geometry":{"type":"Polygon","coordinates":[[[500044,5000003],[500046,5000003],[500046,5000005],[500044,5000005],[500044,5000003]]]}},
+{"type":"Feature","properties":{"role":"room","name":"Hall B"},"geometry":{"type":"Polygon","coordinates":[[[500040,5000000],[500050,5000000],[500050,5000008],[500040,5000008],[500040,5000000]]]}}
+]}
+JSON
+"$cli" plan "$work/site.geojson" >/dev/null 2>"$work/err"
+[ $? -eq 2 ] && grep -q "2 buildings (boundary polygons of 240, 80 m2" "$work/err" ||
+  fail "site planned as one plan: $(cat "$work/err")"
+"$cli" import "$work/site.geojson" --building 2 --out "$work/b2.fcproj" >"$work/out" 2>/dev/null &&
+  grep -q '"free_area":76.000,"obstacles":1,"rooms":1' "$work/out" &&
+  "$cli" plan "$work/b2.fcproj" >"$work/out" 2>/dev/null && grep -q '"coverage":1.0' "$work/out" ||
+  fail "building 2: $(cat "$work/out")"
+"$cli" import "$work/site.geojson" --building 1 --out "$work/b1.geojson" >"$work/out" 2>/dev/null &&
+  grep -q '"free_area":240.000,"obstacles":0,"rooms":0' "$work/out" || fail "building 1: $(cat "$work/out")"
+bad "building 3 of 2" "$work/site.geojson" --building 3 --out "$work/x.fcproj"
+"$cli" import "$work/site.geojson" --building 0 --out "$work/x.fcproj" >/dev/null 2>&1
+[ $? -eq 2 ] || fail "--building 0 accepted"
+
 [ "$failed" -eq 0 ] && echo "import CLI: all checks passed"
 exit "$failed"

@@ -277,6 +277,9 @@ QStringList plannerMessagesAsWorded() {
     add(geoJsonError(kBoundary + "," + kBoundary));
     const std::string twoParts = multiPolygon("[[" + kSquare + "],[" + kInner + "]]");
     add(geoJsonError(feature(R"({"role":"boundary"})", twoParts)));
+    // A site's second building with a broken hole: named by its part.
+    add(geoJsonError(feature(R"({"role":"boundary"})",
+                             multiPolygon("[[" + kSquare + "],[" + kInner + ",5]]"))));
     add(geoJsonError(
         kBoundary + "," +
         feature(R"({"role":"obstacle"})", polygon("[" + kSquare + "," + kInner + "]"))));

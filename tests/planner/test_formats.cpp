@@ -203,7 +203,7 @@ TEST(PlanIO, ErrorFixturesNameTheFileAndTheProblem) {
         {"missing-role.geojson", {"feature 2", "role"}},
         {"unknown-role.geojson", {"unknown role", "wall"}},
         {"no-boundary.geojson", {"no boundary"}},
-        {"two-boundaries.geojson", {"two boundaries", "features 1 and 2"}},
+        {"two-boundaries.geojson", {"2 buildings", "--building K"}},
         {"string-coordinate.geojson", {"boundary", "non-numeric", "zero"}},
         {"null-coordinate.geojson", {"obstacle 1", "non-numeric", "null"}},
         {"short-ring.geojson", {"obstacle 1", "2 distinct points"}},
@@ -369,4 +369,67 @@ TEST(Format, AtomicWriteFailureKeepsTheOldFile) {
     EXPECT_THROW(writeFileAtomically(path, "data"), InputError);
     EXPECT_EQ(dir.entries(), std::vector<std::string>{"target"});
     EXPECT_TRUE(fs::is_directory(path));
+}
+
+// A site of several buildings: boundary polygons as separate features and as MultiPolygon
+// parts, at UTM coordinates. Refused as one plan with the buildings' areas; read one
+// building at a time (1 = the largest) with its own holes, obstacles and rooms.
+TEST(PlanIO, SiteOfSeveralBuildingsIsReadOneBuildingAtATime) {
+    auto square = [](double x, double y, double w, double h) {
+        char text[256];
+        std::snprintf(text, sizeof text,
+                      "[[%.1f,%.1f],[%.1f,%.1f],[%.1f,%.1f],[%.1f,%.1f],[%.1f,%.1f]]", x, y, x + w,
+                      y, x + w, y + h, x, y + h, x, y);
+        return std::string(text);
+    };
+    const double x0 = 600000.0, y0 = 5400000.0;
+    auto feature = [](const std::string& properties, const std::string& geometry) {
+        return R"({"type":"Feature","properties":)" + properties + R"(,"geometry":)" + geometry +
+               "}";
+    };
+    const std::string site =
+        R"({"type":"FeatureCollection","features":[)" +
+        feature(R"({"role":"boundary"})",
+                R"({"type":"MultiPolygon","coordinates":[[)" + square(x0, y0, 10, 8) + "],[" +
+                    square(x0 + 30, y0, 20, 12) + "," + square(x0 + 34, y0 + 4, 2, 2) + "]]}") +
+        "," +
+        feature(R"({"role":"boundary"})",
+                R"({"type":"Polygon","coordinates":[)" + square(x0, y0 + 40, 5, 5) + "]}") +
+        "," +
+        feature(R"({"role":"obstacle"})",
+                R"({"type":"Polygon","coordinates":[)" + square(x0 + 4, y0 + 3, 2, 2) + "]}") +
+        "," +
+        feature(R"({"role":"room","name":"Annex"})",
+                R"({"type":"Polygon","coordinates":[)" + square(x0, y0, 10, 8) + "]}") +
+        "]}";
+    std::string message;
+    try {
+        readGeoJsonPlan(site);
+    } catch (const InputError& e) {
+        message = e.what();
+    }
+    EXPECT_NE(message.find("3 buildings (boundary polygons of 240, 80, 25 m2"), std::string::npos)
+        << message;
+    EXPECT_NE(message.find("--building K"), std::string::npos) << message;
+
+    const Plan largest = readGeoJsonPlan(site, 1);
+    EXPECT_NEAR(ringArea(largest.boundary), 240.0, 1e-6);
+    ASSERT_EQ(largest.obstacles.size(), 1u); // its hole, not the annex's obstacle
+    EXPECT_NEAR(ringArea(largest.obstacles[0]), 4.0, 1e-6);
+    EXPECT_TRUE(largest.rooms.empty());
+
+    const Plan annex = readGeoJsonPlan(site, 2);
+    EXPECT_NEAR(ringArea(annex.boundary), 80.0, 1e-6);
+    ASSERT_EQ(annex.obstacles.size(), 1u);
+    ASSERT_EQ(annex.rooms.size(), 1u);
+    EXPECT_EQ(annex.rooms[0].name, "Annex");
+
+    const Plan shed = readGeoJsonPlan(site, 3);
+    EXPECT_NEAR(ringArea(shed.boundary), 25.0, 1e-6);
+    EXPECT_TRUE(shed.obstacles.empty() && shed.rooms.empty());
+    EXPECT_THROW(readGeoJsonPlan(site, 4), InputError);
+    EXPECT_THROW(readGeoJsonPlan(site, 0), InputError);
+    // A plan of one building takes building 1 and nothing else.
+    EXPECT_EQ(readGeoJsonPlan(writeGeoJsonPlan(annex), 1).rooms.size(), 1u);
+    EXPECT_THROW(readGeoJsonPlan(writeGeoJsonPlan(annex), 2), InputError);
 }

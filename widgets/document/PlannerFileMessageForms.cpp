@@ -104,16 +104,14 @@ std::vector<MessageForm> fileMessageForms() {
         messageForm(R"re(^{ring} has no name \(rooms need properties\.name\)$)re",
                     QT_TRANSLATE_NOOP("PlannerMessages",
                                       "%1 has no name: rooms need one in properties.name.")),
-        messageForm(
-            R"re(^two boundaries \(features (\d+) and (\d+)\); a plan needs exactly one$)re",
-            QT_TRANSLATE_NOOP("PlannerMessages",
-                              "Features %1 and %2 are both an outer wall (role boundary); "
-                              "a plan has exactly one.")),
-        messageForm(R"re(^{ring} is a MultiPolygon with (\d+) parts; the free space must be one )re"
-                    R"re(polygon$)re",
+        messageForm(R"re(^(\d+) buildings \(boundary polygons of (.*) m2, largest first\); a )re"
+                    R"re(plan holds one building: choose one with `floorcover-cli import FILE )re"
+                    R"re(--building K --out PLAN\.fcproj`, K = 1\.\.\d+$)re",
                     QT_TRANSLATE_NOOP("PlannerMessages",
-                                      "%1 has %2 separate parts; the outer wall must be one "
-                                      "polygon.")),
+                                      "The file holds %1 buildings (outer walls of %2 m², "
+                                      "largest first), and a plan holds one: import each "
+                                      "building on its own with the command-line tool's import "
+                                      "command.")),
         messageForm(R"re(^{ring} has a hole; free space inside an obstacle is not supported$)re",
                     QT_TRANSLATE_NOOP("PlannerMessages",
                                       "%1 has a hole; floor inside an obstacle is not "

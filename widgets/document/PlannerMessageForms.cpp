@@ -9,10 +9,12 @@ namespace fc::ui::messages {
 
 MessageForm messageForm(const char* pattern, const char* sentence) {
     // How the planner names a part of the plan: "boundary", "obstacle 3", "room \"Hall\"",
-    // "room 2", "feature 4 (obstacle)", "obstacle 2 (hole 1 of the boundary)"...
+    // "room 2", "feature 4 (obstacle)", "obstacle 2 (hole 1 of the boundary)",
+    // "boundary (feature 1, part 2)" (a site's second building)...
     static const QString ring = QStringLiteral(
         R"re((?<ring>(?:boundary|obstacle \d+|room(?: ".*"| \d+)?|an unnamed room|feature \d+))re"
-        R"re((?: \((?:feature \d+|hole \d+ of the boundary|boundary|obstacle|room)\))?))re");
+        R"re((?: \((?:feature \d+(?:, part \d+)?|hole \d+ of the boundary(?:, part \d+)?|)re"
+        R"re(boundary|obstacle|room)\))?))re");
     QString text = QString::fromUtf8(pattern);
     text.replace(QLatin1String("{ring}"), ring);
     return {QRegularExpression(text), sentence};
