@@ -182,14 +182,21 @@ struct PlanReader {
         plan.boundary = b.outline;
         boundaryProperties = b.properties;
         if (count > 1) {
-            auto inside = [&](const Ring& ring) {
-                return !ring.empty() && pointInRing(plan.boundary, ring.front());
+            // Left out only when another building holds it: one in no building stays, so the
+            // plan's checks name it (outside the boundary) instead of it vanishing.
+            auto elsewhere = [&](const Ring& ring) {
+                if (ring.empty() || pointInRing(plan.boundary, ring.front()))
+                    return false;
+                return std::any_of(boundaries.begin(), boundaries.end(),
+                                   [&](const BoundaryPart& other) {
+                                       return pointInRing(other.outline, ring.front());
+                                   });
             };
             plan.obstacles.erase(std::remove_if(plan.obstacles.begin(), plan.obstacles.end(),
-                                                [&](const Ring& r) { return !inside(r); }),
+                                                [&](const Ring& r) { return elsewhere(r); }),
                                  plan.obstacles.end());
             plan.rooms.erase(std::remove_if(plan.rooms.begin(), plan.rooms.end(),
-                                            [&](const Room& r) { return !inside(r.outline); }),
+                                            [&](const Room& r) { return elsewhere(r.outline); }),
                              plan.rooms.end());
         }
         // Interior rings of the boundary are obstacles (holes in the free space).

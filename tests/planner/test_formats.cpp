@@ -2,6 +2,7 @@
 #include "TestPlans.h"
 #include "formats/FileIO.h"
 #include "formats/PlanIO.h"
+#include "model/Validation.h"
 
 #include <algorithm>
 #include <filesystem>
@@ -432,4 +433,14 @@ TEST(PlanIO, SiteOfSeveralBuildingsIsReadOneBuildingAtATime) {
     // A plan of one building takes building 1 and nothing else.
     EXPECT_EQ(readGeoJsonPlan(writeGeoJsonPlan(annex), 1).rooms.size(), 1u);
     EXPECT_THROW(readGeoJsonPlan(writeGeoJsonPlan(annex), 2), InputError);
+
+    // An obstacle in no building is never dropped quietly: it stays, and the plan's checks
+    // refuse it as lying outside the boundary.
+    std::string orphan = site;
+    orphan.insert(orphan.size() - 2,
+                  "," + feature(R"({"role":"obstacle"})", R"({"type":"Polygon","coordinates":[)" +
+                                                              square(x0 + 100, y0, 1, 1) + "]}"));
+    const Plan withOrphan = readGeoJsonPlan(orphan, 1);
+    EXPECT_EQ(withOrphan.obstacles.size(), 2u);
+    EXPECT_THROW(validatePlan(withOrphan, RobotProfile{}), InputError);
 }
