@@ -1,8 +1,10 @@
 #include "geometry/Clearance.h"
 
 #include <algorithm>
+#include <cstdint>
 #include <limits>
 #include <queue>
+#include <unordered_set>
 
 namespace fc {
 namespace {
@@ -51,6 +53,41 @@ bool capsuleSpan(Vec2 a, Vec2 b, double x, double r, double& lo, double& hi) {
     }
     return lo < hi;
 }
+
+// Pairs of search points already found blocked during one window search. A node that no
+// closed node sees is re-tested against every closed node each time a new one pushes it, so
+// on traced maps four in five segment tests repeated a known answer (faculty map: 11.7 of
+// 15.0 million). Only blocked answers repeat: a clear one closes its node.
+class BlockedPairs {
+public:
+    explicit BlockedPairs(int n) : n_(n) {
+        if (n_ <= kDenseLimit)
+            bits_.assign((static_cast<std::size_t>(n_) * n_ + 63) / 64, 0);
+    }
+    bool has(int i, int j) const {
+        const std::uint64_t k = key(i, j);
+        if (n_ <= kDenseLimit)
+            return (bits_[k >> 6] >> (k & 63)) & 1u;
+        return sparse_.count(k) != 0;
+    }
+    void add(int i, int j) {
+        const std::uint64_t k = key(i, j);
+        if (n_ <= kDenseLimit)
+            bits_[k >> 6] |= std::uint64_t{1} << (k & 63);
+        else
+            sparse_.insert(k);
+    }
+
+private:
+    static constexpr int kDenseLimit = 4096; // 2 MB of bits at most
+    std::uint64_t key(int i, int j) const {
+        return static_cast<std::uint64_t>(std::min(i, j)) * static_cast<std::uint64_t>(n_) +
+               static_cast<std::uint64_t>(std::max(i, j));
+    }
+    int n_;
+    std::vector<std::uint64_t> bits_;
+    std::unordered_set<std::uint64_t> sparse_;
+};
 
 } // namespace
 
@@ -232,6 +269,17 @@ Polyline ClearanceField::searchWindow(Vec2 a, Vec2 b, const BoundingBox& window,
     g[0] = 0;
     open.push({distance(a, b), 0, 0, -1, true});
     std::vector<std::pair<double, int>> parents;
+    BlockedPairs blocked(n);
+    // A known answer still counts against the budget, so that a search gives up where it
+    // did before the memo: the budget bounds the questions, the memo their price.
+    auto sees = [&](int i, int j) {
+        if (blocked.has(i, j))
+            return false;
+        if (segmentIsClear(pts[i], pts[j]))
+            return true;
+        blocked.add(i, j);
+        return false;
+    };
     while (!open.empty()) {
         const Entry top = open.top();
         open.pop();
@@ -242,7 +290,7 @@ Polyline ClearanceField::searchWindow(Vec2 a, Vec2 b, const BoundingBox& window,
             if (checksLeft == 0)
                 return {};
             --checksLeft;
-            if (!segmentIsClear(pts[top.parent], pts[u])) {
+            if (!sees(top.parent, u)) {
                 parents.clear();
                 for (const int c : closedNodes)
                     if (c != top.parent)
@@ -257,7 +305,7 @@ Polyline ClearanceField::searchWindow(Vec2 a, Vec2 b, const BoundingBox& window,
                     if (checksLeft == 0)
                         return {};
                     --checksLeft;
-                    if (segmentIsClear(pts[c], pts[u])) {
+                    if (sees(c, u)) {
                         pushed[u] = nd;
                         open.push({nd + distance(pts[u], b), nd, u, c, true});
                         break;

@@ -1,7 +1,9 @@
+#include "geometry/Clearance.h"
 #include "geometry/Geometry.h"
 #include "geometry/SegmentIndex.h"
 
 #include <gtest/gtest.h>
+#include <random>
 
 using namespace fc;
 
@@ -34,4 +36,104 @@ TEST(Geometry, SegmentIndexClearance) {
     EXPECT_NEAR(idx.distanceToWalls({3, 4}), 3.0, 1e-12);
     EXPECT_NEAR(idx.segmentClearance({2, 5}, {8, 5}), 2.0, 1e-12);
     EXPECT_NEAR(idx.polylineClearance({{1, 1}, {5, 5}, {9, 9}}), 1.0, 1e-12);
+}
+
+namespace {
+
+// A ragged ring (a traced wall: many short edges, jittered) around a square of side `size`.
+Ring raggedSquare(std::mt19937& rng, double size, int perSide) {
+    std::uniform_real_distribution<double> jitter(-0.08, 0.08);
+    Ring ring;
+    const Vec2 corners[4] = {{0, 0}, {size, 0}, {size, size}, {0, size}};
+    for (int side = 0; side < 4; ++side)
+        for (int k = 0; k < perSide; ++k) {
+            const Vec2 p = corners[side] + (corners[(side + 1) % 4] - corners[side]) *
+                                               (static_cast<double>(k) / perSide);
+            ring.push_back({p.x + jitter(rng), p.y + jitter(rng)});
+        }
+    return ring;
+}
+
+} // namespace
+
+// The index asks several small boxes along a slanted segment instead of its whole bounding
+// box: the answer must still be that of testing every wall.
+TEST(Geometry, SegmentKeepsDistanceAgreesWithAFullScan) {
+    std::mt19937 rng(11);
+    std::vector<Ring> rings{raggedSquare(rng, 20.0, 120)};
+    std::uniform_real_distribution<double> at(1.0, 19.0), side(0.2, 0.6);
+    for (int k = 0; k < 12; ++k) { // pillars
+        const Vec2 c{at(rng), at(rng)};
+        const double s = side(rng);
+        rings.push_back(
+            {{c.x - s, c.y - s}, {c.x + s, c.y - s}, {c.x + s, c.y + s}, {c.x, c.y + 1.5 * s}});
+    }
+    const SegmentIndex index(rings);
+    std::uniform_real_distribution<double> anywhere(0.3, 19.7), distance(0.05, 0.8);
+    int blocked = 0, clear = 0;
+    for (int trial = 0; trial < 3000; ++trial) {
+        const Vec2 a{anywhere(rng), anywhere(rng)};
+        const Vec2 b =
+            trial % 3 == 0 ? Vec2{a.x + 0.3, anywhere(rng)} : Vec2{anywhere(rng), anywhere(rng)};
+        const double d = distance(rng);
+        bool expected = true;
+        for (const Segment& s : index.segments())
+            expected = expected && segmentSegmentDistance(a, b, s.a, s.b) >= d;
+        ASSERT_EQ(index.segmentKeepsDistance(a, b, d), expected)
+            << "segment (" << a.x << ", " << a.y << ") - (" << b.x << ", " << b.y << "), d " << d;
+        (expected ? clear : blocked)++;
+    }
+    EXPECT_GT(clear, 100); // both answers were asked
+    EXPECT_GT(blocked, 100);
+}
+
+// Paths round a long wall on a floor with traced (ragged) walls and many pillars: the
+// visibility search remembers blocked pairs within one search; its paths must stay clear
+// and short, and a point in a closed room must get no path at all.
+TEST(Geometry, FindPathOnARaggedFloorIsClearAndShort) {
+    std::mt19937 rng(5);
+    std::vector<Ring> rings{raggedSquare(rng, 20.0, 100)};
+    rings.push_back({{9.8, 0.5}, {10.2, 0.5}, {10.2, 15.0}, {9.8, 15.0}}); // the long wall
+    std::uniform_real_distribution<double> at(1.5, 18.5);
+    for (int k = 0; k < 25; ++k) {
+        const Vec2 c{at(rng), at(rng)};
+        if (std::abs(c.x - 10.0) < 1.0 || (c.x > 15.5 && c.y > 15.5))
+            continue; // keep the wall's end passable and the closed room apart
+        rings.push_back({{c.x - 0.2, c.y - 0.2},
+                         {c.x + 0.2, c.y - 0.2},
+                         {c.x + 0.2, c.y + 0.2},
+                         {c.x - 0.2, c.y + 0.2}});
+    }
+    rings.push_back({{16, 16}, {19, 16}, {19, 19}, {16, 19}}); // a closed room's outer wall
+    rings.push_back({{16.2, 16.2}, {16.2, 18.8}, {18.8, 18.8}, {18.8, 16.2}}); // its inside
+    const double r = 0.3;
+    const ClearanceField field(rings, r);
+    auto clearOfEveryWall = [&](const Polyline& line) {
+        for (size_t i = 1; i < line.size(); ++i)
+            for (const Segment& s : field.walls().segments())
+                if (segmentSegmentDistance(line[i - 1], line[i], s.a, s.b) <
+                    r - field.acceptance() - 1e-9)
+                    return false;
+        return true;
+    };
+    int found = 0;
+    for (double y : {2.0, 5.0, 9.0}) {
+        const Vec2 a{4.0, y}, b{16.0, y};
+        if (!field.isClear(a) || !field.isClear(b))
+            continue;
+        const Polyline path = field.findPath(a, b);
+        ASSERT_GE(path.size(), 3u) << y; // it must bend round the wall
+        EXPECT_EQ(path.front().x, a.x);
+        EXPECT_EQ(path.back().y, b.y);
+        EXPECT_TRUE(clearOfEveryWall(path)) << y;
+        // Round the wall's end (10, 15) at the robot's radius: a path over it is at least
+        // this long; pillars may add a little, never a detour of metres.
+        const Vec2 tip{10.0, 15.0 + r};
+        const double over = distance(a, tip) + distance(tip, b);
+        EXPECT_GE(polylineLength(path), over - 0.05) << y;
+        EXPECT_LE(polylineLength(path), over * 1.08) << y;
+        ++found;
+    }
+    EXPECT_GE(found, 2);
+    EXPECT_TRUE(field.findPath({4.0, 17.0}, {17.5, 17.5}).empty());
 }
