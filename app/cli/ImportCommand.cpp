@@ -142,15 +142,34 @@ ImportOptions optionsFrom(const Arguments& args) {
 } // namespace
 
 int commandImport(const Arguments& args) {
-    args.allowOnly({"--out",           "--boundary-layers", "--obstacle-layers",
-                    "--room-layers",   "--ignore-layers",   "--units",
-                    "--gap",           "--simplify",        "--epsg",
-                    "--storey",        "--height",          "--no-cleaning",
-                    "--unknown",       "--speckle",         "--fragment",
-                    "--opening",       "--closing",         "--robot-diameter",
-                    "--segment-rooms", "--min-room",        "--max-door",
-                    "--straighten",    "--wall-band",       "--notch",
-                    "--unknown-gap",   "--repair",          "--building"});
+    args.allowOnly({"--out",
+                    "--boundary-layers",
+                    "--obstacle-layers",
+                    "--room-layers",
+                    "--ignore-layers",
+                    "--units",
+                    "--gap",
+                    "--simplify",
+                    "--epsg",
+                    "--storey",
+                    "--height",
+                    "--no-cleaning",
+                    "--unknown",
+                    "--speckle",
+                    "--fragment",
+                    "--smooth",
+                    "--opening",
+                    "--closing",
+                    "--robot-diameter",
+                    "--segment-rooms",
+                    "--min-room",
+                    "--max-door",
+                    "--straighten",
+                    "--wall-band",
+                    "--notch",
+                    "--unknown-gap",
+                    "--repair",
+                    "--building"});
     if (args.positional().size() != 1)
         throw InputError("import needs exactly one FILE (see floorcover-cli --help)");
     const std::string& path = args.positional()[0];

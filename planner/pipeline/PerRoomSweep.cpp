@@ -101,7 +101,7 @@ bool reachesAny(const PreparedPlan& prepared, const std::vector<std::string>& ro
     const Decomposition& dec = prepared.decomposition;
     int count = 0;
     const std::vector<int> comp = graphComponents(g, count);
-    const int main = comp[nearestNode(g, dec.frame.toLocal(at))];
+    const int main = comp[joinableNode(prepared, dec.frame.toLocal(at))];
     for (const GraphCell& c : g.cells) {
         const std::string& room = dec.roomNames[c.room];
         if (c.reachable && !c.nodes.empty() && comp[c.nodes.front()] == main &&
@@ -320,12 +320,11 @@ PlanResult planWithRoomAngles(const PlanRequest& request,
             home = worldOf(part.prepared, part.query.startNode);
         // A hand-over point the query moved (it lay in a pocket of this part's graph): the
         // path joins the moved corner, and reaches it from the previous part by a transit.
-        const CornerGraph& graph = part.prepared.graph;
         const Decomposition& dec = part.prepared.decomposition;
         std::optional<Vec2> pathStart = start, pathEnd = end;
         Polyline handOver;
         if (k > 0 && start &&
-            part.query.startNode != nearestNode(graph, dec.frame.toLocal(*start))) {
+            part.query.startNode != joinableNode(part.prepared, dec.frame.toLocal(*start))) {
             pathStart = worldOf(part.prepared, part.query.startNode);
             handOver =
                 dec.clearance().findPath(dec.frame.toLocal(*start), dec.frame.toLocal(*pathStart));
@@ -333,7 +332,7 @@ PlanResult planWithRoomAngles(const PlanRequest& request,
                 throw SolverError("the rooms cannot be joined: no collision-free way from " +
                                   group.rooms.front() + "'s neighbour into it");
         }
-        if (end && part.query.endNode != nearestNode(graph, dec.frame.toLocal(*end)))
+        if (end && part.query.endNode != joinableNode(part.prepared, dec.frame.toLocal(*end)))
             pathEnd = worldOf(part.prepared, part.query.endNode);
         ChosenPath chosen = choosePathByTime(
             part.prepared, part.query,

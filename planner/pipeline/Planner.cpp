@@ -159,6 +159,36 @@ std::vector<double> orderHintFrom(const PreparedPlan& prepared, const CoveragePa
     return rank;
 }
 
+int joinableNode(const PreparedPlan& prepared, Vec2 p, const std::vector<int>* components,
+                 int only) {
+    const CornerGraph& g = prepared.graph;
+    const ClearanceField& field = prepared.decomposition.clearance();
+    auto allowed = [&](const GraphNode& node) {
+        return only < 0 || components == nullptr || (*components)[node.id] == only;
+    };
+    // Nearest first among corners of cells the robot sweeps: a cell without stripes (too
+    // narrow, or swept by its neighbours on the dense lattice) keeps a corner at its middle
+    // that nothing joins. region >= 0: only corners in that open region.
+    auto nearest = [&](int region) {
+        int best = -1;
+        for (int pass = 0; pass < 2 && best < 0; ++pass) {
+            double bestDistance = INFINITY;
+            for (const GraphNode& node : g.nodes)
+                if ((pass == 1 || g.cells[node.cell].reachable) && allowed(node) &&
+                    distance(node.position, p) < bestDistance &&
+                    (region < 0 || field.openRegionOf(node.position) == region))
+                    bestDistance = distance(node.position, p), best = node.id;
+        }
+        return best;
+    };
+    const int closest = nearest(-1);
+    if (closest < 0 || field.segmentIsClear(p, g.nodes[closest].position))
+        return closest;
+    const int region = field.openRegionOf(p);
+    const int inRegion = region >= 0 ? nearest(region) : -1;
+    return inRegion >= 0 ? inRegion : closest;
+}
+
 Query makeQuery(const PreparedPlan& prepared, const std::vector<std::string>& rooms,
                 std::optional<Vec2> start, std::optional<Vec2> end, std::uint64_t seed,
                 std::vector<std::string>& warnings, std::optional<Vec2> mainRegionAt,
@@ -188,32 +218,18 @@ Query makeQuery(const PreparedPlan& prepared, const std::vector<std::string>& ro
 
     int componentCount = 0;
     const std::vector<int> comp = graphComponents(g, componentCount);
-    // The corner nearest p among those of component `only` (-1: any), of a cell the robot
-    // sweeps where there is one: a cell without stripes (too narrow, or swept by its
-    // neighbours on the dense lattice) keeps a corner at its middle that nothing joins.
-    auto nearestIn = [&](Vec2 p, int only) {
-        int best = -1;
-        for (int pass = 0; pass < 2 && best < 0; ++pass) {
-            double bestDistance = INFINITY;
-            for (const GraphNode& node : g.nodes)
-                if ((pass == 1 || g.cells[node.cell].reachable) &&
-                    (only < 0 || comp[node.id] == only) &&
-                    distance(node.position, p) < bestDistance)
-                    bestDistance = distance(node.position, p), best = node.id;
-        }
-        return best;
+    auto joinableIn = [&](Vec2 p, int only) {
+        return joinableNode(prepared, p, only >= 0 ? &comp : nullptr, only);
     };
-    const int mainPart = mainRegionAt ? comp[nearestNode(g, dec.frame.toLocal(*mainRegionAt))] : -1;
-    if (start && mainPart >= 0)
-        q.startNode = nearestIn(dec.frame.toLocal(*start), mainPart);
-    else if (start)
-        q.startNode = nearestNode(g, dec.frame.toLocal(*start));
+    const int mainPart = mainRegionAt ? comp[joinableIn(dec.frame.toLocal(*mainRegionAt), -1)] : -1;
+    if (start)
+        q.startNode = joinableIn(dec.frame.toLocal(*start), mainPart);
     else
         q.startNode = defaultStartNode(prepared, q.required, mainPart);
     if (q.startNode < 0)
         throw InputError("no selected area can be reached from the start point");
-    q.endNode =
-        end ? nearestIn(dec.frame.toLocal(*end), endMayMove ? comp[q.startNode] : -1) : q.startNode;
+    q.endNode = end ? joinableIn(dec.frame.toLocal(*end), endMayMove ? comp[q.startNode] : -1)
+                    : q.startNode;
 
     if (comp[q.endNode] != comp[q.startNode])
         throw InputError("the end point cannot be reached from the start point");

@@ -98,6 +98,14 @@ bool solverNeedsClassicStages(const std::string& name);
 int defaultStartNode(const PreparedPlan& prepared, const std::vector<char>& required,
                      int inPart = -1);
 
+// The corner a point p (local frame) snaps to: the nearest one, of a cell the robot sweeps
+// where there is one; where the straight way there is blocked, the nearest in p's open
+// region (the nearest may lie across a wall from p while p's own part of the floor is
+// beyond: on a speck-ridden map a corner 0.8 m away through a thin wall, which the path
+// could never join). components/only: only corners of that part of the graph.
+int joinableNode(const PreparedPlan& prepared, Vec2 p, const std::vector<int>* components = nullptr,
+                 int only = -1);
+
 // Required cells from room names, start/end snapped to the nearest corners. Cells that
 // cannot be reached from the start are left out with a warning. Throws InputError for
 // unknown rooms or an end that cannot be reached. For points the planner chose itself (where

@@ -42,6 +42,17 @@ sys.exit(0 if s["format"] == "ros-map" and abs(s["free_area"] - 6) < 0.06 and s[
 grep -q '"hasStart": *true' "$work/map.fcproj" || grep -q '"start"' "$work/map.fcproj" ||
   fail "map project has no start"
 
+# Every cleaning switch the help lists is accepted (--smooth was listed but refused).
+"$cli" import "$work/map.yaml" --out "$work/map-switches.fcproj" --smooth off --straighten off \
+  --unknown free --unknown-gap 0.1 --speckle 0.2 --fragment 0.5 --opening 0.2 --closing 0 \
+  --robot-diameter 0.6 --wall-band 1 --notch 0.1 --segment-rooms none --min-room 1 \
+  --max-door 1.6 >"$work/out" 2>"$work/err" || fail "cleaning switches: $(cat "$work/err")"
+"$cli" --help | grep -o -- '\[--[a-z-]*' | sed 's/\[//' | sort -u >"$work/listed"
+for option in --smooth --straighten --unknown --unknown-gap --speckle --fragment --opening \
+  --closing --wall-band --notch --segment-rooms --min-room --max-door --no-cleaning; do
+  grep -qx -- "$option" "$work/listed" || fail "help does not list $option"
+done
+
 # Map images written by GDAL, not by us: office and simple-diamond (a slanted obstacle)
 # rasterized at 5 cm the way a map
 # server stores a recorded map (free 254, walls and furniture 0, unknown 205 around it), as

@@ -237,3 +237,64 @@ TEST(Pipeline, AChamferedHallsClosedTourStillComesBackAlongAHeadland) {
     EXPECT_GE(res.metrics.coverage, 0.999);
     EXPECT_LE(res.metrics.length, 1.02 * res.metrics.ideal);
 }
+
+// A closet inside a hall, behind a slot narrower than the robot, its wall 0.1 m thick: from
+// a point just outside the closet wall the nearest corner can be the closet's, which the
+// robot never reaches from there. Snapping to it made the path's first or last join fail
+// ("cannot be joined to the corner graph"): a speck-ridden map failed that way after
+// planning for a minute. The start snaps to a corner it can drive to, and the plan covers
+// the hall.
+TEST(Pipeline, PointsSnapToCornersTheRobotCanReachNotOnesAcrossAWall) {
+    Plan plan;
+    plan.boundary = {{0, 0}, {12, 0}, {12, 9}, {0, 9}};
+    // The closet's wall: a C whose slot (x 5.6-5.9 at the top) is 0.3 m, the robot 0.6 m.
+    plan.obstacles.push_back({{4, 3.2},
+                              {6, 3.2},
+                              {6, 5.2},
+                              {5.9, 5.2},
+                              {5.9, 3.3},
+                              {4.1, 3.3},
+                              {4.1, 5.1},
+                              {5.6, 5.1},
+                              {5.6, 5.2},
+                              {4, 5.2}});
+    PlanRequest request = requestFor(plan, "heuristic");
+    const PlanResult first = planCoverage(request);
+    const PreparedPlan& prepared = first.prepared;
+    const ClearanceField& field = prepared.decomposition.clearance();
+    const Frame& frame = prepared.decomposition.frame;
+    const int hall = field.openRegionOf(frame.toLocal({1, 1}));
+    ASSERT_GE(hall, 0);
+    // Points of the hall within 0.6 m of the closet's outer wall whose nearest corner lies
+    // in another region (the closet).
+    std::vector<Vec2> tricky;
+    for (double x = 3.5; x <= 6.5; x += 0.05)
+        for (double y = 2.6; y <= 5.8; y += 0.05) {
+            const Vec2 local = frame.toLocal({x, y});
+            if (!field.isClear(local) || field.openRegionOf(local) != hall)
+                continue;
+            const int nearest = nearestNode(prepared.graph, local);
+            if (field.openRegionOf(prepared.graph.nodes[nearest].position) != hall)
+                tricky.push_back({x, y});
+        }
+    ASSERT_FALSE(tricky.empty()) << "no point whose nearest corner is in the closet";
+    for (const Vec2& p : tricky) {
+        const int node = joinableNode(prepared, frame.toLocal(p));
+        ASSERT_GE(node, 0);
+        EXPECT_EQ(field.openRegionOf(prepared.graph.nodes[node].position), hall)
+            << p.x << ", " << p.y;
+    }
+    request.start = tricky.front();
+    const PlanResult result = planCoverage(request);
+    expectCollisionFree(result, "start beside the closet");
+    // As much as from the default start: all but the closet, which counts as not reached.
+    EXPECT_GE(result.metrics.coverage, first.metrics.coverage - 0.005);
+    EXPECT_TRUE(std::any_of(result.warnings.begin(), result.warnings.end(),
+                            [](const std::string& w) {
+                                return w.find("cannot be reached from the start") !=
+                                       std::string::npos;
+                            }))
+        << "the closet is left out loudly";
+    EXPECT_LT(distance(result.path.points.front(), tricky.front()), 1e-6);
+    EXPECT_EQ(field.openRegionOf(frame.toLocal(result.path.points.back())), hall);
+}
