@@ -217,9 +217,14 @@ Polyline ClearanceField::findPath(Vec2 a, Vec2 b, const std::vector<Vec2>& hints
         window.add(b);
         window.minX -= margin, window.minY -= margin;
         window.maxX += margin, window.maxY += margin;
-        Polyline path = searchWindow(a, b, window, hints, checksLeft);
-        if (!path.empty())
-            return path;
+        // A window the grid proves holds no path is not searched (once the grid exists).
+        const bool mayHoldPath =
+            !regionsReady_.load(std::memory_order_acquire) || regions_->mayJoinWithin(a, b, window);
+        if (mayHoldPath) {
+            Polyline path = searchWindow(a, b, window, hints, checksLeft);
+            if (!path.empty())
+                return path;
+        }
         if (checksLeft == 0 || (round == 0 && provablyApart()))
             return {};
         const bool coversAll = window.minX <= extent_.minX && window.minY <= extent_.minY &&

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
+#include <queue>
 
 namespace fc {
 
@@ -103,6 +105,55 @@ int OpenRegions::regionOf(Vec2 p) const {
     if (i < 0 || j < 0 || i >= nx_ || j >= ny_)
         return -1;
     return label_[index(i, j)];
+}
+
+bool OpenRegions::mayJoinWithin(Vec2 a, Vec2 b, const BoundingBox& window) const {
+    auto nodeOf = [&](Vec2 p, int& i, int& j) {
+        i = static_cast<int>(std::lround((p.x - box_.minX) / h_));
+        j = static_cast<int>(std::lround((p.y - box_.minY) / h_));
+        return i >= 0 && j >= 0 && i < nx_ && j < ny_ && label_[index(i, j)] >= 0;
+    };
+    int ia, ja, ib, jb;
+    if (!nodeOf(a, ia, ja) || !nodeOf(b, ib, jb))
+        return true; // not a clear point's node: nothing proved
+    if (label_[index(ia, ja)] != label_[index(ib, jb)])
+        return false;
+    const int i0 = std::max(0, static_cast<int>(std::floor((window.minX - box_.minX) / h_)) - 1);
+    const int j0 = std::max(0, static_cast<int>(std::floor((window.minY - box_.minY) / h_)) - 1);
+    const int i1 =
+        std::min(nx_ - 1, static_cast<int>(std::ceil((window.maxX - box_.minX) / h_)) + 1);
+    const int j1 =
+        std::min(ny_ - 1, static_cast<int>(std::ceil((window.maxY - box_.minY) / h_)) + 1);
+    if (ia < i0 || ia > i1 || ja < j0 || ja > j1 || ib < i0 || ib > i1 || jb < j0 || jb > j1)
+        return true;
+    const int w = i1 - i0 + 1;
+    std::vector<char> seen(static_cast<size_t>(w) * (j1 - j0 + 1), 0);
+    auto local = [&](int i, int j) { return static_cast<size_t>(j - j0) * w + (i - i0); };
+    // Best first towards b: where a path exists it is found after a corridor of nodes, and
+    // only a window without one is explored whole.
+    using Entry = std::pair<int, int>; // (Chebyshev distance to b, node index)
+    std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> open;
+    auto push = [&](int i, int j) {
+        seen[local(i, j)] = 1;
+        open.push({std::max(std::abs(i - ib), std::abs(j - jb)), static_cast<int>(index(i, j))});
+    };
+    push(ia, ja);
+    while (!open.empty()) {
+        const int c = open.top().second;
+        open.pop();
+        const int i = c % nx_, j = c / nx_;
+        if (i == ib && j == jb)
+            return true;
+        for (int dj = -1; dj <= 1; ++dj)
+            for (int di = -1; di <= 1; ++di) {
+                const int x = i + di, y = j + dj;
+                if (x < i0 || y < j0 || x > i1 || y > j1 || seen[local(x, y)] ||
+                    label_[index(x, y)] < 0)
+                    continue;
+                push(x, y);
+            }
+    }
+    return false;
 }
 
 } // namespace fc

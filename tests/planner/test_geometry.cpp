@@ -1,5 +1,6 @@
 #include "geometry/Clearance.h"
 #include "geometry/Geometry.h"
+#include "geometry/OpenRegions.h"
 #include "geometry/SegmentIndex.h"
 
 #include <gtest/gtest.h>
@@ -116,6 +117,11 @@ TEST(Geometry, FindPathOnARaggedFloorIsClearAndShort) {
                     return false;
         return true;
     };
+    BoundingBox extent;
+    for (const Ring& ring : rings)
+        for (const Vec2& p : ring)
+            extent.add(p);
+    const OpenRegions regions(field.walls(), extent, r - field.acceptance());
     int found = 0;
     for (double y : {2.0, 5.0, 9.0}) {
         const Vec2 a{4.0, y}, b{16.0, y};
@@ -132,8 +138,20 @@ TEST(Geometry, FindPathOnARaggedFloorIsClearAndShort) {
         const double over = distance(a, tip) + distance(tip, b);
         EXPECT_GE(polylineLength(path), over - 0.05) << y;
         EXPECT_LE(polylineLength(path), over * 1.08) << y;
+        // The grid's proof: a window round the path may hold it; one that stops short of
+        // the wall's end cannot, and is then not searched.
+        BoundingBox around;
+        for (const Vec2& p : path)
+            around.add(p);
+        EXPECT_TRUE(regions.mayJoinWithin(a, b, around)) << y;
+        BoundingBox below = around;
+        below.maxY = 14.0;
+        EXPECT_FALSE(regions.mayJoinWithin(a, b, below)) << y;
         ++found;
     }
     EXPECT_GE(found, 2);
     EXPECT_TRUE(field.findPath({4.0, 17.0}, {17.5, 17.5}).empty());
+    EXPECT_FALSE(regions.mayJoinWithin({4.0, 17.0}, {17.5, 17.5}, extent));
+    // Asked again once the grid exists (the first failure builds it): still no path.
+    EXPECT_TRUE(field.findPath({4.0, 17.5}, {17.5, 17.0}).empty());
 }
