@@ -61,6 +61,37 @@ struct TouchUp {
     Vec2 a, b;
 };
 
+// The touch-ups of `left` whose strokes lie on t's line (within a millionth of W) and overlap
+// t's stroke or one another, t included: a run of short strokes along one stretch of wall.
+std::vector<const TouchUp*> collinearRun(const std::vector<const TouchUp*>& left, const TouchUp& t,
+                                         double w) {
+    const double length = distance(t.a, t.b);
+    std::vector<const TouchUp*> run{&t};
+    if (length < 1e-12)
+        return run;
+    const Vec2 u = (t.b - t.a) * (1.0 / length);
+    const double tolerance = 1e-6 * w;
+    auto along = [&](Vec2 p) { return dot(p - t.a, u); };
+    double lo = 0.0, hi = length;
+    for (bool grown = true; grown;) {
+        grown = false;
+        for (const TouchUp* s : left) {
+            if (std::find(run.begin(), run.end(), s) != run.end() ||
+                std::abs(cross(u, s->a - t.a)) > tolerance ||
+                std::abs(cross(u, s->b - t.a)) > tolerance)
+                continue;
+            const double sLo = std::min(along(s->a), along(s->b));
+            const double sHi = std::max(along(s->a), along(s->b));
+            if (sLo > hi + tolerance || sHi < lo - tolerance)
+                continue;
+            run.push_back(s);
+            lo = std::min(lo, sLo), hi = std::max(hi, sHi);
+            grown = true;
+        }
+    }
+    return run;
+}
+
 // Touch-ups that leave from path vertices close together (within W, along at most 2 W of
 // path: the many vertices of one traced stripe end under a slanted wall) are driven as one
 // chain from the first vertex: stroke to nearest stroke, each swept once from its nearer
@@ -128,8 +159,22 @@ std::map<int, std::vector<Polyline>> chainedDetours(const ClearanceField& field,
                        std::min(distance(at, y->a), distance(at, y->b));
             });
             const TouchUp& t = **nearest;
-            const bool fromA = distance(at, t.a) <= distance(at, t.b);
-            const Vec2 enter = fromA ? t.a : t.b, leave = fromA ? t.b : t.a;
+            // Strokes on t's line that overlap it are swept as one stroke: one after another
+            // they went up, back a little, up again along a ragged wall.
+            const std::vector<const TouchUp*> line = collinearRun(left, t, w);
+            double lo = 0.0, hi = 0.0;
+            const Vec2 u = (t.b - t.a) * (1.0 / std::max(distance(t.a, t.b), 1e-12));
+            for (const TouchUp* s : line)
+                for (const Vec2 p : {s->a, s->b}) {
+                    lo = std::min(lo, dot(p - t.a, u));
+                    hi = std::max(hi, dot(p - t.a, u));
+                }
+            Vec2 first = t.a + u * lo, second = t.a + u * hi;
+            const bool merged = line.size() > 1 && field.segmentIsClear(first, second);
+            if (!merged)
+                first = t.a, second = t.b;
+            const bool fromFirst = distance(at, first) <= distance(at, second);
+            const Vec2 enter = fromFirst ? first : second, leave = fromFirst ? second : first;
             Polyline leg = clearLeg(at, enter);
             if (leg.empty()) {
                 alone(t); // on its own route from its own vertex
@@ -138,8 +183,12 @@ std::map<int, std::vector<Polyline>> chainedDetours(const ClearanceField& field,
             }
             chain.insert(chain.end(), leg.begin() + 1, leg.end());
             chain.push_back(leave);
-            chained.push_back(&t);
-            left.erase(nearest);
+            const std::vector<const TouchUp*> done =
+                merged ? line : std::vector<const TouchUp*>{&t};
+            for (const TouchUp* s : done) {
+                chained.push_back(s);
+                left.erase(std::find(left.begin(), left.end(), s));
+            }
         }
         if (chain.size() < 2)
             continue;

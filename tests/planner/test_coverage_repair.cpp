@@ -6,6 +6,8 @@
 #include "pipeline/Planner.h"
 #include "pipeline/PreparedPlans.h"
 
+#include <algorithm>
+#include <cmath>
 #include <gtest/gtest.h>
 
 using namespace fc;
@@ -57,4 +59,53 @@ TEST(CoverageRepair, StrokesFromOnePlaceAreDrivenAsOneChain) {
     EXPECT_GE(a.coveredArea, b.coveredArea - 0.002 * b.requiredArea);
     EXPECT_TRUE(clearOf(draft.prepared.decomposition, chained));
     EXPECT_TRUE(clearOf(draft.prepared.decomposition, alone));
+}
+
+// Floor missed along one stretch of wall (a ragged wall's pockets, one after another, where
+// the robot fits): the strokes that sweep it lie on one line and overlap, and the chain
+// drives them as one stroke from end to end, not up, back a little and up again for each.
+TEST(CoverageRepair, OverlappingStrokesAlongOneWallAreDrivenAsOne) {
+    PlanRequest request;
+    request.plan.boundary = {{0, 0}, {6, 0}, {6, 4}, {0, 4}};
+    request.solver = "greedy";
+    const PreparedPlans prepared(request.plan, request.robot, true);
+    const PlanResult draft = draftCoverage(request, prepared);
+    const Decomposition& dec = draft.prepared.decomposition;
+    // Clear points 0.35 m from the wall along the sweep frame's x (a stroke through a clear
+    // point runs along that axis).
+    BoundingBox local;
+    for (const Vec2& p : request.plan.boundary)
+        local.add(dec.frame.toLocal(p));
+    const double lineY = local.minY + 0.35;
+    std::vector<Vec2> missed;
+    for (double x = local.minX + 1.0; x <= local.minX + 2.45; x += 0.05)
+        missed.push_back(dec.frame.toWorld({x, lineY}));
+    const double reach = kTouchUpReachInWidths * request.robot.coverageWidth;
+    CoveragePath chained = draft.path, alone = draft.path;
+    const CoverageRepairStats withChains = repairCoverage(dec, chained, missed, reach, true);
+    const CoverageRepairStats withoutChains = repairCoverage(dec, alone, missed, reach, false);
+    ASSERT_GE(withoutChains.touchUps, 3) << "several strokes along the wall";
+    EXPECT_EQ(withChains.touchUps, withoutChains.touchUps);
+    EXPECT_EQ(withChains.chains, 1);
+    auto cornersOnTheLine = [&](const CoveragePath& path) {
+        int count = 0;
+        for (const Vec2& p : path.points)
+            count += std::abs(dec.frame.toLocal(p).y - lineY) < 1e-6 ? 1 : 0;
+        return count;
+    };
+    // A lone stroke is W/2 long; the merged one sweeps its run from end to end.
+    double longest = 0.0;
+    for (std::size_t i = 0; i + 1 < chained.points.size(); ++i) {
+        const Vec2 p = dec.frame.toLocal(chained.points[i]);
+        const Vec2 q = dec.frame.toLocal(chained.points[i + 1]);
+        if (std::abs(p.y - lineY) < 1e-6 && std::abs(q.y - lineY) < 1e-6)
+            longest = std::max(longest, distance(p, q));
+    }
+    EXPECT_GT(longest, 0.9 * request.robot.coverageWidth) << "overlapping strokes driven as one";
+    EXPECT_LT(cornersOnTheLine(chained), cornersOnTheLine(alone));
+    EXPECT_LT(polylineLength(chained.points), polylineLength(alone.points));
+    const Metrics a = measurePath(draft.prepared, {}, chained);
+    const Metrics b = measurePath(draft.prepared, {}, alone);
+    EXPECT_GE(a.coveredArea, b.coveredArea - 1e-9);
+    EXPECT_TRUE(clearOf(dec, chained));
 }
