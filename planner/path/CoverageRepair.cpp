@@ -61,14 +61,19 @@ struct TouchUp {
     Vec2 a, b;
 };
 
-// The touch-ups of `left` whose strokes lie on t's line (within a millionth of W) and overlap
-// t's stroke or one another, t included: a run of short strokes along one stretch of wall.
-std::vector<const TouchUp*> collinearRun(const std::vector<const TouchUp*>& left, const TouchUp& t,
-                                         double w) {
+// A run of short strokes along one stretch of wall: the touch-ups of `left` whose strokes
+// lie on t's line (within a millionth of W) and overlap t's stroke or one another, t
+// included, and the ends of the stretch they sweep together.
+struct CollinearRun {
+    std::vector<const TouchUp*> touchUps;
+    Vec2 first, second;
+};
+
+CollinearRun collinearRun(const std::vector<const TouchUp*>& left, const TouchUp& t, double w) {
     const double length = distance(t.a, t.b);
     std::vector<const TouchUp*> run{&t};
     if (length < 1e-12)
-        return run;
+        return {run, t.a, t.b};
     const Vec2 u = (t.b - t.a) * (1.0 / length);
     const double tolerance = 1e-6 * w;
     auto along = [&](Vec2 p) { return dot(p - t.a, u); };
@@ -89,7 +94,7 @@ std::vector<const TouchUp*> collinearRun(const std::vector<const TouchUp*>& left
             grown = true;
         }
     }
-    return run;
+    return {run, t.a + u * lo, t.a + u * hi};
 }
 
 // Touch-ups that leave from path vertices close together (within W, along at most 2 W of
@@ -161,18 +166,10 @@ std::map<int, std::vector<Polyline>> chainedDetours(const ClearanceField& field,
             const TouchUp& t = **nearest;
             // Strokes on t's line that overlap it are swept as one stroke: one after another
             // they went up, back a little, up again along a ragged wall.
-            const std::vector<const TouchUp*> line = collinearRun(left, t, w);
-            double lo = 0.0, hi = 0.0;
-            const Vec2 u = (t.b - t.a) * (1.0 / std::max(distance(t.a, t.b), 1e-12));
-            for (const TouchUp* s : line)
-                for (const Vec2 p : {s->a, s->b}) {
-                    lo = std::min(lo, dot(p - t.a, u));
-                    hi = std::max(hi, dot(p - t.a, u));
-                }
-            Vec2 first = t.a + u * lo, second = t.a + u * hi;
-            const bool merged = line.size() > 1 && field.segmentIsClear(first, second);
-            if (!merged)
-                first = t.a, second = t.b;
+            const CollinearRun line = collinearRun(left, t, w);
+            const bool merged =
+                line.touchUps.size() > 1 && field.segmentIsClear(line.first, line.second);
+            const Vec2 first = merged ? line.first : t.a, second = merged ? line.second : t.b;
             const bool fromFirst = distance(at, first) <= distance(at, second);
             const Vec2 enter = fromFirst ? first : second, leave = fromFirst ? second : first;
             Polyline leg = clearLeg(at, enter);
@@ -184,7 +181,7 @@ std::map<int, std::vector<Polyline>> chainedDetours(const ClearanceField& field,
             chain.insert(chain.end(), leg.begin() + 1, leg.end());
             chain.push_back(leave);
             const std::vector<const TouchUp*> done =
-                merged ? line : std::vector<const TouchUp*>{&t};
+                merged ? line.touchUps : std::vector<const TouchUp*>{&t};
             for (const TouchUp* s : done) {
                 chained.push_back(s);
                 left.erase(std::find(left.begin(), left.end(), s));
