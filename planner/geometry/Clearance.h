@@ -11,6 +11,7 @@
 #include <cmath>
 #include <memory>
 #include <mutex>
+#include <unordered_map>
 #include <utility>
 #include <vector>
 
@@ -57,6 +58,11 @@ public:
     int openRegionOf(Vec2 p) const;
 
 private:
+    Polyline searchPath(Vec2 a, Vec2 b, const std::vector<Vec2>& hints, double maxMargin,
+                        std::size_t maxChecks) const;
+    std::size_t cornersIn(const BoundingBox& window) const;
+    // OpenRegions::clearRoute within the window; the grid must exist.
+    Polyline gridRoute(Vec2 a, Vec2 b, const BoundingBox& window) const;
     Polyline searchWindow(Vec2 a, Vec2 b, const BoundingBox& window, const std::vector<Vec2>& hints,
                           std::size_t& checksLeft) const;
 
@@ -74,6 +80,19 @@ private:
     mutable std::once_flag regionsBuilt_;
     mutable std::unique_ptr<OpenRegions> regions_;
     mutable std::atomic<bool> regionsReady_{false}; // regions_ built
+    // Searches already made, by their arguments: the graphs of one floor (the whole plan's,
+    // each room's, each strategy's) ask many of the same, and on an uncleaned map the
+    // repeats of failing ones were half of all search time.
+    struct SearchKey {
+        double ax, ay, bx, by, maxMargin;
+        std::size_t maxChecks, hints;
+        bool operator==(const SearchKey& o) const;
+    };
+    struct SearchKeyHash {
+        std::size_t operator()(const SearchKey& k) const;
+    };
+    mutable std::mutex searchesMutex_;
+    mutable std::unordered_map<SearchKey, Polyline, SearchKeyHash> searches_;
 };
 
 } // namespace fc

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <limits>
 #include <queue>
 
 namespace fc {
@@ -55,6 +56,37 @@ struct OpenClassifier {
 
     Vec2 node(int i, int j) const { return {box.minX + i * h, box.minY + j * h}; }
 };
+
+// Labels of the 8-connected components of the marked nodes (-1: unmarked).
+std::vector<int> labelComponents(const std::vector<char>& marked, int nx, int ny) {
+    std::vector<int> label(marked.size(), -1);
+    int next = 0;
+    std::vector<size_t> stack;
+    for (size_t s = 0; s < marked.size(); ++s) {
+        if (!marked[s] || label[s] >= 0)
+            continue;
+        stack.assign(1, s);
+        label[s] = next;
+        while (!stack.empty()) {
+            const size_t c = stack.back();
+            stack.pop_back();
+            const int i = static_cast<int>(c % nx), j = static_cast<int>(c / nx);
+            for (int dj = -1; dj <= 1; ++dj)
+                for (int di = -1; di <= 1; ++di) {
+                    const int a = i + di, b = j + dj;
+                    if (a < 0 || b < 0 || a >= nx || b >= ny)
+                        continue;
+                    const size_t n = static_cast<size_t>(b) * nx + a;
+                    if (marked[n] && label[n] < 0) {
+                        label[n] = next;
+                        stack.push_back(n);
+                    }
+                }
+        }
+        ++next;
+    }
+    return label;
+}
 } // namespace
 
 OpenRegions::OpenRegions(const SegmentIndex& walls, BoundingBox extent, double r,
@@ -71,32 +103,14 @@ OpenRegions::OpenRegions(const SegmentIndex& walls, BoundingBox extent, double r
         classifier.classify(0, nx_, 0, ny_);
     else if (threshold > 0)
         classifier.testEach(0, nx_, 0, ny_); // else every node is open
-    label_.assign(open.size(), -1);
-    int next = 0;
-    std::vector<size_t> stack;
-    for (size_t s = 0; s < open.size(); ++s) {
-        if (!open[s] || label_[s] >= 0)
-            continue;
-        stack.assign(1, s);
-        label_[s] = next;
-        while (!stack.empty()) {
-            const size_t c = stack.back();
-            stack.pop_back();
-            const int i = static_cast<int>(c % nx_), j = static_cast<int>(c / nx_);
-            for (int dj = -1; dj <= 1; ++dj)
-                for (int di = -1; di <= 1; ++di) {
-                    const int a = i + di, b = j + dj;
-                    if (a < 0 || b < 0 || a >= nx_ || b >= ny_)
-                        continue;
-                    const size_t n = index(a, b);
-                    if (open[n] && label_[n] < 0) {
-                        label_[n] = next;
-                        stack.push_back(n);
-                    }
-                }
-        }
-        ++next;
-    }
+    surelyClear_.assign(open.size(), 0);
+    OpenClassifier clearClassifier{walls, box_, h_, r + h_ * std::sqrt(2.0) / 2, nx_, surelyClear_};
+    if (classification == Classification::Pruned)
+        clearClassifier.classify(0, nx_, 0, ny_);
+    else
+        clearClassifier.testEach(0, nx_, 0, ny_);
+    label_ = labelComponents(open, nx_, ny_);
+    clearLabel_ = labelComponents(surelyClear_, nx_, ny_);
 }
 
 int OpenRegions::regionOf(Vec2 p) const {
@@ -154,6 +168,121 @@ bool OpenRegions::mayJoinWithin(Vec2 a, Vec2 b, const BoundingBox& window) const
             }
     }
     return false;
+}
+
+Polyline OpenRegions::clearRoute(Vec2 a, Vec2 b, const BoundingBox& window,
+                                 const std::function<bool(Vec2, Vec2)>& sees) const {
+    const int i0 = std::max(0, static_cast<int>(std::ceil((window.minX - box_.minX) / h_)));
+    const int j0 = std::max(0, static_cast<int>(std::ceil((window.minY - box_.minY) / h_)));
+    const int i1 = std::min(nx_ - 1, static_cast<int>(std::floor((window.maxX - box_.minX) / h_)));
+    const int j1 = std::min(ny_ - 1, static_cast<int>(std::floor((window.maxY - box_.minY) / h_)));
+    if (i1 < i0 || j1 < j0)
+        return {};
+    const int w = i1 - i0 + 1;
+    const size_t count = static_cast<size_t>(w) * (j1 - j0 + 1);
+    auto nodeAt = [&](size_t k) {
+        return Vec2{box_.minX + (i0 + static_cast<int>(k % w)) * h_,
+                    box_.minY + (j0 + static_cast<int>(k / w)) * h_};
+    };
+    // Surely clear nodes a few nodes around p that p sees: where the search may start or end.
+    auto gates = [&](Vec2 p) {
+        std::vector<std::pair<double, size_t>> near;
+        const int ci = static_cast<int>(std::lround((p.x - box_.minX) / h_));
+        const int cj = static_cast<int>(std::lround((p.y - box_.minY) / h_));
+        for (int j = std::max(j0, cj - 3); j <= std::min(j1, cj + 3); ++j)
+            for (int i = std::max(i0, ci - 3); i <= std::min(i1, ci + 3); ++i)
+                if (surelyClear_[index(i, j)]) {
+                    const size_t k = static_cast<size_t>(j - j0) * w + (i - i0);
+                    near.push_back({distance(p, nodeAt(k)), k});
+                }
+        std::sort(near.begin(), near.end());
+        std::vector<std::pair<double, size_t>> seen;
+        for (const auto& entry : near) {
+            if (seen.size() >= 4)
+                break;
+            if (sees(p, nodeAt(entry.second)))
+                seen.push_back(entry);
+        }
+        return seen;
+    };
+    const auto starts = gates(a);
+    if (starts.empty())
+        return {};
+    const auto ends = gates(b);
+    // Gates in different components of the surely clear nodes: no route anywhere, and the
+    // search below would explore the whole window to find that out.
+    auto componentOf = [&](size_t k) {
+        return clearLabel_[index(i0 + static_cast<int>(k % w), j0 + static_cast<int>(k / w))];
+    };
+    const bool joined = std::any_of(starts.begin(), starts.end(), [&](const auto& s) {
+        return std::any_of(ends.begin(), ends.end(), [&](const auto& e) {
+            return componentOf(s.second) == componentOf(e.second);
+        });
+    });
+    if (!joined)
+        return {};
+    constexpr size_t kNone = std::numeric_limits<size_t>::max();
+    std::vector<float> g(count, INFINITY);
+    std::vector<size_t> parent(count, kNone);
+    std::vector<float> toEnd(count, INFINITY); // cost from an end gate on to b
+    for (const auto& [d, k] : ends)
+        toEnd[k] = static_cast<float>(d);
+    struct Entry {
+        float f, g; // f: g + the straight distance on to b
+        size_t node;
+        bool operator>(const Entry& o) const { return f > o.f; }
+    };
+    std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> open;
+    for (const auto& [d, k] : starts) {
+        g[k] = static_cast<float>(d);
+        open.push({static_cast<float>(d + distance(nodeAt(k), b)), g[k], k});
+    }
+    float best = INFINITY;
+    size_t bestEnd = kNone;
+    const float diagonal = static_cast<float>(h_ * std::sqrt(2.0));
+    while (!open.empty()) {
+        const Entry top = open.top();
+        open.pop();
+        if (top.f >= best)
+            break;
+        const size_t k = top.node;
+        if (top.g > g[k])
+            continue; // a shorter way here was found after this entry
+        if (g[k] + toEnd[k] < best)
+            best = g[k] + toEnd[k], bestEnd = k;
+        const int i = static_cast<int>(k % w), j = static_cast<int>(k / w);
+        for (int dj = -1; dj <= 1; ++dj)
+            for (int di = -1; di <= 1; ++di) {
+                const int x = i + di, y = j + dj;
+                if ((di == 0 && dj == 0) || x < 0 || y < 0 || x >= w || y > j1 - j0 ||
+                    !surelyClear_[index(i0 + x, j0 + y)])
+                    continue;
+                const size_t n = static_cast<size_t>(y) * w + x;
+                const float step = di != 0 && dj != 0 ? diagonal : static_cast<float>(h_);
+                if (g[k] + step < g[n]) {
+                    g[n] = g[k] + step;
+                    parent[n] = k;
+                    open.push({g[n] + static_cast<float>(distance(nodeAt(n), b)), g[n], n});
+                }
+            }
+    }
+    if (bestEnd == kNone)
+        return {};
+    Polyline chain{b};
+    for (size_t k = bestEnd; k != kNone; k = parent[k])
+        chain.push_back(nodeAt(k));
+    chain.push_back(a);
+    std::reverse(chain.begin(), chain.end());
+    // Pulled tight: from each kept point, on to the last point of the chain it still sees.
+    Polyline route{a};
+    size_t anchor = 0;
+    for (size_t next = 2; next < chain.size(); ++next)
+        if (!sees(chain[anchor], chain[next])) {
+            anchor = next - 1;
+            route.push_back(chain[anchor]);
+        }
+    route.push_back(b);
+    return route;
 }
 
 } // namespace fc

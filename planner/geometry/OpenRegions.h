@@ -9,6 +9,7 @@
 
 #include "geometry/SegmentIndex.h"
 
+#include <functional>
 #include <vector>
 
 namespace fc {
@@ -32,6 +33,15 @@ public:
     // one may. A visibility search in a window that holds no path tests every pair of its
     // corners before it gives up: on an uncleaned map most of the search time went there.
     bool mayJoinWithin(Vec2 a, Vec2 b, const BoundingBox& window) const;
+    // A clear path from a to b inside `window` over surely clear nodes (at least r + h*sqrt(2)/2
+    // from every wall, so the straight piece between 8-adjacent ones is clear as well),
+    // pulled tight; empty when the grid holds none. `sees` tests a straight piece against the
+    // walls (the hops from a and b onto the grid, and the shortcuts of the pulling). Costs
+    // one grid search where a visibility search among thousands of wall corners (an
+    // uncleaned map) spends its whole test budget; slightly longer than the shortest path,
+    // and blind to gaps less than a node wider than the robot.
+    Polyline clearRoute(Vec2 a, Vec2 b, const BoundingBox& window,
+                        const std::function<bool(Vec2, Vec2)>& sees) const;
     // The grid's labels, row by row (-1: closed), for comparisons.
     const std::vector<int>& labels() const { return label_; }
 
@@ -41,6 +51,8 @@ private:
     double h_ = 1;
     int nx_ = 1, ny_ = 1;
     std::vector<int> label_;
+    std::vector<char> surelyClear_;
+    std::vector<int> clearLabel_; // components of the surely clear nodes
 };
 
 } // namespace fc

@@ -12,9 +12,79 @@ struct SharedRun {
     bool sameDirection;
 };
 
+// The edges of one region bucketed in a uniform grid by their boxes, so that splitting an
+// edge looks only at the edges near it: a room traced from a laser map meets tens of
+// thousands of speckle edges, and testing every pair made validation seconds long.
+class EdgeGrid {
+public:
+    explicit EdgeGrid(const std::vector<DirectedEdge>& edges) : edges_(edges) {
+        for (const DirectedEdge& e : edges)
+            box_.add(e.a), box_.add(e.b);
+        const double side = std::ceil(std::sqrt(static_cast<double>(edges.size())));
+        columns_ = rows_ = std::clamp(static_cast<int>(side), 1, 1024);
+        cellW_ = std::max(box_.width() / columns_, 1e-12);
+        cellH_ = std::max(box_.height() / rows_, 1e-12);
+        cells_.resize(static_cast<size_t>(columns_) * rows_);
+        for (size_t i = 0; i < edges.size(); ++i)
+            forCells(boxOf(edges[i], 0.0),
+                     [&](size_t c) { cells_[c].push_back(static_cast<int>(i)); });
+        stamp_.assign(edges.size(), 0);
+    }
+
+    // Indices of the edges whose boxes may meet `box`, each once, in increasing order.
+    const std::vector<int>& near(const BoundingBox& box) {
+        found_.clear();
+        ++visit_;
+        forCells(box, [&](size_t c) {
+            for (int i : cells_[c])
+                if (stamp_[i] != visit_)
+                    stamp_[i] = visit_, found_.push_back(i);
+        });
+        std::sort(found_.begin(), found_.end()); // the order of a full scan
+        return found_;
+    }
+
+    static BoundingBox boxOf(const DirectedEdge& e, double grow) {
+        BoundingBox b;
+        b.add(e.a), b.add(e.b);
+        b.minX -= grow, b.minY -= grow, b.maxX += grow, b.maxY += grow;
+        return b;
+    }
+
+private:
+    template <typename Visit> void forCells(const BoundingBox& b, Visit visit) const {
+        if (edges_.empty() || b.maxX < box_.minX || b.minX > box_.maxX || b.maxY < box_.minY ||
+            b.minY > box_.maxY)
+            return;
+        auto column = [&](double x) {
+            return std::clamp(static_cast<int>(std::floor((x - box_.minX) / cellW_)), 0,
+                              columns_ - 1);
+        };
+        auto row = [&](double y) {
+            return std::clamp(static_cast<int>(std::floor((y - box_.minY) / cellH_)), 0, rows_ - 1);
+        };
+        for (int j = row(b.minY); j <= row(b.maxY); ++j)
+            for (int i = column(b.minX); i <= column(b.maxX); ++i)
+                visit(static_cast<size_t>(j) * columns_ + i);
+    }
+
+public:
+    const std::vector<DirectedEdge>& edges() const { return edges_; }
+
+private:
+    const std::vector<DirectedEdge>& edges_;
+    BoundingBox box_;
+    int columns_ = 1, rows_ = 1;
+    double cellW_ = 1, cellH_ = 1;
+    std::vector<std::vector<int>> cells_;
+    std::vector<unsigned> stamp_;
+    unsigned visit_ = 0;
+    std::vector<int> found_;
+};
+
 // Parameters along `e` where it meets the other region's edges, and the runs it shares.
-void splitEdge(const DirectedEdge& e, const std::vector<DirectedEdge>& others, double tolerance,
-               std::vector<double>& cuts, std::vector<SharedRun>& shared) {
+void splitEdge(const DirectedEdge& e, EdgeGrid& others, double tolerance, std::vector<double>& cuts,
+               std::vector<SharedRun>& shared) {
     const Vec2 d = e.b - e.a;
     const double length2 = dot(d, d);
     const double length = std::sqrt(length2);
@@ -27,7 +97,8 @@ void splitEdge(const DirectedEdge& e, const std::vector<DirectedEdge>& others, d
     // |cross| / length is the distance from the line; comparing cross products avoids
     // a division (and hypot) per test.
     auto nearLineOfE = [&](Vec2 p) { return std::abs(cross(d, p - e.a)) <= tolerance * length; };
-    for (const DirectedEdge& g : others) {
+    for (int index : others.near(EdgeGrid::boxOf(e, tolerance))) {
+        const DirectedEdge& g = others.edges()[index];
         if (std::max(g.a.x, g.b.x) < minX || std::min(g.a.x, g.b.x) > maxX ||
             std::max(g.a.y, g.b.y) < minY || std::min(g.a.y, g.b.y) > maxY)
             continue;
@@ -70,7 +141,7 @@ void splitEdge(const DirectedEdge& e, const std::vector<DirectedEdge>& others, d
 }
 
 // Adds the contribution of the pieces of `e` that bound A ∩ B to `result`.
-void addBoundaryPieces(const DirectedEdge& e, const std::vector<DirectedEdge>& others,
+void addBoundaryPieces(const DirectedEdge& e, EdgeGrid& others,
                        const std::function<bool(Vec2)>& insideOther, bool countSharedRuns,
                        Vec2 origin, double tolerance, OverlapResult& result) {
     if (e.a == e.b)
@@ -177,10 +248,11 @@ OverlapResult overlapArea(const std::vector<DirectedEdge>& edgesA,
     // The boundary of A ∩ B: A's pieces inside B, B's pieces inside A, and the runs where
     // both boundaries coincide with the same direction (counted once, from A's side).
     OverlapResult result;
+    EdgeGrid gridA(edgesA), gridB(edgesB);
     for (const DirectedEdge& e : edgesA)
-        addBoundaryPieces(e, edgesB, insideB, true, origin, tolerance, result);
+        addBoundaryPieces(e, gridB, insideB, true, origin, tolerance, result);
     for (const DirectedEdge& g : edgesB)
-        addBoundaryPieces(g, edgesA, insideA, false, origin, tolerance, result);
+        addBoundaryPieces(g, gridA, insideA, false, origin, tolerance, result);
     return result;
 }
 

@@ -333,7 +333,8 @@ void checkRooms(const Plan& plan, const RobotProfile& robot, double tolerance) {
         std::vector<overlap::DirectedEdge> nearby;
         for (int i : nearbyEdges[r])
             nearby.push_back(freeEdges[i]);
-        const auto insideRoom = [&](Vec2 p) { return pointInRing(room.outline, p); };
+        const overlap::EvenOddIndex roomIndex(roomEdges[r]); // traced rooms: many vertices
+        const auto insideRoom = [&](Vec2 p) { return roomIndex.contains(p); };
         const auto shared =
             overlap::overlapArea(roomEdges[r], insideRoom, nearby, insideFree, origin, tolerance);
         const BoundingBox box = boundsOf(room.outline);

@@ -41,6 +41,24 @@ TEST(Geometry, SegmentIndexClearance) {
 
 namespace {
 
+// Checked against every wall, not through the index the field uses.
+bool keepsClearOfEveryWall(const ClearanceField& field, const Polyline& line) {
+    for (size_t i = 1; i < line.size(); ++i)
+        for (const Segment& s : field.walls().segments())
+            if (segmentSegmentDistance(line[i - 1], line[i], s.a, s.b) <
+                field.radius() - field.acceptance() - 1e-9)
+                return false;
+    return true;
+}
+
+BoundingBox extentOf(const std::vector<Ring>& rings) {
+    BoundingBox extent;
+    for (const Ring& ring : rings)
+        for (const Vec2& p : ring)
+            extent.add(p);
+    return extent;
+}
+
 // A ragged ring (a traced wall: many short edges, jittered) around a square of side `size`.
 Ring raggedSquare(std::mt19937& rng, double size, int perSide) {
     std::uniform_real_distribution<double> jitter(-0.08, 0.08);
@@ -110,17 +128,9 @@ TEST(Geometry, FindPathOnARaggedFloorIsClearAndShort) {
     const double r = 0.3;
     const ClearanceField field(rings, r);
     auto clearOfEveryWall = [&](const Polyline& line) {
-        for (size_t i = 1; i < line.size(); ++i)
-            for (const Segment& s : field.walls().segments())
-                if (segmentSegmentDistance(line[i - 1], line[i], s.a, s.b) <
-                    r - field.acceptance() - 1e-9)
-                    return false;
-        return true;
+        return keepsClearOfEveryWall(field, line);
     };
-    BoundingBox extent;
-    for (const Ring& ring : rings)
-        for (const Vec2& p : ring)
-            extent.add(p);
+    const BoundingBox extent = extentOf(rings);
     const OpenRegions regions(field.walls(), extent, r - field.acceptance());
     int found = 0;
     for (double y : {2.0, 5.0, 9.0}) {
@@ -138,6 +148,14 @@ TEST(Geometry, FindPathOnARaggedFloorIsClearAndShort) {
         const double over = distance(a, tip) + distance(tip, b);
         EXPECT_GE(polylineLength(path), over - 0.05) << y;
         EXPECT_LE(polylineLength(path), over * 1.08) << y;
+        // The grid's route (what crowded windows use): clear, and within 3% of the search's
+        // path (shorter at times: pulled tight, it passes corners closer than the corner
+        // waypoints do).
+        const Polyline route = regions.clearRoute(
+            a, b, extent, [&](Vec2 p, Vec2 q) { return field.segmentIsClear(p, q); });
+        EXPECT_TRUE(clearOfEveryWall(route)) << y;
+        EXPECT_LE(polylineLength(route), 1.03 * polylineLength(path)) << y;
+        EXPECT_GE(polylineLength(route), 0.97 * polylineLength(path)) << y;
         // The grid's proof: a window round the path may hold it; one that stops short of
         // the wall's end cannot, and is then not searched.
         BoundingBox around;
@@ -154,4 +172,93 @@ TEST(Geometry, FindPathOnARaggedFloorIsClearAndShort) {
     EXPECT_FALSE(regions.mayJoinWithin({4.0, 17.0}, {17.5, 17.5}, extent));
     // Asked again once the grid exists (the first failure builds it): still no path.
     EXPECT_TRUE(field.findPath({4.0, 17.5}, {17.5, 17.0}).empty());
+}
+
+namespace {
+
+// A traced floor as an uncleaned laser map gives it: ragged outer walls, a long wall in the
+// middle, a closed room, and small squares of sensor noise strewn over the floor every
+// 0.8 m or so (the robot passes between them).
+std::vector<Ring> speckledFloor(std::mt19937& rng) {
+    std::vector<Ring> rings{raggedSquare(rng, 20.0, 100)};
+    rings.push_back({{9.8, -0.5}, {10.2, -0.5}, {10.2, 15.0}, {9.8, 15.0}}); // meets the outer wall
+    rings.push_back({{16, 16}, {19, 16}, {19, 19}, {16, 19}});
+    rings.push_back({{16.2, 16.2}, {16.2, 18.8}, {18.8, 18.8}, {18.8, 16.2}});
+    std::uniform_real_distribution<double> jitter(-0.06, 0.06);
+    for (double x = 0.9; x < 19.2; x += 0.8)
+        for (double y = 0.9; y < 19.2; y += 0.8) {
+            const Vec2 c{x + jitter(rng), y + jitter(rng)};
+            if (std::abs(c.x - 10.0) < 0.9 || (c.x > 15.3 && c.y > 15.3) ||
+                (std::abs(c.x - 10.0) < 2.0 && c.y > 14.0))
+                continue; // the wall's end stays open
+            rings.push_back({{c.x - 0.03, c.y - 0.03},
+                             {c.x + 0.03, c.y - 0.03},
+                             {c.x + 0.03, c.y + 0.03},
+                             {c.x - 0.03, c.y + 0.03}});
+        }
+    return rings;
+}
+
+} // namespace
+
+// Among thousands of speck corners the path search takes the grid's route (the visibility
+// search would spend its budget there): the route must be clear of every wall, close to the
+// shortest way round the long wall, and absent where the grid holds none.
+TEST(Geometry, GridRouteAmongThousandsOfSpecksIsClearAndNearlyShortest) {
+    std::mt19937 rng(23);
+    const std::vector<Ring> rings = speckledFloor(rng);
+    const double r = 0.2;
+    const ClearanceField field(rings, r);
+    auto clearOfEveryWall = [&](const Polyline& line) {
+        return keepsClearOfEveryWall(field, line);
+    };
+    const BoundingBox extent = extentOf(rings);
+    const OpenRegions regions(field.walls(), extent, r - field.acceptance());
+    auto sees = [&](Vec2 p, Vec2 q) { return field.segmentIsClear(p, q); };
+    int routes = 0;
+    for (double y : {2.1, 5.3, 10.1}) { // between rows of specks
+        for (double dx : {0.0, 0.05, 0.11}) {
+            const Vec2 a{4.5 + dx, y}, b{15.7 - dx, y + 0.8};
+            if (!field.isClear(a) || !field.isClear(b))
+                continue;
+            const Vec2 tip{10.0, 15.0 + r}; // no specks round the wall's end
+            const double over = distance(a, tip) + distance(tip, b);
+            for (const Polyline& path :
+                 {regions.clearRoute(a, b, extent, sees), field.findPath(a, b)}) {
+                ASSERT_GE(path.size(), 3u) << y;
+                EXPECT_EQ(path.front().x, a.x);
+                EXPECT_EQ(path.back().x, b.x);
+                EXPECT_TRUE(clearOfEveryWall(path)) << y;
+                EXPECT_GE(polylineLength(path), over - 0.05) << y;
+                // Weaving between the specks adds a few per cent to the way round the wall's
+                // end; how close the grid's route comes to the shortest path is checked on
+                // the floor without specks (FindPathOnARaggedFloorIsClearAndShort).
+                EXPECT_LE(polylineLength(path), over * 1.10) << y;
+                ++routes;
+            }
+            BoundingBox below = extent;
+            below.maxY = 14.0; // stops short of the wall's end
+            EXPECT_TRUE(regions.clearRoute(a, b, below, sees).empty()) << y;
+        }
+    }
+    EXPECT_GE(routes, 12);
+    EXPECT_TRUE(regions.clearRoute({4.0, 17.0}, {17.5, 17.5}, extent, sees).empty());
+    EXPECT_TRUE(field.findPath({4.0, 17.0}, {17.5, 17.5}).empty());
+}
+
+// Searches are remembered by all their arguments: a search whose window is too small to go
+// round the wall fails, the unbounded one then succeeds, and the small one still fails.
+TEST(Geometry, RememberedSearchesAnswerOnlyTheSameQuestion) {
+    const std::vector<Ring> rings{{{0, 0}, {20, 0}, {20, 20}, {0, 20}},
+                                  {{9.8, 0.5}, {10.2, 0.5}, {10.2, 15.0}, {9.8, 15.0}}};
+    const ClearanceField field(rings, 0.3);
+    const Vec2 a{4, 2}, b{16, 2};
+    for (int round = 0; round < 2; ++round) {
+        EXPECT_TRUE(field.findPath(a, b, {}, 3.0).empty()) << round;
+        const Polyline path = field.findPath(a, b);
+        ASSERT_GE(path.size(), 3u) << round;
+        EXPECT_TRUE(field.polylineIsClear(path));
+        EXPECT_TRUE(field.findPath(a, b, {}, 3.0, 1).empty()) << round;
+        EXPECT_EQ(field.findPath(b, a).size(), path.size()) << round;
+    }
 }

@@ -2,12 +2,14 @@
 // at small and at UTM-sized coordinates, fast on large plans.
 #include "TestPlans.h"
 #include "formats/PlanIO.h"
+#include "model/OverlapArea.h"
 #include "model/Validation.h"
 
 #include <chrono>
 #include <cmath>
 #include <filesystem>
 #include <gtest/gtest.h>
+#include <random>
 #include <string>
 #include <vector>
 
@@ -266,4 +268,45 @@ TEST(Validation, ThousandRoomsValidateQuickly) {
     // One defect among them is still found and named.
     plan.rooms[777].outline[2] = {plan.rooms[777].outline[2].x + 1.5, plan.rooms[777].outline[2].y};
     expectKeywords(validationError(plan), {"rooms", "overlap", plan.rooms[777].name});
+}
+
+// A room over a floor full of speckle (a traced map's thousands of small obstacles): the
+// shared area of room and free space is the room less the specks' parts inside it, also for
+// specks cut by the room's edges.
+TEST(Validation, RoomOverThousandsOfSpecksSharesTheRightArea) {
+    std::mt19937 rng(3);
+    std::uniform_real_distribution<double> jitter(0.0, 0.1);
+    const Ring boundary{{0, 0}, {40, 0}, {40, 30}, {0, 30}};
+    std::vector<overlap::DirectedEdge> freeEdges = overlap::edgesOf(boundary, true);
+    std::vector<Ring> specks;
+    const double roomX0 = 5.05, roomY0 = 4.02, roomX1 = 31.93, roomY1 = 22.07;
+    double inside = 0.0;
+    for (int i = 0; i < 80; ++i)
+        for (int j = 0; j < 60; ++j) {
+            const double x = 0.5 * i + 0.1 + jitter(rng), y = 0.5 * j + 0.1 + jitter(rng);
+            const double s = 0.05 + jitter(rng);
+            specks.push_back({{x, y}, {x + s, y}, {x + s, y + s}, {x, y + s}});
+            const double w = std::max(0.0, std::min(x + s, roomX1) - std::max(x, roomX0));
+            const double h = std::max(0.0, std::min(y + s, roomY1) - std::max(y, roomY0));
+            inside += w * h;
+        }
+    for (const Ring& speck : specks) {
+        const auto edges = overlap::edgesOf(speck, false);
+        freeEdges.insert(freeEdges.end(), edges.begin(), edges.end());
+    }
+    const overlap::EvenOddIndex freeIndex(freeEdges);
+    const Ring room{{roomX0, roomY0}, {roomX1, roomY0}, {roomX1, roomY1}, {roomX0, roomY1}};
+    const auto roomEdges = overlap::edgesOf(room, true);
+    const overlap::EvenOddIndex roomIndex(roomEdges);
+    const auto shared = overlap::overlapArea(
+        roomEdges, [&](Vec2 p) { return roomIndex.contains(p); }, freeEdges,
+        [&](Vec2 p) { return freeIndex.contains(p); }, boundary.front(), 1e-9);
+    EXPECT_GT(inside, 10.0); // the specks matter
+    EXPECT_NEAR(shared.area, ringArea(room) - inside, 1e-6);
+    // The plan itself validates with one room over the specks.
+    Plan plan;
+    plan.boundary = boundary;
+    plan.obstacles = specks;
+    plan.rooms.push_back({"Hall", room});
+    EXPECT_NO_THROW(validatePlan(plan, RobotProfile{}));
 }
