@@ -172,12 +172,22 @@ std::vector<Room> roomsFromLabels(const std::vector<std::int32_t>& labels,
                 regions.emplace_back(part->clone());
         }
     } else {
+        // Asked once per segment: prepared (indexed) once, as an uncleaned map's floor has
+        // thousands of holes and each plain test rebuilt its index.
+        OGRGeometryH keptHandle = OGRGeometry::ToHandle(const_cast<OGRGeometry*>(&kept));
+        OGRPreparedGeometryUniquePtr prepared(
+            OGRHasPreparedGeometrySupport() ? OGRCreatePreparedGeometry(keptHandle) : nullptr);
+        auto meetsFloor = [&](const OGRPolygon& polygon) {
+            auto* handle = OGRGeometry::ToHandle(const_cast<OGRPolygon*>(&polygon));
+            return prepared ? OGRPreparedGeometryIntersects(prepared.get(), handle) != 0
+                            : polygon.Intersects(&kept);
+        };
         for (auto& [label, traced] : traceCells(labels, free, width, height)) {
             if (label <= 0)
                 continue;
             GeometryPtr g = simplifiedCells(*traced, tolerance);
             const OGRPolygon* largest = largestPolygon(g.get());
-            if (!largest || !largest->Intersects(&kept))
+            if (!largest || !meetsFloor(*largest))
                 continue;
             GeometryPtr common(largest->Intersection(&kept));
             if (common && areaOf(common.get()) >= kMinCells)
@@ -185,12 +195,26 @@ std::vector<Room> roomsFromLabels(const std::vector<std::int32_t>& labels,
         }
     }
     // A hole of a room that holds no other room is an obstacle: the outline covers it.
+    // Cheap tests first: an uncleaned map's room has thousands of speckle holes, and GEOS
+    // intersected each with every other room (most of a 25 s import).
+    std::vector<OGREnvelope> boxes(regions.size());
+    for (size_t i = 0; i < regions.size(); ++i)
+        regions[i]->getEnvelope(&boxes[i]);
     std::vector<GeometryPtr> filled;
     for (size_t i = 0; i < regions.size(); ++i) {
         auto* polygon = static_cast<OGRPolygon*>(regions[i].get());
         auto outline = polygonOfRing(*polygon->getExteriorRing());
         for (int h = 0; h < polygon->getNumInteriorRings(); ++h) {
-            auto hole = polygonOfRing(*polygon->getInteriorRing(h));
+            const OGRLinearRing* ring = polygon->getInteriorRing(h);
+            OGREnvelope holeBox;
+            ring->getEnvelope(&holeBox);
+            bool mayHoldRoom = false; // the shared area is at most the hole's
+            if (ring->get_Area() >= kMinCells)
+                for (size_t k = 0; k < regions.size() && !mayHoldRoom; ++k)
+                    mayHoldRoom = k != i && boxes[k].Intersects(holeBox);
+            if (!mayHoldRoom)
+                continue;
+            auto hole = polygonOfRing(*ring);
             const bool holdsRoom = std::any_of(regions.begin(), regions.end(), [&](auto& other) {
                 if (other.get() == regions[i].get() || !hole->Intersects(other.get()))
                     return false;
