@@ -263,8 +263,8 @@ Polyline ClearanceField::searchPath(Vec2 a, Vec2 b, const std::vector<Vec2>& hin
         // is slow and often spends its whole budget; the grid's route is found in a fraction
         // of the time and is about 1% longer. There the grid is asked first, and the
         // visibility search then looks for a way through a gap too tight for the grid.
-        // Elsewhere the grid's route stands in only when the
-        // search gave up (a search that fails on budget is not proof that no path exists).
+        // Elsewhere the grid's route stands in only when the search gave up (a search that
+        // fails on budget is not proof that no path exists).
         const bool crowded = cornersIn(window) > kCrowdedWindow;
         if (crowded)
             openRegionOf(a);
