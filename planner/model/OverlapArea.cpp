@@ -44,6 +44,8 @@ public:
         return found_;
     }
 
+    const std::vector<DirectedEdge>& edges() const { return edges_; }
+
     static BoundingBox boxOf(const DirectedEdge& e, double grow) {
         BoundingBox b;
         b.add(e.a), b.add(e.b);
@@ -68,10 +70,6 @@ private:
                 visit(static_cast<size_t>(j) * columns_ + i);
     }
 
-public:
-    const std::vector<DirectedEdge>& edges() const { return edges_; }
-
-private:
     const std::vector<DirectedEdge>& edges_;
     BoundingBox box_;
     int columns_ = 1, rows_ = 1;
