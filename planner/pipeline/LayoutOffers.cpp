@@ -21,6 +21,27 @@ constexpr size_t kLatticeMaxRooms = 60;
 // the path.
 constexpr int kHeadlandMaxCells = 40;
 
+// Whether the floor's corners start a slab narrower than W/10 in `frame` (stripes along its
+// y): a traced outline's jogs and bulges, which drawn floors seldom have.
+bool startsSlivers(const Plan& plan, const Frame& frame, double w) {
+    std::vector<double> xs;
+    auto add = [&](const Ring& ring) {
+        for (const Vec2& p : ring)
+            xs.push_back(frame.toLocal(p).x);
+    };
+    add(plan.boundary);
+    for (const Ring& obstacle : plan.obstacles)
+        add(obstacle);
+    for (const Room& room : plan.rooms)
+        add(room.outline);
+    std::sort(xs.begin(), xs.end());
+    const double same = 1e-9 * std::max(1.0, w);
+    for (size_t i = 0; i + 1 < xs.size(); ++i)
+        if (xs[i + 1] - xs[i] > same && xs[i + 1] - xs[i] < 0.1 * w)
+            return true;
+    return false;
+}
+
 struct Layout {
     LatticeMode mode;
     Headland headland;
@@ -107,16 +128,30 @@ std::vector<PlanResult> planLayoutOffers(const PlanRequest& request, const PlanR
     // returning along a wall sweeps that wall's band instead of crossing swept floor.
     std::vector<Layout> offers{{LatticeMode::AtCorners, Headland::None},
                                {LatticeMode::Dense, Headland::None}};
+    // They are offered on the dense lattice too, at every variant's angles, where the
+    // floor's corners start slivers (a traced map's outline: a wall's 2.5 cm bulge): a
+    // sliver's own stripes, or the corner lattice's, break the band and cost the tour its
+    // way back (noisy room-obstacle: 651.8 s plain, 663.4 s with headlands at the corners,
+    // 644.7 s with them on the dense lattice; its drawing plans 642.9 s). Not elsewhere:
+    // on the drawn halls it changed nothing and cost 0.8 s of planning.
     bool cornerLattice = false; // whether the corner lattice moves stripes at some angle
+    bool slivers = false;       // whether some angle's slabs include slivers
     for (const auto& angles : variants)
-        for (const auto& entry : angles)
-            cornerLattice =
-                cornerLattice ||
-                (prepared.asked(entry.second, false) &&
-                 prepared.shared(entry.second, false)->decomposition.stripeLatticeAvailable);
-    for (const Headland sides : {Headland::Both, Headland::Floors, Headland::Ceilings})
-        offers.push_back(
-            {cornerLattice ? LatticeMode::AtCorners : prepared.stripeLattice(), sides});
+        for (const auto& entry : angles) {
+            if (!prepared.asked(entry.second, false))
+                continue;
+            const Decomposition& plain = prepared.shared(entry.second, false)->decomposition;
+            cornerLattice = cornerLattice || plain.stripeLatticeAvailable;
+            slivers =
+                slivers || startsSlivers(request.plan, plain.frame, request.robot.coverageWidth);
+        }
+    const LatticeMode firstLayout =
+        cornerLattice ? LatticeMode::AtCorners : prepared.stripeLattice();
+    for (const Headland sides : {Headland::Both, Headland::Floors, Headland::Ceilings}) {
+        offers.push_back({firstLayout, sides});
+        if (slivers && firstLayout != LatticeMode::Dense)
+            offers.push_back({LatticeMode::Dense, sides});
+    }
     for (const Layout layout : offers) {
         const bool headland = layout.headland != Headland::None;
         const LatticeMode mode = layout.mode;
@@ -126,7 +161,7 @@ std::vector<PlanResult> planLayoutOffers(const PlanRequest& request, const PlanR
         const PreparedPlans& lattice = *layouts.back();
         // The dense lattice follows the chosen sweep: turned, it never won on the maps it
         // is for (faculty 8,127 s against 7,912 s; lab 1,299 s against 1,167 s).
-        const size_t tried = mode == LatticeMode::Dense ? 1 : variants.size();
+        const size_t tried = mode == LatticeMode::Dense && !headland ? 1 : variants.size();
         for (size_t v = 0; v < tried; ++v) {
             const std::map<std::string, double>& angles = variants[v];
             std::set<double> distinct;
