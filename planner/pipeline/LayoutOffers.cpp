@@ -136,9 +136,10 @@ std::vector<PlanResult> planLayoutOffers(const PlanRequest& request, const PlanR
     // on the drawn halls it changed nothing and cost 0.8 s of planning.
     bool cornerLattice = false; // whether the corner lattice moves stripes at some angle
     bool slivers = false;       // whether some angle's slabs include slivers
+    std::set<double> looked;    // each angle's frame once (rooms share angles)
     for (const auto& angles : variants)
         for (const auto& entry : angles) {
-            if (!prepared.asked(entry.second, false))
+            if (!prepared.asked(entry.second, false) || !looked.insert(entry.second).second)
                 continue;
             const Decomposition& plain = prepared.shared(entry.second, false)->decomposition;
             cornerLattice = cornerLattice || plain.stripeLatticeAvailable;
