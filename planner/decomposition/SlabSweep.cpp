@@ -201,6 +201,37 @@ SlabSweep sweepSlabs(const std::vector<Ring>& freeRings, const std::vector<Ring>
     return out;
 }
 
+namespace {
+
+// Where a slab narrower than W meets its neighbour: the walls' heights on either side.
+struct Joint {
+    bool left = false; // the narrow trapezoid lies left of the other
+    double aFloor = 0, bFloor = 0, aCeiling = 0, bCeiling = 0;
+};
+
+// Calls visit(narrow, other, joint) for every link's trapezoid narrower than w, both ways,
+// until no call returns true: a run of narrow slabs passes a band along.
+template <typename Visit> void untilSettled(const SlabSweep& sweep, double w, Visit visit) {
+    for (bool changed = true; changed;) {
+        changed = false;
+        for (const TrapezoidLink& link : sweep.links)
+            for (const auto& [narrow, wide] :
+                 {std::pair{link.left, link.right}, std::pair{link.right, link.left}}) {
+                const Trapezoid& a = sweep.trapezoids[narrow];
+                const Trapezoid& b = sweep.trapezoids[wide];
+                if (a.xb - a.xa >= w)
+                    continue;
+                Joint at;
+                at.left = narrow == link.left;
+                at.aFloor = at.left ? a.fb : a.fa, at.bFloor = at.left ? b.fa : b.fb;
+                at.aCeiling = at.left ? a.cb : a.ca, at.bCeiling = at.left ? b.ca : b.cb;
+                changed = visit(narrow, wide, at) || changed;
+            }
+    }
+}
+
+} // namespace
+
 int splitHeadlands(SlabSweep& sweep, int roomCount, double w, bool floors, bool ceilings,
                    double maxSlope, double epsY) {
     int bands = 0;
@@ -223,32 +254,45 @@ int splitHeadlands(SlabSweep& sweep, int roomCount, double w, bool floors, bool 
         gentleCeiling[t] = slope(z, z.ca, z.cb);
     }
     const double joint = std::max(epsY, 1e-6 * w);
-    // Repeated until nothing changes: a run of narrow slabs passes the band along.
-    for (bool changed = true; changed;) {
-        changed = false;
-        for (const TrapezoidLink& link : sweep.links) {
-            for (const auto& [narrow, wide] :
-                 {std::pair{link.left, link.right}, std::pair{link.right, link.left}}) {
-                const Trapezoid& a = sweep.trapezoids[narrow];
-                const Trapezoid& b = sweep.trapezoids[wide];
-                if (a.xb - a.xa >= w)
-                    continue;
-                const bool left = narrow == link.left; // the wide one lies to its right
-                const double aFloor = left ? a.fb : a.fa, bFloor = left ? b.fa : b.fb;
-                const double aCeiling = left ? a.cb : a.ca, bCeiling = left ? b.ca : b.cb;
-                if (!gentleFloor[narrow] && gentleFloor[wide] &&
-                    std::abs(aFloor - bFloor) <= joint && std::abs(a.fb - a.fa) <= 0.5 * w) {
-                    gentleFloor[narrow] = 1;
-                    changed = true;
-                }
-                if (!gentleCeiling[narrow] && gentleCeiling[wide] &&
-                    std::abs(aCeiling - bCeiling) <= joint && std::abs(a.cb - a.ca) <= 0.5 * w) {
-                    gentleCeiling[narrow] = 1;
-                    changed = true;
-                }
-            }
-        }
+    untilSettled(sweep, w, [&](int narrow, int wide, const Joint& at) {
+        const Trapezoid& a = sweep.trapezoids[narrow];
+        bool changed = false;
+        if (!gentleFloor[narrow] && gentleFloor[wide] && std::abs(at.aFloor - at.bFloor) <= joint &&
+            std::abs(a.fb - a.fa) <= 0.5 * w)
+            gentleFloor[narrow] = 1, changed = true;
+        if (!gentleCeiling[narrow] && gentleCeiling[wide] &&
+            std::abs(at.aCeiling - at.bCeiling) <= joint && std::abs(a.cb - a.ca) <= 0.5 * w)
+            gentleCeiling[narrow] = 1, changed = true;
+        return changed;
+    });
+    // A band's inner edge, per trapezoid at xa and xb: w off its wall, except that a slab
+    // narrower than W whose wall jogs by at most W/4 from a neighbour's (a traced wall's
+    // tooth or notch) takes that neighbour's edge, so that the band's pieces line up and
+    // form one cell instead of three offset by the jog.
+    std::vector<double> lowA(n), lowB(n), highA(n), highB(n);
+    std::vector<char> aligned(n, 0);
+    for (size_t t = 0; t < n; ++t) {
+        const Trapezoid& z = sweep.trapezoids[t];
+        lowA[t] = z.fa + w, lowB[t] = z.fb + w;
+        highA[t] = z.ca - w, highB[t] = z.cb - w;
     }
+    const double jog = 0.25 * w;
+    untilSettled(sweep, w, [&](int narrow, int wide, const Joint& at) {
+        const Trapezoid& a = sweep.trapezoids[narrow];
+        const Trapezoid& b = sweep.trapezoids[wide];
+        if (aligned[narrow] || (b.xb - b.xa < w && !aligned[wide]))
+            return false;
+        const double bLow = at.left ? lowA[wide] : lowB[wide];
+        const double bHigh = at.left ? highA[wide] : highB[wide];
+        if (gentleFloor[narrow] && gentleFloor[wide] && std::abs(at.aFloor - at.bFloor) <= jog &&
+            std::min(bLow - a.fa, bLow - a.fb) >= 0.5 * w)
+            lowA[narrow] = lowB[narrow] = bLow, aligned[narrow] = 1;
+        if (gentleCeiling[narrow] && gentleCeiling[wide] &&
+            std::abs(at.aCeiling - at.bCeiling) <= jog &&
+            std::min(a.ca - bHigh, a.cb - bHigh) >= 0.5 * w)
+            highA[narrow] = highB[narrow] = bHigh, aligned[narrow] = 1;
+        return aligned[narrow] != 0;
+    });
     std::vector<Trapezoid> split;
     std::vector<std::vector<int>> members(sweep.slabMembers.size());
     std::vector<TrapezoidStack> stacks;
@@ -259,15 +303,16 @@ int splitHeadlands(SlabSweep& sweep, int roomCount, double w, bool floors, bool 
             const bool band = z.room >= 0 && z.room < roomCount;
             const bool low = band && floors && floorIsWall[t] && gentleFloor[t];
             const bool high = band && ceilings && ceilingIsWall[t] && gentleCeiling[t];
-            const double height = std::min(z.ca - z.fa, z.cb - z.fb);
-            const double needed = (low ? w : 0.0) + (high ? w : 0.0);
+            // The middle piece left between the bands must stay at least W tall.
+            const double bottomA = low ? lowA[t] : z.fa, bottomB = low ? lowB[t] : z.fb;
+            const double topA = high ? highA[t] : z.ca, topB = high ? highB[t] : z.cb;
             std::vector<Trapezoid> pieces;
-            if ((low || high) && height > needed + w) {
+            if ((low || high) && std::min(topA - bottomA, topB - bottomB) > w) {
                 Trapezoid middle = z;
                 if (low) {
                     Trapezoid b = z;
                     b.room = roomCount + z.room;
-                    b.ca = z.fa + w, b.cb = z.fb + w;
+                    b.ca = lowA[t], b.cb = lowB[t];
                     middle.fa = b.ca, middle.fb = b.cb;
                     pieces.push_back(b);
                 }
@@ -275,7 +320,7 @@ int splitHeadlands(SlabSweep& sweep, int roomCount, double w, bool floors, bool 
                 if (high) {
                     Trapezoid b = z;
                     b.room = roomCount + z.room;
-                    b.fa = z.ca - w, b.fb = z.cb - w;
+                    b.fa = highA[t], b.fb = highB[t];
                     pieces.back().ca = b.fa, pieces.back().cb = b.fb;
                     pieces.push_back(b);
                 }

@@ -480,13 +480,26 @@ bool completePlan(const Metrics& metrics) {
     return metrics.uncoveredArea <= kReportedLossFraction * metrics.requiredArea;
 }
 
+namespace {
+// Plans are ranked by coverage in steps of kReportedLossFraction of the floor, 0 for a
+// complete plan: within a step, time decides. A ragged map's plans all miss a little
+// (pockets the disc barely reaches); ranking them by every 0.1% lost chose, on a lab's
+// map, a plan 43% slower that swept 0.27 m^2 more of its 141 m^2.
+long coverageStep(const Metrics& m) {
+    if (completePlan(m))
+        return 0;
+    if (!(m.requiredArea > 0.0))
+        return 1;
+    return static_cast<long>(
+               std::ceil(m.uncoveredArea / (kReportedLossFraction * m.requiredArea))) -
+           1;
+}
+} // namespace
+
 bool betterPlanChoice(const Metrics& candidate, const Metrics& best) {
-    const auto complete = completePlan;
-    if (complete(candidate) != complete(best))
-        return complete(candidate);
-    if (!complete(candidate) &&
-        std::abs(candidate.uncoveredArea - best.uncoveredArea) > 1e-3 * best.requiredArea)
-        return candidate.uncoveredArea < best.uncoveredArea;
+    const long c = coverageStep(candidate), b = coverageStep(best);
+    if (c != b)
+        return c < b;
     if (std::abs(candidate.time - best.time) > 1e-9 * std::max(1.0, best.time))
         return candidate.time < best.time;
     return candidate.length < best.length;

@@ -484,6 +484,35 @@ TEST(Headland, BandsRunIntoChamferedCorners) {
     EXPECT_NEAR(bandTo, 10.0, 1e-9);
 }
 
+// A traced wall's tooth (an obstacle's side bulging 0.1 m over 0.375 m, narrower than W)
+// does not offset the band beside it: the band's inner edge stays W from the wall on either
+// side of the tooth, under it too, so the band's pieces line up and join as one band.
+TEST(Headland, BandsRunPastATracedWallsTooth) {
+    Plan p;
+    p.boundary = rectangle(0, 0, 12, 10);
+    p.obstacles = {
+        Ring{{3, 5}, {5.35, 5}, {5.35, 4.9}, {5.725, 4.9}, {5.725, 5}, {9, 5}, {9, 8}, {3, 8}}};
+    DecompositionOptions o;
+    o.stripeAngleDeg = 90.0;
+    o.headland = Headland::Both;
+    const Decomposition d = decompose(p, o);
+    ASSERT_TRUE(d.headland);
+    // In the sweep frame the obstacle's toothed side is the floor of the floor beyond it, at
+    // y = 5 (5.1 at the tooth; the frame's y runs against the world's here).
+    double covered = 0.0;
+    for (const Cell& cell : d.cells) {
+        const double mid = 0.5 * (cell.x0 + cell.x1);
+        if (!cell.headland || cell.x0 < 3 - 1e-9 || cell.x1 > 9 + 1e-9 ||
+            std::abs(cell.floorAt(mid) - 5.05) > 0.06)
+            continue;
+        covered += cell.x1 - cell.x0;
+        for (double x : {cell.x0 + 1e-6, mid, cell.x1 - 1e-6})
+            EXPECT_NEAR(cell.ceilingAt(x), 6.0, 1e-9) << "band piece " << cell.x0 << "-" << cell.x1;
+    }
+    EXPECT_NEAR(covered, 6.0, 1e-9); // the band runs the obstacle's whole side
+    EXPECT_NEAR(totalArea(d), 120.0 - 18.0 - 0.0375, 1e-9);
+}
+
 TEST(Headland, NoBandInShallowRoomsOrWedges) {
     DecompositionOptions o;
     o.stripeAngleDeg = 0.0; // stripes along world x
