@@ -132,10 +132,9 @@ private:
 };
 
 // Walks the path every half pixel. Marks where the head's cross-section lies mostly over
-// area swept earlier (more than W of path before), and collects the pixels it passes.
+// area swept earlier (more than W of path before).
 struct PathWalk {
     std::vector<Segment> overlaps; // sweep frame
-    std::vector<size_t> visitedPixels;
 };
 
 PathWalk walkPath(const std::vector<PathSegment>& segments, const Grid& grid,
@@ -171,9 +170,6 @@ PathWalk walkPath(const std::vector<PathSegment>& segments, const Grid& grid,
             const double t = std::min(k * step, s.length);
             const Vec2 centre = s.a + s.direction * t;
             int col = 0, row = 0;
-            if (grid.pixelOf(centre, col, row) &&
-                (walk.visitedPixels.empty() || walk.visitedPixels.back() != grid.index(col, row)))
-                walk.visitedPixels.push_back(grid.index(col, row));
             // The last W of path is excluded so that the head never overlaps itself.
             const float sweptBefore = static_cast<float>(s.arcStart + t - width);
             int inside = 0, swept = 0;
