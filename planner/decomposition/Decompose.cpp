@@ -235,6 +235,40 @@ void joinAcrossSweptCells(Decomposition& out) {
 
 } // namespace
 
+namespace {
+
+// A band piece lower than W (beside a traced wall's tooth, splitHeadlands) has its single
+// pass run down its middle, off its neighbours' line by half the tooth: the band's pass then
+// zigzags, and the seals at its stripe ends, which the next piece's pass no longer sweeps,
+// stay as half turns. Its pass keeps W/2 from the band's inner edge (the border to the
+// stripes it heads), as its neighbours' do, where the robot fits there.
+void keepBandPassesInLine(Decomposition& out) {
+    const ClearanceField& field = out.clearance();
+    const double half = out.coverageWidth() / 2;
+    std::vector<int> innerFloor(out.cells.size(), 0), innerCeiling(out.cells.size(), 0);
+    for (const Adjacency& a : out.adjacencies)
+        if (a.kind == Adjacency::Kind::AlongSweep) {
+            innerCeiling[a.first] |= out.cells[a.first].headland && !out.cells[a.second].headland;
+            innerFloor[a.second] |= out.cells[a.second].headland && !out.cells[a.first].headland;
+        }
+    for (Cell& cell : out.cells) {
+        if (!cell.headland || innerFloor[cell.id] == innerCeiling[cell.id])
+            continue;
+        for (size_t i = 0; i < cell.stripes.size() && i < cell.stripeSpans.size(); ++i) {
+            Interval& span = cell.stripeSpans[i];
+            const double x = cell.stripes[i];
+            if (span.empty() || span.hi - span.lo > 1e-9)
+                continue; // a pass of its own length: the piece is W or more tall
+            const double y =
+                innerFloor[cell.id] ? cell.floorAt(x) + half : cell.ceilingAt(x) - half;
+            if (y > cell.floorAt(x) && y < cell.ceilingAt(x) && field.isClear({x, y}))
+                span.lo = span.hi = y;
+        }
+    }
+}
+
+} // namespace
+
 Decomposition decompose(const Plan& plan, const DecompositionOptions& options) {
     const double w = options.robot.coverageWidth;
     Decomposition out;
@@ -572,6 +606,7 @@ Decomposition decompose(const Plan& plan, const DecompositionOptions& options) {
             cell.room -= roomCount;
             cell.headland = true;
         }
+    keepBandPassesInLine(out);
     return out;
 }
 

@@ -486,7 +486,8 @@ TEST(Headland, BandsRunIntoChamferedCorners) {
 
 // A traced wall's tooth (an obstacle's side bulging 0.1 m over 0.375 m, narrower than W)
 // does not offset the band beside it: the band's inner edge stays W from the wall on either
-// side of the tooth, under it too, so the band's pieces line up and join as one band.
+// side of the tooth, under it too, so the band's pieces line up and join as one band, and
+// their single pass runs on one line.
 TEST(Headland, BandsRunPastATracedWallsTooth) {
     Plan p;
     p.boundary = rectangle(0, 0, 12, 10);
@@ -500,6 +501,7 @@ TEST(Headland, BandsRunPastATracedWallsTooth) {
     // In the sweep frame the obstacle's toothed side is the floor of the floor beyond it, at
     // y = 5 (5.1 at the tooth; the frame's y runs against the world's here).
     double covered = 0.0;
+    int passes = 0;
     for (const Cell& cell : d.cells) {
         const double mid = 0.5 * (cell.x0 + cell.x1);
         if (!cell.headland || cell.x0 < 3 - 1e-9 || cell.x1 > 9 + 1e-9 ||
@@ -508,8 +510,18 @@ TEST(Headland, BandsRunPastATracedWallsTooth) {
         covered += cell.x1 - cell.x0;
         for (double x : {cell.x0 + 1e-6, mid, cell.x1 - 1e-6})
             EXPECT_NEAR(cell.ceilingAt(x), 6.0, 1e-9) << "band piece " << cell.x0 << "-" << cell.x1;
+        // One pass W/2 from the band's inner edge, in line with its neighbours' (under the
+        // tooth too, where the robot keeps 0.4 m from it).
+        for (const Interval& span : cell.stripeSpans) {
+            if (span.empty())
+                continue; // no pass of its own (its neighbours' sweep it)
+            ++passes;
+            EXPECT_NEAR(span.lo, 5.5, 1e-9) << "band piece " << cell.x0 << "-" << cell.x1;
+            EXPECT_NEAR(span.hi, 5.5, 1e-9) << "band piece " << cell.x0 << "-" << cell.x1;
+        }
     }
     EXPECT_NEAR(covered, 6.0, 1e-9); // the band runs the obstacle's whole side
+    EXPECT_GE(passes, 5);
     EXPECT_NEAR(totalArea(d), 120.0 - 18.0 - 0.0375, 1e-9);
 }
 
