@@ -233,10 +233,6 @@ void joinAcrossSweptCells(Decomposition& out) {
     out.adjacencies.insert(out.adjacencies.end(), added.begin(), added.end());
 }
 
-} // namespace
-
-namespace {
-
 // A band piece lower than W (beside a traced wall's tooth, splitHeadlands) has its single
 // pass run down its middle, off its neighbours' line by half the tooth: the band's pass then
 // zigzags, and the seals at its stripe ends, which the next piece's pass no longer sweeps,

@@ -144,8 +144,9 @@ inline constexpr double kReportedLossFraction = 0.005;
 
 // Whether `candidate` is the better of two plans of one request: a plan that covers
 // everything reachable (uncovered at most kReportedLossFraction of the floor) beats one
-// that does not; then the shorter estimated time, then the shorter path. A shorter path
-// never buys less coverage.
+// that does not; plans that do not are ranked by coverage in steps of that fraction; within
+// a step, the shorter estimated time, then the shorter path. A shorter path never buys
+// less coverage.
 bool betterPlanChoice(const Metrics& candidate, const Metrics& best);
 
 // Estimated times this close (a share) count as equal when several plans of one request are
