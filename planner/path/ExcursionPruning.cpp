@@ -62,6 +62,12 @@ bool inStrip(Vec2 q, Vec2 a, Vec2 b, double h, double before, double after) {
     return s <= h && t >= -before && t <= len + after;
 }
 
+// A margin swept all but a sliver this thin (a share of W) along the wall needs no seal.
+// A traced wall is ragged by a map cell or two, so a flat stripe end's mitre misses a sliver
+// a few centimetres deep; its seal cost two turns and a metre for a hundredth of a square
+// metre. appendStripeEndSeal accepts wedges up to 0.2 W deep unsealed.
+constexpr double kSliverDepth = 0.1;
+
 } // namespace
 
 std::vector<char> prunableExcursions(const Polyline& pts,
@@ -126,7 +132,7 @@ std::vector<char> prunableExcursions(const Polyline& pts,
         for (int i = 0; i <= 8; ++i) {
             const Vec2 along = a + (b - a) * (0.02 + 0.96 * i / 8.0);
             for (int k = 1; k <= 4; ++k) {
-                const Vec2 q{along.x, along.y + side * 0.49 * width * k / 4.0};
+                const Vec2 q{along.x, along.y + side * (0.49 - kSliverDepth) * width * k / 4.0};
                 if (!covered(q, ex.begin, ex.end))
                     return false;
             }

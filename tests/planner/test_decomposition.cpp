@@ -263,6 +263,25 @@ TEST(StripeLattice, CellsKeepTheirOwnStripesWhereTheLatticeWouldNotHold) {
     }
 }
 
+// A noisy map's obstacle traced with a tooth: the slice at the tooth's tip (4.91) leaves a
+// sliver cell beside the tooth, narrower than W, next to the wide cell above the obstacle's
+// flank. The sliver closes the lower cell's side, so the lower cell spaces its stripes
+// evenly, ending W/2 inside at 4.41; the wide cell must then not run the lattice from 5.5,
+// which left 4.91 to 5.0 unswept along its whole height.
+TEST(StripeLattice, ASideClosedByOneNeighbourIsClosedForAll) {
+    using detail::LatticeCell;
+    const double w = 1.0;
+    const std::vector<LatticeCell> cells{
+        {0, 0.0, 4.91, 12, 12}, {0, 4.91, 8.0, 11, 11}, {0, 4.91, 5.0, 1, 1}};
+    const std::vector<detail::LatticeLink> links{{0, 1, 4.91, 11}, {0, 2, 4.91, 1}};
+    const detail::StripeLayout layout = detail::layOutStripes(cells, links, w);
+    ASSERT_FALSE(layout.stripes[0].empty());
+    ASSERT_FALSE(layout.stripes[1].empty());
+    // The depths either side of the shared side are swept by one of the two cells.
+    EXPECT_LE(layout.stripes[1].front() - 0.5 * w, layout.stripes[0].back() + 0.5 * w + 1e-9);
+    EXPECT_EQ(layout.onLattice[0], layout.onLattice[1]);
+}
+
 // Every x in [from, to] lies within W/2 of some cell's stripe.
 void expectEveryDepthSwept(const detail::StripeLayout& layout, double from, double to, double w) {
     std::vector<double> all;

@@ -126,3 +126,26 @@ TEST(ExcursionPruning, ANearlySquareTurnSweepsTheSealsMargin) {
     const std::vector<char> sharp = detail::prunableExcursions(path({8.5, 3.5}), seal, w);
     EXPECT_TRUE(sharp[2]); // 135 degrees: kept
 }
+
+// Under a traced wall a few centimetres higher beside the stripe's end (a ragged map cell),
+// the square turn's mitre sweeps all of the seal's margin but a sliver a few centimetres
+// deep: the seal, two turns and a metre, is dropped. A true wedge (the border rising a
+// quarter of W over the half-column) keeps its seal.
+TEST(ExcursionPruning, ARaggedWallsSliverNeedsNoSeal) {
+    const double w = 1.0;
+    auto path = [](double tipY) {
+        return Polyline{{7.5, 0.5},
+                        {7.5, 4.5},
+                        {7.25, 0.5 * (4.5 + tipY)},
+                        {7.0, tipY},
+                        {7.25, 0.5 * (4.5 + tipY)},
+                        {7.5, 4.5},
+                        {8.5, 4.5},
+                        {8.5, 0.5}};
+    };
+    const std::vector<PathExcursion> seal{{1, 5, true}};
+    const std::vector<char> ragged = detail::prunableExcursions(path(4.55), seal, w);
+    EXPECT_FALSE(ragged[3]); // the seal's far end is dropped
+    const std::vector<char> wedge = detail::prunableExcursions(path(4.75), seal, w);
+    EXPECT_TRUE(wedge[3]);
+}
