@@ -132,6 +132,43 @@ std::optional<PlanResult> planPiece(const PlanRequest& request, const WallLoop& 
     }
 }
 
+// Straight-line distance from p to the nearest corner of the rest's pieces.
+double distanceToRest(const WallLoop& walls, Vec2 p) {
+    double nearest = INFINITY;
+    for (const Ring& piece : walls.rest)
+        for (const Vec2& q : piece)
+            nearest = std::min(nearest, norm(q - p));
+    return nearest;
+}
+
+// Where the loop breaks off for the rest (index into walls.loop; its last index: after
+// the whole loop). The rest's tour leaves the loop and comes back to it there, and the
+// loop then goes on to its end. Driving the whole loop first sends the tour to the rest
+// from the loop's end and back to `end` from it: where the loop starts in a dead end (a
+// corridor to a room, the start beside a door), that drives the dead end twice more.
+// Chosen by straight-line estimates: out and back from the split point, against out from
+// the loop's end and back to `end`; the earliest of equally good split points, and only
+// where it saves kEdgeSplitMinGainInWidths W.
+size_t loopSplit(const WallLoop& walls, Vec2 end, double width) {
+    const size_t last = walls.loop.size() - 1;
+    if (walls.rest.empty())
+        return last;
+    const double afterLoop = distanceToRest(walls, walls.loop[last]) + distanceToRest(walls, end);
+    const double toEnd = norm(end - walls.loop[last]);
+    size_t best = last;
+    double bestCost = afterLoop;
+    for (size_t i = 0; i < last; ++i) {
+        const double cost = 2.0 * distanceToRest(walls, walls.loop[i]) + toEnd;
+        if (cost < bestCost - 1e-3) {
+            best = i;
+            bestCost = cost;
+        }
+    }
+    // A small estimated gain is noise: the rest's pieces are then toured from elsewhere, in
+    // another order (the faculty map: 1.2 m estimated, 11 m lost).
+    return bestCost < afterLoop - kEdgeSplitMinGainInWidths * width ? best : last;
+}
+
 } // namespace
 
 bool wantsWallLoop(const PlanRequest& request) {
@@ -169,10 +206,15 @@ WallLoopDraft draftWallLoop(const PlanRequest& request, const SolveControl& cont
     CoveragePath& path = draft.path;
     path.points.push_back(start);
     appendTransit(floor, path, walls->loop.front());
-    for (size_t i = 1; i < walls->loop.size(); ++i) {
-        path.points.push_back(walls->loop[i]);
-        path.kinds.push_back(SegmentKind::Contour);
-    }
+    const size_t split = loopSplit(*walls, end, width);
+    auto driveLoop = [&](size_t from, size_t to) {
+        for (size_t i = from + 1; i <= to; ++i) {
+            path.points.push_back(walls->loop[i]);
+            path.kinds.push_back(SegmentKind::Contour);
+        }
+    };
+    driveLoop(0, split);
+    const Vec2 restEnd = split + 1 < walls->loop.size() ? walls->loop[split] : end;
     // The rest piece by piece, the nearest next; each ends where the piece after it is
     // nearest (the last one where the path ends).
     const size_t count = walls->rest.size();
@@ -189,7 +231,7 @@ WallLoopDraft draftWallLoop(const PlanRequest& request, const SolveControl& cont
                     next = i;
                 }
         done[next] = 1;
-        Vec2 towards = end;
+        Vec2 towards = restEnd;
         double after = INFINITY;
         for (size_t i = 0; i < count; ++i)
             for (const Vec2& p : walls->rest[i])
@@ -209,6 +251,10 @@ WallLoopDraft draftWallLoop(const PlanRequest& request, const SolveControl& cont
         draft.lowerBound = draft.lowerBound >= 0.0 && planned->metrics.lowerBound >= 0.0
                                ? draft.lowerBound + planned->metrics.lowerBound
                                : -1.0;
+    }
+    if (split + 1 < walls->loop.size()) {
+        appendTransit(floor, path, walls->loop[split]);
+        driveLoop(split, walls->loop.size() - 1);
     }
     appendTransit(floor, path, end);
     return draft;

@@ -83,6 +83,15 @@ TEST(IslandDetours, AnIslandTheRobotCannotPassIsPartOfItsNeighbour) {
     const double area = std::abs(signedArea(islands.keptHoles.front()));
     EXPECT_GT(area, 16.0 + 0.25 + 0.5 * 0.4 - 0.02);
     EXPECT_LT(area, 16.0 + 0.25 + 0.5 * 0.4 + 0.05);
+    // The merged hole covers both outlines whole: closing by round buffers (chords) cut
+    // their convex corners by a millimetre or two, and a path round it came that much too
+    // near them.
+    for (const Ring* member : {&courtyard, &bin})
+        for (const Vec2& corner : *member)
+            EXPECT_TRUE(pointInRing(islands.keptHoles.front(), corner) ||
+                        distanceToRing(islands.keptHoles.front(), corner) < 1e-9)
+                << corner.x << ", " << corner.y << " lies "
+                << distanceToRing(islands.keptHoles.front(), corner) << " m outside";
 }
 
 TEST(IslandDetours, AStripeThroughAnIslandGoesRoundItTheShorterWay) {
