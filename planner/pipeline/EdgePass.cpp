@@ -216,7 +216,7 @@ WallLoopDraft draftWallLoop(const PlanRequest& request, const SolveControl& cont
     driveLoop(0, split);
     const Vec2 restEnd = split + 1 < walls->loop.size() ? walls->loop[split] : end;
     // The rest piece by piece, the nearest next; each ends where the piece after it is
-    // nearest (the last one where the path ends).
+    // nearest (the last one where the tour rejoins the loop, or where the path ends).
     const size_t count = walls->rest.size();
     std::vector<char> done(count, 0);
     for (size_t k = 0; k < count; ++k) {
