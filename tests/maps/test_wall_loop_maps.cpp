@@ -52,10 +52,29 @@ Plan raggedOutline(double width, double depth, std::mt19937_64& rng) {
     return plan;
 }
 
+// Each seed's placement: an odd angle (degrees) and, for odd seeds, a UTM-sized offset.
+struct Placement {
+    double degrees;
+    Vec2 offset;
+};
+
+Placement placementOf(std::uint64_t seed) {
+    return {fcgen::oddAngles(seed, 1).front(),
+            seed % 2 ? Vec2{512345.0, 5432109.0} : Vec2{-7.0, 3.0}};
+}
+
 Plan placed(const Plan& plan, std::uint64_t seed) {
-    const double rotation = fcgen::oddAngles(seed, 1).front();
-    const Vec2 offset = seed % 2 ? Vec2{512345.0, 5432109.0} : Vec2{-7.0, 3.0};
-    return fcgen::transformPlan(plan, rotation, offset);
+    const Placement at = placementOf(seed);
+    return fcgen::transformPlan(plan, at.degrees, at.offset);
+}
+
+// A point of the drawing placed as `placed` places the plan (forward), or back.
+Vec2 placedPoint(Vec2 p, std::uint64_t seed, bool forward) {
+    const Placement at = placementOf(seed);
+    const double a = (forward ? 1.0 : -1.0) * at.degrees * M_PI / 180.0;
+    const Vec2 q = forward ? p : p - at.offset;
+    const Vec2 turned{std::cos(a) * q.x - std::sin(a) * q.y, std::sin(a) * q.x + std::cos(a) * q.y};
+    return forward ? turned + at.offset : turned;
 }
 
 Plan raggedHall(std::uint64_t seed) {
@@ -224,12 +243,9 @@ TEST(WallLoopMaps, TheRestIsTouredFromWhereTheLoopEntersTheFloor) {
         drawing.boundary =
             jittered({{0, 0}, {1, 0}, {1, -8}, {2.5, -8}, {2.5, 0}, {12, 0}, {12, 8}, {0, 8}}, rng);
         // At an odd angle and a UTM-sized offset; the far end moved with it.
-        drawing.obstacles.push_back({{1.75, -7.5}}); // only carried through the transform
-        Plan plan = placed(drawing, seed);
-        const Vec2 farEnd = plan.obstacles.back().front();
-        plan.obstacles.clear();
+        const Plan plan = placed(drawing, seed);
         PlanRequest request = fcgen::defaultRequest(plan);
-        request.start = farEnd;
+        request.start = placedPoint({1.75, -7.5}, seed, true);
         ASSERT_TRUE(detail::wantsWallLoop(request));
         std::promise<double> estimate;
         const detail::WallLoopDraft draft = detail::draftWallLoop(request, {}, estimate);
@@ -237,14 +253,9 @@ TEST(WallLoopMaps, TheRestIsTouredFromWhereTheLoopEntersTheFloor) {
         const PlanResult result = planCoverage(request);
         EXPECT_GE(result.metrics.coverage, 0.99);
         // The corridor in the drawing's frame: the path's points moved back.
-        const double angle = fcgen::oddAngles(seed, 1).front() * M_PI / 180.0;
-        const Vec2 offset = seed % 2 ? Vec2{512345.0, 5432109.0} : Vec2{-7.0, 3.0};
         Polyline back;
-        for (const Vec2& p : draft.path.points) {
-            const Vec2 q = p - offset;
-            back.push_back({std::cos(angle) * q.x + std::sin(angle) * q.y,
-                            -std::sin(angle) * q.x + std::cos(angle) * q.y});
-        }
+        for (const Vec2& p : draft.path.points)
+            back.push_back(placedPoint(p, seed, false));
         const double corridor = lengthInside(back, {1.0, -8.0}, {2.5, -0.5});
         std::printf("seed %llu: the wall loop's draft %.1f m, %.1f m of it in the corridor (7.5 m "
                     "long); the plan kept %.1f m\n",
