@@ -234,10 +234,6 @@ struct FloorRaster {
     std::vector<Ring> freeSpace; // what it was made of
     Grid grid;
     Mask free, headReach;
-    // The robot centre's positions split into parts it cannot drive between (a door
-    // narrower than the robot): each centre pixel's part (8-connected), -1 elsewhere.
-    std::vector<int> centrePart;
-    int centreParts = 0;
 };
 
 std::shared_ptr<const FloorRaster> makeFloorRaster(const MetricsInput& input) {
@@ -266,10 +262,9 @@ std::shared_ptr<const FloorRaster> makeFloorRaster(const MetricsInput& input) {
     const double minDistance = robotRadius / resolution + 0.5;
     const float minDistance2 = static_cast<float>(minDistance * minDistance - 1e-6);
     // Sweepable: what a head of width W reaches from any centre position (a disc of radius
-    // W/2 around it), whether or not the path's start can get there: coverage counts a part
-    // of the floor that the start cannot reach against the path, never silently leaves it
-    // out (computeMetrics reports it as unreachable). The centre region is half a pixel
-    // conservative, so the reach gets that half back.
+    // W/2 around it), whether or not the path's start can get there: a part of the floor
+    // that the start cannot reach is uncovered, never silently left out. The centre region
+    // is half a pixel conservative, so the reach gets that half back.
     Mask notCentre(grid.size(), 1);
     bool anyCentre = false;
     for (size_t i = 0; i < grid.size(); ++i) {
@@ -277,10 +272,6 @@ std::shared_ptr<const FloorRaster> makeFloorRaster(const MetricsInput& input) {
         notCentre[i] = centre ? 0 : 1;
         anyCentre = anyCentre || centre;
     }
-    Mask centre(grid.size());
-    for (size_t i = 0; i < grid.size(); ++i)
-        centre[i] = !notCentre[i];
-    floor->centreParts = labelComponents8(centre, grid.cols, grid.rows, floor->centrePart);
     const std::vector<float> toCentre2 = squaredDistanceToBlocked(notCentre, grid.cols, grid.rows);
     const double reachPixels = halfWidthPixels + 0.5;
     const float reach2 = static_cast<float>(reachPixels * reachPixels + 1e-6);
@@ -303,92 +294,6 @@ std::shared_ptr<const FloorRaster> floorRasterOf(const MetricsInput& input) {
         key, [&] { return std::shared_ptr<const FloorRaster>(makeFloorRaster(input)); });
     // A copy whose free space was changed after decompose: measured afresh.
     return floor->freeSpace == decomposition.freeSpace ? floor : makeFloorRaster(input);
-}
-
-// Sweepable floor the path's start cannot reach (1, else 0): what the head reaches only from
-// parts of the centre region other than the one the path starts in and those it drives in
-// (a passage the raster finds shut that the path drives through). Parts the path merely
-// misses stay reachable: a part is cut off only when no way leads there from the start,
-// never because the path did not go there. Empty when nothing is cut off (one part, every
-// part reached, or no part beside the start).
-Mask cutOffFromPath(const FloorRaster& floor, const std::vector<PathSegment>& segments,
-                    double width) {
-    const Grid& grid = floor.grid;
-    if (floor.centreParts <= 1 || segments.empty())
-        return {};
-    std::vector<char> driven(floor.centreParts, 0);
-    int drivenParts = 0;
-    // The centre region is half a pixel conservative: a path along its edge may lie in the
-    // pixel beside it.
-    auto visit = [&](Vec2 p) {
-        int col = 0, row = 0;
-        if (!grid.pixelOf(p, col, row))
-            return false;
-        bool any = false;
-        for (int dr = -1; dr <= 1; ++dr)
-            for (int dc = -1; dc <= 1; ++dc) {
-                const int c = col + dc, r = row + dr;
-                if (c < 0 || r < 0 || c >= grid.cols || r >= grid.rows)
-                    continue;
-                const int part = floor.centrePart[grid.index(c, r)];
-                any = any || part >= 0;
-                if (part >= 0 && !driven[part])
-                    driven[part] = 1, ++drivenParts;
-            }
-        return any;
-    };
-    if (!visit(segments.front().a))
-        return {}; // the start is in no part: nothing is known to be cut off
-    for (const PathSegment& s : segments) {
-        const int steps = static_cast<int>(std::ceil(s.length / (0.5 * grid.resolution)));
-        for (int k = 0; k <= steps; ++k)
-            visit(s.a + s.direction * (s.length * k / std::max(steps, 1)));
-    }
-    if (drivenParts == floor.centreParts)
-        return {};
-    // The head's reach from the parts not driven in, less its reach from those driven in:
-    // scanned around the undriven parts only (a traced map's pockets are small; a distance
-    // transform of the whole floor on every measurement would cost more than they do).
-    const double reachPixels = 0.5 * width / grid.resolution + 0.5;
-    const double reach2 = reachPixels * reachPixels + 1e-6;
-    const int radius = static_cast<int>(std::ceil(reachPixels));
-    std::vector<std::pair<int, int>> disc;
-    for (int dr = -radius; dr <= radius; ++dr)
-        for (int dc = -radius; dc <= radius; ++dc)
-            if (dc * dc + dr * dr <= reach2)
-                disc.push_back({dc, dr});
-    Mask cut(grid.size(), 0); // 1: within reach of an undriven part; 2: and of a driven one
-    std::vector<size_t> near;
-    for (int row = 0; row < grid.rows; ++row)
-        for (int col = 0; col < grid.cols; ++col) {
-            const int part = floor.centrePart[grid.index(col, row)];
-            if (part < 0 || driven[part])
-                continue;
-            for (const auto& [dc, dr] : disc) {
-                const int c = col + dc, r = row + dr;
-                if (c < 0 || r < 0 || c >= grid.cols || r >= grid.rows)
-                    continue;
-                const size_t j = grid.index(c, r);
-                if (floor.headReach[j] && !cut[j])
-                    cut[j] = 1, near.push_back(j);
-            }
-        }
-    for (const size_t j : near) {
-        const int col = static_cast<int>(j % grid.cols), row = static_cast<int>(j / grid.cols);
-        for (const auto& [dc, dr] : disc) {
-            const int c = col + dc, r = row + dr;
-            if (c < 0 || r < 0 || c >= grid.cols || r >= grid.rows)
-                continue;
-            const int part = floor.centrePart[grid.index(c, r)];
-            if (part >= 0 && driven[part]) {
-                cut[j] = 2;
-                break;
-            }
-        }
-    }
-    for (const size_t j : near)
-        cut[j] = cut[j] == 1;
-    return cut;
 }
 
 } // namespace
@@ -428,11 +333,8 @@ Metrics computeMetrics(const MetricsInput& input) {
     const PathWalk walk = walkPath(segments, grid, swept.firstArc(), width);
 
     double requiredPixels = 0.0, sweepablePixels = 0.0, coveredPixels = 0.0; // counts
-    double strandedPixels = 0.0; // sweepable, but not from where the path can drive
     const std::vector<float>& firstArc = swept.firstArc();
     const Mask& headReach = floor->headReach;
-    const Mask cutOff = cutOffFromPath(*floor, segments, width);
-    auto stranded = [&](size_t i) { return !cutOff.empty() && cutOff[i]; };
     for (size_t i = 0; i < grid.size(); ++i) {
         if (!(free[i] && required[i]))
             continue;
@@ -440,11 +342,10 @@ Metrics computeMetrics(const MetricsInput& input) {
         if (headReach[i]) {
             sweepablePixels += 1.0;
             coveredPixels += firstArc[i] != kNeverSwept ? 1.0 : 0.0;
-            strandedPixels += stranded(i) && firstArc[i] == kNeverSwept ? 1.0 : 0.0;
         }
     }
-    const size_t missed = static_cast<size_t>(sweepablePixels - coveredPixels - strandedPixels);
-    const size_t unreached = static_cast<size_t>(requiredPixels - sweepablePixels + strandedPixels);
+    const size_t missed = static_cast<size_t>(sweepablePixels - coveredPixels);
+    const size_t unreached = static_cast<size_t>(requiredPixels - sweepablePixels);
     const size_t stride = std::max<size_t>(1, missed / 20000 + 1);
     const size_t unreachedStride = std::max<size_t>(1, unreached / 20000 + 1);
     size_t seen = 0, seenUnreached = 0;
@@ -453,18 +354,16 @@ Metrics computeMetrics(const MetricsInput& input) {
             const size_t i = grid.index(col, row);
             if (!(free[i] && required[i]))
                 continue;
-            const bool isCutOff = stranded(i) && firstArc[i] == kNeverSwept;
-            if (headReach[i] && !isCutOff && firstArc[i] == kNeverSwept && seen++ % stride == 0)
+            if (headReach[i] && firstArc[i] == kNeverSwept && seen++ % stride == 0)
                 metrics.uncovered.push_back(decomposition->frame.toWorld(grid.centre(col, row)));
-            if ((!headReach[i] || isCutOff) && seenUnreached++ % unreachedStride == 0)
+            if (!headReach[i] && seenUnreached++ % unreachedStride == 0)
                 metrics.unreachable.push_back(decomposition->frame.toWorld(grid.centre(col, row)));
         }
     metrics.requiredArea = requiredPixels * grid.pixelArea();
     metrics.sweepableArea = sweepablePixels * grid.pixelArea();
     metrics.coveredArea = coveredPixels * grid.pixelArea();
-    metrics.uncoveredArea = (sweepablePixels - coveredPixels - strandedPixels) * grid.pixelArea();
-    metrics.unreachableArea =
-        (requiredPixels - sweepablePixels + strandedPixels) * grid.pixelArea();
+    metrics.uncoveredArea = metrics.sweepableArea - metrics.coveredArea;
+    metrics.unreachableArea = metrics.requiredArea - metrics.sweepableArea;
     metrics.coverage = sweepablePixels > 0.0 ? coveredPixels / sweepablePixels : 0.0;
     metrics.ideal = metrics.sweepableArea / width;
     metrics.extra = metrics.length - metrics.ideal;

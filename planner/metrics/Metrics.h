@@ -22,22 +22,19 @@ struct Metrics {
     double lowerBound = -1.0; // proven bound on graphCost, < 0 unknown
     double seconds = 0.0;     // planning time
     // Areas over the free space of the required rooms (all of it, not only the cells that
-    // were planned): required = covered + uncovered + unreachable. Sweepable floor the
-    // path's start cannot reach (a room behind a door narrower than the robot) counts in
-    // the sweepable area, so coverage never hides it, and as unreachable, not uncovered.
+    // were planned): required = sweepable + unreachable, sweepable = covered + uncovered.
     double requiredArea = 0.0;     // m^2, free area of the required rooms
     double sweepableArea = 0.0;    // m^2, what a disc of diameter L sweeps with a W-wide head
-                                   // (its centre L/2 from walls) from any position it fits
-                                   // in; denominator of coverage
+                                   // (its centre L/2 from walls); denominator of coverage
     double coveredArea = 0.0;      // m^2, numerator of coverage
-    double uncoveredArea = 0.0;    // m^2, the path could sweep it from its start, and missed it
-    double unreachableArea = 0.0;  // m^2, required free area no robot position can sweep, or
-                                   // none the path's start can drive to
+    double uncoveredArea = 0.0;    // m^2, sweepable but missed by the path
+    double unreachableArea = 0.0;  // m^2, required free area no robot position can sweep
     std::vector<Segment> overlaps; // world frame: path pieces over area already swept
     // World-frame sample points of sweepable area the path never swept (coverage gaps),
     // thinned to at most about 20,000 points.
     std::vector<Vec2> uncovered;
-    // World-frame sample points of the unreachable area, thinned the same way.
+    // World-frame sample points of required free area no robot position can sweep
+    // (unreachable), thinned the same way.
     std::vector<Vec2> unreachable;
 };
 

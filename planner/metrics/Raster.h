@@ -87,8 +87,4 @@ Mask dilateSquare(const Mask& mask, int cols, int rows, int radius);
 // Pixels of `region` 4-connected to any seed pixel (indices into the grid).
 Mask floodFill(const Mask& region, int cols, int rows, const std::vector<size_t>& seeds);
 
-// The 8-connected components of `mask`: `label` gets each set pixel's component (0, 1, ..),
-// -1 elsewhere; returns their number.
-int labelComponents8(const Mask& mask, int cols, int rows, std::vector<int>& label);
-
 } // namespace fc

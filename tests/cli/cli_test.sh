@@ -91,7 +91,7 @@ check "0.9 m door: both rooms" cli plan "$data/door-0.9m.geojson" --start 1,1 --
 check "metrics 0.9 m door" metrics_ok
 "$cli" plan "$data/door-0.5m.geojson" --start 1,1 --out "$work/narrow.geojson" >"$work/out" 2>"$work/err"
 rc=$?
-if [ "$rc" -eq 0 ] && grep -q "the robot cannot reach" "$work/err" && [ -s "$work/narrow.geojson" ]; then
+if [ "$rc" -eq 0 ] && grep -q "does not cover" "$work/err" && [ -s "$work/narrow.geojson" ]; then
   passed=$((passed + 1))
 else
   failed=$((failed + 1)); echo "FAIL: 0.5 m door warns (exit $rc)"; head -3 "$work/err"

@@ -150,21 +150,3 @@ TEST_P(SamplePlans, CollisionFreeAndCoveringOrReported) {
 
 INSTANTIATE_TEST_SUITE_P(Random, GeneratedPlans, ::testing::ValuesIn(generatedCases()), caseName);
 INSTANTIATE_TEST_SUITE_P(Rotated, SamplePlans, ::testing::ValuesIn(sampleCases()), caseName);
-
-// A room behind a door narrower than the robot (door-rooms seed 105: a 0.804 m door whose
-// jambs leave 0.576 m, the default start on the far side): the planner measures over every
-// room, reports that room as floor the robot cannot reach, as the checker does, and sweeps
-// all it can reach. Before, the room counted as floor the path missed (0.12 m^2
-// unreachable against the checker's 17.7), and a per-room plan that left out a reachable
-// room (its part's graph joined the start beyond the narrow door) was not measured there.
-TEST(ReachableFloor, ARoomBehindADoorNarrowerThanTheRobotIsUnreachableAsTheCheckerFinds) {
-    const GeneratedPlan g = generatePlan(Family::DoorRooms, 105);
-    const Outcome o = planAndCheck(defaultRequest(g.plan));
-    ASSERT_TRUE(o.planned) << o.error;
-    ASSERT_GT(o.check.unreachableArea, 15.0) << g.description;
-    EXPECT_NEAR(o.metrics.unreachableArea, o.check.unreachableArea, 1.0);
-    EXPECT_LT(o.metrics.uncoveredArea, 0.005 * o.check.floorArea);
-    EXPECT_GE(o.check.coverage, 0.99);  // of the floor the start reaches
-    EXPECT_LT(o.metrics.coverage, 0.6); // coverage never hides the room
-    EXPECT_TRUE(o.collisionFree);
-}
