@@ -6,6 +6,7 @@
 #include "graph/ComponentBridges.h"
 #include "pipeline/PerRoomSweep.h"
 #include "pipeline/Planner.h"
+#include "pipeline/PreparedPlans.h"
 
 #include <cmath>
 #include <gtest/gtest.h>
@@ -100,6 +101,24 @@ TEST(RobotDisc, DoorNarrowerThanTheRobotLeavesTheRoomUncoveredAndSaysSo) {
     for (const std::string& w : r.warnings)
         named |= w.find("does not cover") != std::string::npos;
     EXPECT_TRUE(named);
+}
+
+// A room at its own angle behind a door narrower than the robot: the plan of the rooms at
+// their angles leaves it out with a warning and still measures it, so its coverage cannot
+// look complete and win against plans that do cover it.
+TEST(RobotDisc, ARoomLeftOutAtItsOwnAngleStillCountsAgainstCoverage) {
+    PlanRequest request = requestFor(twoRoomsWithDoor(0.5));
+    request.start = Vec2{1, 1};
+    const PreparedPlans prepared(request.plan, request.robot, request.transitionCells);
+    const PlanResult r =
+        planWithRoomAngles(request, {{"", 0.0}, {"West", 0.0}, {"East", 90.0}}, {}, prepared);
+    bool leftOut = false;
+    for (const std::string& w : r.warnings)
+        leftOut |= w.find("East cannot be reached") != std::string::npos;
+    EXPECT_TRUE(leftOut);
+    EXPECT_NEAR(r.metrics.requiredArea, 2 * 6 * 5 + 0.2 * 0.5, 0.5);
+    EXPECT_GT(r.metrics.uncoveredArea + r.metrics.unreachableArea, 25.0);
+    EXPECT_LT(r.metrics.coverage, 0.6);
 }
 
 TEST(RobotDisc, GapBesideABedNarrowerThanTheSwathIsSwept) {
