@@ -37,12 +37,44 @@ public:
 private:
     // The robot-centre path between two points inside a cell along its top or bottom.
     Polyline border(const Cell& cell, const StripeRun& from, const StripeRun& to, bool top) {
-        Polyline line = traceBorder(cell, from.x, to.x, top, field_);
         const Vec2 a{from.x, top ? from.span.hi : from.span.lo};
         const Vec2 b{to.x, top ? to.span.hi : to.span.lo};
+        // Between one-point stripes (a band lower than W) the step is the coverage itself.
+        const bool band = from.span.hi - from.span.lo <= 1e-9 && to.span.hi - to.span.lo <= 1e-9;
+        if (chordSweepsBorder(cell, a, b, top || band, !top || band))
+            return {a, b};
+        Polyline line = traceBorder(cell, from.x, to.x, top, field_);
         if (line.size() >= 2 && field_.polylineIsClear(line))
             return line;
         return field_.findPath(a, b, {}, 8 * dec_.coverageWidth() + distance(a, b));
+    }
+
+    // Whether the straight step from a to b keeps the robot clear and its head reaches the
+    // cell's ceiling (reachCeiling) and floor (reachFloor) all along. The border trace keeps
+    // W/2 from them and so bends round every tooth of a traced wall shallower than W/2 - L/2
+    // (the map's ragged edge), where the straight step sweeps the same floor.
+    bool chordSweepsBorder(const Cell& cell, Vec2 a, Vec2 b, bool reachCeiling,
+                           bool reachFloor) const {
+        if (a.x == b.x || !field_.segmentIsClear(a, b))
+            return false;
+        const double half = 0.5 * dec_.coverageWidth(), tolerance = 1e-3 * half;
+        const double x0 = std::min(a.x, b.x), x1 = std::max(a.x, b.x);
+        std::vector<double> xs{x0, x1};
+        for (const Polyline* f : {&cell.floor, &cell.ceiling})
+            for (const Vec2& p : *f)
+                if (p.x > x0 && p.x < x1)
+                    xs.push_back(p.x);
+        const int uniform = static_cast<int>(std::ceil((x1 - x0) / (0.25 * half)));
+        for (int i = 1; i < uniform; ++i)
+            xs.push_back(x0 + (x1 - x0) * i / uniform);
+        for (double x : xs) {
+            const double y = a.y + (b.y - a.y) * (x - a.x) / (b.x - a.x);
+            if (reachCeiling && y + half < cell.ceilingAt(x) - tolerance)
+                return false;
+            if (reachFloor && y - half > cell.floorAt(x) + tolerance)
+                return false;
+        }
+        return true;
     }
 
     // A flat head end leaves a wedge under a slanted floor or ceiling. Where no connection

@@ -93,3 +93,73 @@ TEST(CornerGraph, DoorConnectsStackedRooms) {
             crossesRooms = true;
     EXPECT_TRUE(crossesRooms);
 }
+
+namespace {
+
+// A 20 x 14 m room whose top wall carries a feature from x0 to x1: a tooth (depth > 0)
+// bulging into the floor, or a notch (depth < 0) into the wall, as a traced map's walls
+// have. Decomposed with headland bands, stripes across the top wall (L = 0.6 m, W = 1 m).
+Decomposition bandBesideAFeature(double x0, double x1, double depth) {
+    Plan p;
+    const double y = 14 - depth;
+    p.boundary = {{0, 0}, {20, 0}, {20, 14}, {x1, 14}, {x1, y}, {x0, y}, {x0, 14}, {0, 14}};
+    DecompositionOptions o;
+    o.stripeAngleDeg = 90.0;
+    o.headland = Headland::Both;
+    o.robot.robotDiameter = 0.6;
+    o.robot.coverageWidth = 1.0;
+    return decompose(p, o);
+}
+
+// Where the top band's pass runs past the feature (world x in (x0, x1)): (min y, max y) of
+// the robot centre there on the band's edges, world frame; NaN when none passes.
+std::pair<double, double> bandPassOver(const Decomposition& d, const CornerGraph& g, double x0,
+                                       double x1) {
+    double lo = NAN, hi = NAN;
+    for (const GraphEdge& e : g.edges) {
+        const bool band = e.kind == EdgeKind::Coverage ? d.cells[e.cell].headland
+                                                       : d.cells[g.nodes[e.u].cell].headland &&
+                                                             d.cells[g.nodes[e.v].cell].headland;
+        if (!band)
+            continue;
+        for (size_t i = 1; i < e.geometry.size(); ++i) {
+            const Vec2 a = d.frame.toWorld(e.geometry[i - 1]), b = d.frame.toWorld(e.geometry[i]);
+            for (double x = x0 + 0.01; x < x1 - 0.005; x += 0.01) {
+                if ((x - a.x) * (x - b.x) > 0 || a.x == b.x)
+                    continue;
+                const double y = a.y + (b.y - a.y) * (x - a.x) / (b.x - a.x);
+                if (y < 12.5)
+                    continue;
+                lo = std::isnan(lo) ? y : std::min(lo, y);
+                hi = std::isnan(hi) ? y : std::max(hi, y);
+            }
+        }
+    }
+    return {lo, hi};
+}
+
+} // namespace
+
+// A traced wall's tooth shallower than W/2 - L/2 leaves the robot room to pass in line: the
+// band's single pass runs straight past it (0.4 m from it) instead of bending round it
+// along the middle of the band, which cost turns and length on every ragged map wall.
+TEST(CornerGraph, BandPassRunsStraightPastAShallowTooth) {
+    const Decomposition d = bandBesideAFeature(4.2, 4.575, 0.1);
+    ASSERT_TRUE(d.headland);
+    const CornerGraph g = buildCornerGraph(d);
+    const auto [lo, hi] = bandPassOver(d, g, 4.2, 4.575);
+    ASSERT_FALSE(std::isnan(lo));
+    EXPECT_NEAR(lo, 13.5, 1e-9);
+    EXPECT_NEAR(hi, 13.5, 1e-9);
+}
+
+// A notch the robot fits into is floor the straight pass would miss: the pass still bends
+// into it so that its head reaches the notch's end.
+TEST(CornerGraph, BandPassStillReachesIntoANotch) {
+    const Decomposition d = bandBesideAFeature(4.2, 5.4, -0.15);
+    ASSERT_TRUE(d.headland);
+    const CornerGraph g = buildCornerGraph(d);
+    const auto [lo, hi] = bandPassOver(d, g, 4.6, 5.0);
+    ASSERT_FALSE(std::isnan(lo));
+    EXPECT_GE(hi + 0.5, 14.15 - 1e-3);
+}
