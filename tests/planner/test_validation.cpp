@@ -118,6 +118,24 @@ TEST(Validation, RobotProfileIsChecked) {
     expectKeywords(validationError(project.plan, project.robot), {"exceeds"});
 }
 
+// A drawing in millimetres read as metres (an office 30 km across) would plan for hours in
+// tens of GB: refused at once, naming the likely cause. A 1 km^2 site still plans.
+TEST(Validation, APlanInMillimetresIsRefusedNamingTheUnits) {
+    Plan huge;
+    huge.boundary = rectangle(0, 0, 30000, 20000);
+    try {
+        validatePlan(huge, RobotProfile{});
+        ADD_FAILURE() << "a 600 km^2 floor was accepted";
+    } catch (const InputError& e) {
+        EXPECT_NE(std::string(e.what()).find("in metres?"), std::string::npos) << e.what();
+        EXPECT_NE(std::string(e.what()).find("600000 km of stripes"), std::string::npos)
+            << e.what();
+    }
+    Plan site;
+    site.boundary = rectangle(0, 0, 1000, 1000);
+    EXPECT_NO_THROW(validatePlan(site, RobotProfile{}));
+}
+
 TEST(Validation, NonFiniteCoordinatesNameTheRing) {
     Plan plan;
     plan.boundary = rectangle(0, 0, 10, 10);
