@@ -8,6 +8,11 @@
 
 namespace fc::detail {
 
+namespace {
+// A border vertex turning by less than this (radians) is a sample of a smooth curve.
+constexpr double kSmoothTurn = M_PI / 180.0;
+} // namespace
+
 Interval spanAt(const Cell& cell, double x, const ClearanceField& field, double margin) {
     const double r = field.radius() + margin;
     const double lo = cell.floorAt(x) + r, hi = cell.ceilingAt(x) - r;
@@ -50,12 +55,35 @@ Polyline traceBorder(const Cell& cell, double xa, double xb, bool top,
     };
     // Seeds: ends, breakpoints of the cell's floor/ceiling and their +-r neighbours (where
     // clearance arcs start), and at most W/2 apart.
+    // A round wall traced with thousands of vertices (hundredths of a degree each) has no
+    // such arcs and no steps: its vertices are thinned to one per W/256 of x, which the
+    // refinement below follows as a smooth curve (a 20,000-vertex circle took 40 s).
     std::vector<double> seeds{xa, xb};
-    for (const Polyline* f : {&cell.floor, &cell.ceiling})
-        for (const Vec2& p : *f)
-            for (double x : {p.x - r, p.x - 1e-9 * w, p.x, p.x + 1e-9 * w, p.x + r})
-                if (x > xa && x < xb)
-                    seeds.push_back(x);
+    for (const Polyline* f : {&cell.floor, &cell.ceiling}) {
+        const size_t n = f->size();
+        const auto byX = [](const Vec2& p, double v) { return p.x < v; };
+        double lastSmooth = -INFINITY;
+        for (size_t i = std::lower_bound(f->begin(), f->end(), xa - r, byX) - f->begin();
+             i < n && (*f)[i].x <= xb + r; ++i) {
+            const Vec2 p = (*f)[i];
+            const bool step =
+                (i > 0 && (*f)[i - 1].x == p.x) || (i + 1 < n && (*f)[i + 1].x == p.x);
+            bool corner = step || i == 0 || i + 1 == n;
+            if (!corner) {
+                const Vec2 in = p - (*f)[i - 1], out = (*f)[i + 1] - p;
+                corner = std::abs(std::atan2(cross(in, out), dot(in, out))) > kSmoothTurn;
+            }
+            if (!corner) {
+                if (p.x - lastSmooth < w / 32)
+                    continue;
+                lastSmooth = p.x;
+            }
+            const double xs[] = {p.x - r, p.x - 1e-9 * w, p.x, p.x + 1e-9 * w, p.x + r};
+            for (int k = corner ? 0 : 2; k < (corner ? 5 : 3); ++k)
+                if (xs[k] > xa && xs[k] < xb)
+                    seeds.push_back(xs[k]);
+        }
+    }
     const int uniform = static_cast<int>(std::ceil((xb - xa) / (0.5 * w)));
     for (int i = 1; i < uniform; ++i)
         seeds.push_back(xa + (xb - xa) * i / uniform);

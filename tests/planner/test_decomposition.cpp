@@ -1,6 +1,7 @@
 #include "TestPlans.h"
 #include "decomposition/Decomposition.h"
 #include "decomposition/StripeLattice.h"
+#include "decomposition/StripePlanner.h"
 
 #include <algorithm>
 #include <cmath>
@@ -562,4 +563,37 @@ TEST(Headland, NoBandInShallowRoomsOrWedges) {
     EXPECT_NEAR(totalArea(d), 50.0, 1e-9);
     o.headland = Headland::None;
     EXPECT_EQ(decompose(wedge, o).cells.size(), d.cells.size());
+}
+
+// A round wall traced with thousands of vertices: the border trace follows it as a smooth
+// curve (thinned seeds, refined where the curve leaves its chords) instead of sampling
+// every vertex five times, which made a 20,000-vertex circle plan in 40 s. The trace stays
+// on the exact offset: the clear limit 0.3 m from the wall, then 0.2 m further in.
+TEST(StripeSpans, ABorderTracedWithThousandsOfVerticesIsFollowedAsACurve) {
+    const double radius = 15.0;
+    const int n = 20000;
+    Cell cell;
+    cell.x0 = -radius, cell.x1 = radius;
+    for (int k = 0; k <= n; ++k) {
+        const double a = M_PI + M_PI * k / n; // the lower half circle, left to right
+        cell.floor.push_back({radius * std::cos(a), radius * std::sin(a)});
+    }
+    cell.floor.front().x = -radius, cell.floor.back().x = radius;
+    cell.ceiling = {{-radius, 0.0}, {radius, 0.0}};
+    const ClearanceField field({cell.outline()}, 0.3, 0.5);
+    const Polyline trace = detail::traceBorder(cell, -5.0, 5.0, false, field);
+    ASSERT_GE(trace.size(), 2u);
+    EXPECT_LT(trace.size(), 1000u); // some 4,400 vertices lie under it
+    auto exact = [&](double x) {
+        return -std::sqrt((radius - 0.3) * (radius - 0.3) - x * x) + 0.2;
+    };
+    EXPECT_NEAR(trace.front().x, -5.0, 1e-12);
+    EXPECT_NEAR(trace.back().x, 5.0, 1e-12);
+    for (size_t i = 0; i < trace.size(); ++i) {
+        EXPECT_NEAR(trace[i].y, exact(trace[i].x), 2e-3) << "at " << trace[i].x;
+        if (i > 0) {
+            const Vec2 mid = (trace[i - 1] + trace[i]) * 0.5;
+            EXPECT_NEAR(mid.y, exact(mid.x), 2e-3) << "chord at " << mid.x;
+        }
+    }
 }
