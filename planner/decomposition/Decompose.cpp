@@ -3,6 +3,7 @@
 #include "decomposition/FloorCache.h"
 #include "decomposition/FunctionClip.h"
 #include "decomposition/SlabSweep.h"
+#include "decomposition/Snapping.h"
 #include "decomposition/StripeLattice.h"
 #include "decomposition/StripePlanner.h"
 
@@ -14,6 +15,8 @@
 namespace fc {
 namespace {
 
+// Edges leaning by at most this share of W across the sweep are made exactly vertical.
+constexpr double kStraightenTolerance = 0.002;
 // Floors of at most this many raw cells may hand slivers across (see layOutStripes' use).
 constexpr std::size_t kHandOffMaxCells = 60;
 // The share of the stripes' length the dense lattice must save to be offered.
@@ -27,31 +30,6 @@ constexpr double kHeadlandMaxSlope = 0.176;
 
 using detail::SlabSweep;
 using detail::Trapezoid;
-
-// Snaps coordinates (x, or y with `alongY`) closer than eps onto one value, rounded to a
-// dyadic grid of about eps, so that near-vertical and near-horizontal edges of rotated
-// rectilinear plans become exactly axis-parallel, shared slices are bit-identical, and a
-// plan drawn at any rotation decomposes as the same plan drawn axis-parallel.
-void snapCoordinates(std::vector<Ring*>& rings, double eps, bool alongY) {
-    auto coord = [alongY](Vec2& p) -> double& { return alongY ? p.y : p.x; };
-    std::vector<double> values;
-    for (Ring* r : rings)
-        for (Vec2& p : *r)
-            values.push_back(coord(p));
-    std::sort(values.begin(), values.end());
-    const double grid = std::exp2(std::floor(std::log2(eps)));
-    std::vector<double> rep(values.size());
-    double start = values.empty() ? 0 : values[0];
-    for (size_t i = 0; i < values.size(); ++i) {
-        if (values[i] - start > eps)
-            start = values[i];
-        rep[i] = std::round(start / grid) * grid;
-    }
-    for (Ring* r : rings)
-        for (Vec2& p : *r)
-            coord(p) =
-                rep[std::lower_bound(values.begin(), values.end(), coord(p)) - values.begin()];
-}
 
 // Area times centroid of a ring, whatever its orientation (its first moment of area).
 Vec2 centroidMoment(const Ring& ring) {
@@ -320,8 +298,9 @@ Decomposition decompose(const Plan& plan, const DecompositionOptions& options) {
         all.push_back(&h);
     for (Ring& r : rooms)
         all.push_back(&r);
-    snapCoordinates(all, 1e-9 * extent, false);
-    snapCoordinates(all, 1e-9 * extent, true);
+    detail::straightenNearVertical(all, 1 + holes.size(), kStraightenTolerance * w);
+    detail::snapCoordinates(all, 1e-9 * extent, false);
+    detail::snapCoordinates(all, 1e-9 * extent, true);
 
     out.freeSpace.push_back(boundary);
     out.freeSpace.insert(out.freeSpace.end(), holes.begin(), holes.end());

@@ -3,6 +3,7 @@
 #include "importers/MapTracing.h"
 
 #include <algorithm>
+#include <geos_c.h>
 #include <ogr_api.h>
 #include <ogr_geometry.h>
 
@@ -85,12 +86,26 @@ void cutHoles(const OGRGeometry& g, double minArea, std::vector<GeometryPtr>& pi
 }
 
 // Opened by a twentieth of a pixel: cutting rooms against each other and the floor may
-// leave an outline pinched at a point or a spike of no width, which plans refuse.
+// leave an outline pinched at a point or a spike of no width, which plans refuse. Mitred
+// both ways, so that every other corner comes back where it was: a corner cut by a hair
+// (a bevelled or round join) no longer meets the floor's corner, and the sliver between
+// them starts cells of its own at every doorway's jamb.
 void openSlightly(GeometryPtr& g) {
-    if (g)
-        g.reset(g->Buffer(-0.05, 1));
-    if (g)
-        g.reset(g->Buffer(0.05, 1));
+    if (!g)
+        return;
+    GEOSContextHandle_t context = OGRGeometry::createGEOSContext();
+    GEOSGeom geometry = g->exportToGEOS(context);
+    GEOSGeom eroded = geometry ? GEOSBufferWithStyle_r(context, geometry, -0.05, 1,
+                                                       GEOSBUF_CAP_FLAT, GEOSBUF_JOIN_MITRE, 5.0)
+                               : nullptr;
+    GEOSGeom opened = eroded ? GEOSBufferWithStyle_r(context, eroded, 0.05, 1, GEOSBUF_CAP_FLAT,
+                                                     GEOSBUF_JOIN_MITRE, 5.0)
+                             : nullptr;
+    g.reset(opened ? OGRGeometryFactory::createFromGEOS(context, opened) : nullptr);
+    for (GEOSGeom part : {geometry, eroded, opened})
+        if (part)
+            GEOSGeom_destroy_r(context, part);
+    OGRGeometry::freeGEOSContext(context);
 }
 
 // Vertices where the outline turns back on itself within a degree: thin wedges left where

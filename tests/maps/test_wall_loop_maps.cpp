@@ -199,7 +199,9 @@ TEST(WallLoopMaps, TheRealCorridorMapIsSweptAlongItsWallsFirst) {
     const Plan corridor =
         importPlanFile(std::string(FC_REAL_MAPS_DIR) + "/localization-demo.yaml").project.plan;
     const Pair pair = planBoth(corridor, "localization-demo");
-    EXPECT_LT(pair.with.metrics.length, 0.9 * pair.without.metrics.length); // 397 m, 454 m
+    // 397 m against 423 m (454 m until the rooms met the floor's corners exactly, which
+    // spared the plan without the loop a cell at every doorway).
+    EXPECT_LT(pair.with.metrics.length, 0.95 * pair.without.metrics.length);
 }
 
 // A ragged outline (5 cm jitter every 0.25 m, as a traced wall) through the given corners.

@@ -597,3 +597,37 @@ TEST(StripeSpans, ABorderTracedWithThousandsOfVerticesIsFollowedAsACurve) {
         }
     }
 }
+
+TEST(Decomposition, ARoomCutAlongALeaningJambStartsNoCellsThere) {
+    // A map's doorway: the wall between two rooms is 0.2 m thick, the door 1.2 m wide, and
+    // the segmentation cut the rooms in the middle of the doorway. The traced jamb leans by
+    // 0.3 mm, so the border's end on it lies at another x than the jamb's corner. The south
+    // room is swept as if the jamb stood straight: six stripes across its 6 m.
+    auto southStripes = [](double lean) {
+        Plan p;
+        const double mid = 2.4 - 0.5 * lean; // where the border meets the leaning jamb
+        p.boundary = {{0, 0}, {6, 0}, {6, 4},   {3.6, 4},          {3.6, 4.2}, {6, 4.2},
+                      {6, 8}, {0, 8}, {0, 4.2}, {2.4 - lean, 4.2}, {2.4, 4},   {0, 4}};
+        p.rooms = {
+            {"South", {{0, 0}, {6, 0}, {6, 4}, {3.6, 4}, {3.6, 4.1}, {mid, 4.1}, {2.4, 4}, {0, 4}}},
+            {"North",
+             {{0, 4.2},
+              {2.4 - lean, 4.2},
+              {mid, 4.1},
+              {3.6, 4.1},
+              {3.6, 4.2},
+              {6, 4.2},
+              {6, 8},
+              {0, 8}}}};
+        DecompositionOptions o;
+        o.stripeAngleDeg = 90.0; // stripes along the jambs
+        const Decomposition d = decompose(p, o);
+        size_t stripes = 0;
+        for (const Cell& c : d.cells)
+            if (c.room == 0)
+                stripes += c.stripes.size();
+        return stripes;
+    };
+    EXPECT_EQ(southStripes(0.0), 6u);
+    EXPECT_EQ(southStripes(3e-4), 6u);
+}
