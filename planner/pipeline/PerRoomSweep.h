@@ -40,8 +40,8 @@ PlanResult planWithRoomAngles(const PlanRequest& request,
                               const std::map<std::string, double>& angles,
                               const SolveControl& control, const PreparedPlans& prepared);
 
-// The per-room plan (SPEC sect. 1): the family plan, and on small floors the rooms' own
-// angles and turned groups, keeping the best. `prepared` (optional): of request.plan and
+// The per-room plan (SPEC sect. 1): the family plan, and on small floors (rooms, obstacles) the
+// rooms' own angles and turned groups, keeping the best. `prepared` (optional): of request.plan and
 // request.robot, shared with other requests (the editor's live replanning).
 PlanResult planPerRoom(const PlanRequest& request, const SolveControl& control = {},
                        const PreparedPlans* prepared = nullptr);
