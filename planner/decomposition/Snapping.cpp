@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <functional>
 #include <numeric>
 
 namespace fc::detail {
@@ -46,8 +45,10 @@ void straightenNearVertical(std::vector<Ring*>& rings, size_t firstRoom, double 
     };
     std::vector<int> parent(values.size());
     std::iota(parent.begin(), parent.end(), 0);
-    std::function<int(int)> find = [&](int i) {
-        return parent[i] == i ? i : parent[i] = find(parent[i]);
+    auto find = [&](int i) {
+        while (parent[i] != i)
+            i = parent[i] = parent[parent[i]];
+        return i;
     };
     bool any = false;
     for (Ring* r : rings)

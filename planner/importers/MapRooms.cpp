@@ -3,7 +3,6 @@
 #include "importers/MapTracing.h"
 
 #include <algorithm>
-#include <geos_c.h>
 #include <ogr_api.h>
 #include <ogr_geometry.h>
 
@@ -91,21 +90,8 @@ void cutHoles(const OGRGeometry& g, double minArea, std::vector<GeometryPtr>& pi
 // (a bevelled or round join) no longer meets the floor's corner, and the sliver between
 // them starts cells of its own at every doorway's jamb.
 void openSlightly(GeometryPtr& g) {
-    if (!g)
-        return;
-    GEOSContextHandle_t context = OGRGeometry::createGEOSContext();
-    GEOSGeom geometry = g->exportToGEOS(context);
-    GEOSGeom eroded = geometry ? GEOSBufferWithStyle_r(context, geometry, -0.05, 1,
-                                                       GEOSBUF_CAP_FLAT, GEOSBUF_JOIN_MITRE, 5.0)
-                               : nullptr;
-    GEOSGeom opened = eroded ? GEOSBufferWithStyle_r(context, eroded, 0.05, 1, GEOSBUF_CAP_FLAT,
-                                                     GEOSBUF_JOIN_MITRE, 5.0)
-                             : nullptr;
-    g.reset(opened ? OGRGeometryFactory::createFromGEOS(context, opened) : nullptr);
-    for (GEOSGeom part : {geometry, eroded, opened})
-        if (part)
-            GEOSGeom_destroy_r(context, part);
-    OGRGeometry::freeGEOSContext(context);
+    if (g)
+        g = openedMitred(*g, 0.05, 1, false, 5.0);
 }
 
 // Vertices where the outline turns back on itself within a degree: thin wedges left where

@@ -200,29 +200,37 @@ GeometryPtr simplifiedCells(const OGRGeometry& staircase, double tolerance) {
     return opened;
 }
 
+GeometryPtr openedMitred(const OGRGeometry& g, double radius, int quadSegments, bool roundErosion,
+                         double mitreLimit) {
+    GEOSContextHandle_t context = OGRGeometry::createGEOSContext();
+    GEOSGeom geometry = g.exportToGEOS(context);
+    GEOSGeom eroded = geometry
+                          ? GEOSBufferWithStyle_r(
+                                context, geometry, -radius, quadSegments, GEOSBUF_CAP_ROUND,
+                                roundErosion ? GEOSBUF_JOIN_ROUND : GEOSBUF_JOIN_MITRE, mitreLimit)
+                          : nullptr;
+    GEOSGeom opened = eroded
+                          ? GEOSBufferWithStyle_r(context, eroded, radius, quadSegments,
+                                                  GEOSBUF_CAP_FLAT, GEOSBUF_JOIN_MITRE, mitreLimit)
+                          : nullptr;
+    GeometryPtr out(opened ? OGRGeometryFactory::createFromGEOS(context, opened) : nullptr);
+    for (GEOSGeom part : {geometry, eroded, opened})
+        if (part)
+            GEOSGeom_destroy_r(context, part);
+    OGRGeometry::freeGEOSContext(context);
+    return out;
+}
+
 PassageClosing withoutNarrowPassages(const OGRGeometry& free, double radius) {
     PassageClosing out;
     if (!(radius > kOpening)) {
         out.free.reset(free.clone());
         return out;
     }
-    GEOSContextHandle_t context = OGRGeometry::createGEOSContext();
-    GEOSGeom geometry = free.exportToGEOS(context);
-    GEOSGeom eroded = nullptr, opened = nullptr;
-    if (geometry)
-        // Round joins around the obstacles' corners: the body's footprint, so that two
-        // pillars diagonally apart keep the passage between them when the robot fits.
-        eroded = GEOSBufferWithStyle_r(context, geometry, -radius, 8, GEOSBUF_CAP_ROUND,
-                                       GEOSBUF_JOIN_ROUND, 5.0);
-    if (eroded)
-        // Mitred back, so that right-angled corners come back sharp.
-        opened = GEOSBufferWithStyle_r(context, eroded, radius, 8, GEOSBUF_CAP_FLAT,
-                                       GEOSBUF_JOIN_MITRE, 1.5);
-    GeometryPtr kept(opened ? OGRGeometryFactory::createFromGEOS(context, opened) : nullptr);
-    for (GEOSGeom g : {geometry, eroded, opened})
-        if (g)
-            GEOSGeom_destroy_r(context, g);
-    OGRGeometry::freeGEOSContext(context);
+    // Round joins around the obstacles' corners: the body's footprint, so that two pillars
+    // diagonally apart keep the passage between them when the robot fits. Mitred back, so
+    // that right-angled corners come back sharp.
+    const GeometryPtr kept = openedMitred(free, radius, 8, true, 1.5);
     const GeometryPtr lost(kept ? free.Difference(kept.get()) : nullptr);
     if (!lost)
         throw InputError("closing the passages narrower than the robot failed");

@@ -34,6 +34,12 @@ struct PassageClosing {
 };
 PassageClosing withoutNarrowPassages(const OGRGeometry& free, double radius);
 
+// `g` eroded by `radius` (round joins with roundErosion, else mitred) and grown back with
+// mitred joins (GEOS), so that corners the erosion kept come back where they were. Null
+// where GEOS fails.
+GeometryPtr openedMitred(const OGRGeometry& g, double radius, int quadSegments, bool roundErosion,
+                         double mitreLimit);
+
 int vertexCount(const OGRGeometry* g);
 
 // Pixel units to the map frame: origin + resolution, y up, rotated by the origin's yaw.
