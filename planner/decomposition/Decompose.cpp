@@ -402,6 +402,7 @@ Decomposition decompose(const Plan& plan, const DecompositionOptions& options) {
     };
     const double ownLength = stripeLength(own), denseLength = stripeLength(dense);
     out.denseLatticeAvailable = denseLength < (1 - kDenseMinSaving) * ownLength;
+    out.denseSaving = ownLength > 0.0 ? 1.0 - denseLength / ownLength : 0.0;
     out.layout = options.stripeLattice;
     if (out.layout == LatticeMode::Auto)
         out.layout = denseLength < (1 - kDenseAutoSaving) * ownLength ? LatticeMode::Dense

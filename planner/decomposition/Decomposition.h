@@ -91,6 +91,9 @@ struct Decomposition {
     // stripes.
     bool stripeLatticeAvailable = false;
     bool denseLatticeAvailable = false;
+    // The share of the stripes' estimated length the dense lattice saves over every cell's
+    // own spacing (LatticeMode::Auto takes it from kDenseAutoSaving, 25%, on).
+    double denseSaving = 0.0;
     bool headland = false; // some walls have a headland band (DecompositionOptions::headland)
 
     int primaryCount() const;
