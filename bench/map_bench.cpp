@@ -3,7 +3,8 @@
 // with the default cleaning and room segmentation, then planned with the default request;
 // the largest real map once more without cleaning.
 // Prints a Markdown table per kind (docs/formats.md holds a copy).
-//   floorcover-map-bench [--seeds N] [--real-only] [--noisy-only]
+//   floorcover-map-bench [--seeds N] [--real-only] [--noisy-only] [--angles A,B,...]
+// (--angles: also noisy maps of office, ward and room-obstacle drawn at those angles)
 #include "NoisyMap.h"
 #include "PathChecker.h"
 #include "PlanGenerator.h"
@@ -14,6 +15,7 @@
 
 #include <chrono>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <filesystem>
 #include <numeric>
@@ -145,14 +147,60 @@ void realRows() {
     }
 }
 
+// Noisy maps (seed 3) of the plans drawn at each of `angles` (degrees), against the drawing
+// planned at the same angle: a building drawn at an angle traces as staircase walls, which
+// the importer straightens along the dominant direction.
+void angledRows(const std::vector<double>& angles) {
+    std::printf("| plan | angle | extra m (map / drawing) | extra vs drawing | time vs drawing | "
+                "coverage | checker | plan s |\n"
+                "|---|---:|---:|---:|---:|---:|---:|---:|\n");
+    const auto dir = std::filesystem::temp_directory_path() / "fc-map-bench";
+    std::filesystem::create_directories(dir);
+    for (const char* name : {"office", "ward", "room-obstacle"}) {
+        const Plan upright =
+            loadProjectFile(std::string(FC_PLANS_DIR) + "/" + name + ".geojson").plan;
+        for (const double angle : angles) {
+            const Plan drawing = fcgen::transformPlan(upright, angle, Vec2{0, 0});
+            const PlanResult truth = planDefault(drawing);
+            test::NoisyMapOptions options;
+            options.seed = 3;
+            const std::string yaml =
+                test::renderNoisyMap(drawing, options)
+                    .write(dir.string(),
+                           name + std::string("-at-") + std::to_string(static_cast<int>(angle)));
+            const Plan traced = importPlanFile(yaml).project.plan;
+            const auto t0 = std::chrono::steady_clock::now();
+            const PlanResult result = planDefault(traced);
+            const double planSeconds = seconds(t0);
+            const Metrics& m = result.metrics;
+            const double extra = m.length - m.ideal;
+            const double truthExtra = truth.metrics.length - truth.metrics.ideal;
+            std::printf("| %s | %g° | %.1f / %.1f | %+.0f%% | %+.1f%% | %.2f%% | %s | %.2f |\n",
+                        name, angle, extra, truthExtra, 100.0 * (extra / truthExtra - 1),
+                        100.0 * (m.time / truth.metrics.time - 1), 100.0 * m.coverage,
+                        checked(traced, result).c_str(), planSeconds);
+            std::fflush(stdout);
+        }
+    }
+}
+
 } // namespace
 
 int main(int argc, char** argv) {
     int seeds = 2;
     bool real = true, noisy = true;
+    std::vector<double> angles;
     for (int i = 1; i < argc; ++i) {
         if (!std::strcmp(argv[i], "--seeds") && i + 1 < argc)
             seeds = std::atoi(argv[++i]);
+        else if (!std::strcmp(argv[i], "--angles") && i + 1 < argc)
+            for (const char* at = argv[++i]; *at;) {
+                char* end = nullptr;
+                angles.push_back(std::strtod(at, &end));
+                if (end == at)
+                    break;
+                at = *end == ',' ? end + 1 : end;
+            }
         else if (!std::strcmp(argv[i], "--real-only"))
             noisy = false;
         else if (!std::strcmp(argv[i], "--noisy-only"))
@@ -164,6 +212,10 @@ int main(int argc, char** argv) {
         if (real) {
             std::printf("\n");
             realRows();
+        }
+        if (!angles.empty()) {
+            std::printf("\n");
+            angledRows(angles);
         }
     } catch (const std::exception& e) {
         std::fprintf(stderr, "floorcover-map-bench: %s\n", e.what());
