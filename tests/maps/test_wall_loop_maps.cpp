@@ -165,17 +165,23 @@ Pair planBoth(const Plan& plan, const std::string& label) {
 }
 
 TEST(WallLoopMaps, TracedHallsAreSweptAlongTheirWallsFirst) {
-    double with = 0.0, without = 0.0;
+    double with = 0.0, without = 0.0, withTime = 0.0, withoutTime = 0.0;
     for (std::uint64_t seed = 1; seed <= 4; ++seed) {
         const Pair pair = planBoth(traced(raggedHall(seed), "hall", seed),
                                    "traced hall seed " + std::to_string(seed));
         with += pair.with.metrics.length;
         without += pair.without.metrics.length;
+        withTime += pair.with.metrics.time;
+        withoutTime += pair.without.metrics.time;
     }
-    std::printf("traced halls: %.1f m with the wall loop, %.1f m without\n", with, without);
-    // The loop is kept on about half of them (where it is faster): 3.5% shorter in all
-    // (839 m against 869 m).
-    EXPECT_LT(with, 0.97 * without);
+    std::printf("traced halls: %.1f m with the wall loop, %.1f m without; %.0f s, %.0f s\n", with,
+                without, withTime, withoutTime);
+    // The loop is kept on about half of them (where it is faster): 17% faster in all (2,719 s
+    // against 3,260 s) and 2% shorter (859 m against 877 m; the plans without the loop
+    // minimise time too, so their length moves with small changes: 891 m before the
+    // clearance field kept the walls as traced).
+    EXPECT_LT(withTime, 0.9 * withoutTime);
+    EXPECT_LT(with, without);
 }
 
 // Free-standing furniture, traced: inside the loop the stripes drive round each piece

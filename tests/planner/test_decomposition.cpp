@@ -631,3 +631,26 @@ TEST(Decomposition, ARoomCutAlongALeaningJambStartsNoCellsThere) {
     EXPECT_EQ(southStripes(0.0), 6u);
     EXPECT_EQ(southStripes(3e-4), 6u);
 }
+
+TEST(Decomposition, ItsClearanceFieldKeepsTheWallsAsDrawnNotAsStraightened) {
+    // A wall leaning by 1.9 mm over 3 m is straightened for the sweep (the cells see it
+    // upright), but the robot must keep L/2 from where it really is: a noisy ward map's
+    // transit passed a corner of such a wall 1.1 mm inside L/2.
+    Plan p;
+    p.boundary = {{0, 0}, {10, 0}, {10, 6}, {6.0019, 6}, {6, 3}, {4, 3}, {4, 6}, {0, 6}};
+    p.rooms = {{"Hall", p.boundary}};
+    DecompositionOptions o;
+    o.stripeAngleDeg = 90.0;
+    o.robot.robotDiameter = 0.6;
+    o.robot.coverageWidth = 1.0;
+    const Decomposition d = decompose(p, o);
+    const double wallX = 6.0 + 0.0019 * (5.5 - 3.0) / 3.0; // the drawn wall at y = 5.5
+    const Vec2 tooClose{wallX + 0.2990, 5.5};              // 0.3008 m from the upright wall
+    const Vec2 clear{wallX + 0.3010, 5.5};
+    EXPECT_FALSE(d.clearance().isClear(d.frame.toLocal(tooClose)));
+    EXPECT_TRUE(d.clearance().isClear(d.frame.toLocal(clear)));
+    double area = 0.0;
+    for (const Cell& c : d.cells)
+        area += c.area();
+    EXPECT_NEAR(area, 60.0 - 6.0, 0.01);
+}
