@@ -56,6 +56,21 @@ struct RawCell {
     Polyline floor, ceiling;
 };
 
+// The wall faces across the sweep inside a raw cell: steps of its floor and ceiling. A
+// ceiling that rises, or a floor that falls, has the free space on the step's +x side.
+std::vector<detail::LatticeStep> wallSteps(const RawCell& c) {
+    std::vector<detail::LatticeStep> steps;
+    for (const bool top : {false, true}) {
+        const Polyline& f = top ? c.ceiling : c.floor;
+        for (size_t k = 0; k + 1 < f.size(); ++k) {
+            const double rise = f[k + 1].y - f[k].y;
+            if (f[k].x == f[k + 1].x && rise != 0.0)
+                steps.push_back({f[k].x, std::abs(rise), (rise > 0) == top});
+        }
+    }
+    return steps;
+}
+
 // One raw cell's share of the final cells: consecutive x-pieces.
 struct Piece {
     int cell = -1; // final cell id
@@ -370,9 +385,9 @@ Decomposition decompose(const Plan& plan, const DecompositionOptions& options) {
     }
     std::vector<detail::LatticeCell> latticeCells;
     for (const RawCell& c : raw)
-        latticeCells.push_back({c.room, c.x0, c.x1,
-                                c.ceiling.empty() ? 0.0 : c.ceiling.front().y - c.floor.front().y,
-                                c.ceiling.empty() ? 0.0 : c.ceiling.back().y - c.floor.back().y});
+        latticeCells.push_back(
+            {c.room, c.x0, c.x1, c.ceiling.empty() ? 0.0 : c.ceiling.front().y - c.floor.front().y,
+             c.ceiling.empty() ? 0.0 : c.ceiling.back().y - c.floor.back().y, false, wallSteps(c)});
     for (const RawAdjacency& a : adj)
         if (a.kind == Adjacency::Kind::AlongSweep)
             latticeCells[a.first].keepsStripe = latticeCells[a.second].keepsStripe = true;
@@ -393,8 +408,8 @@ Decomposition decompose(const Plan& plan, const DecompositionOptions& options) {
         detail::layOutStripes(latticeCells, latticeLinks, w, LatticeMode::AtCorners, handOff);
     detail::StripeLayout own =
         detail::layOutStripes(latticeCells, latticeLinks, w, LatticeMode::Own);
-    detail::StripeLayout dense =
-        detail::layOutStripes(latticeCells, latticeLinks, w, LatticeMode::Dense);
+    detail::StripeLayout dense = detail::layOutStripes(
+        latticeCells, latticeLinks, w, LatticeMode::Dense, 0.0, options.robot.robotDiameter);
     out.stripeLatticeAvailable = layout.stripes != own.stripes;
     // The dense lattice is offered where it saves a tenth of the stripes' length (traced
     // maps); on drawn plans it saves little and would double the planning time.

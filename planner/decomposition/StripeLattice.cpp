@@ -114,6 +114,10 @@ constexpr double kDenseWallShare = 0.5;
 constexpr double kDenseWallWidths = 2.0;
 // A lattice line this share of W past the inset position still sweeps the side.
 constexpr double kDenseInsetTolerance = 0.05;
+// A wall face longer than this many W gets a stripe W/2 off it where the lattice line
+// nearest it runs closer than the robot's radius (plus this share of W): blocked there.
+constexpr double kDenseBlockedWallWidths = 1.0;
+constexpr double kDenseBlockedMargin = 0.02;
 
 std::map<int, double> roomStarts(const std::vector<LatticeCell>& cells) {
     std::map<int, double> start; // each room's lattice starts W/2 inside its first wall
@@ -128,7 +132,8 @@ std::map<int, double> roomStarts(const std::vector<LatticeCell>& cells) {
 // The dense layout with each room's lattice starting at `start` (plus W/2).
 StripeLayout denseLayoutFrom(const std::vector<LatticeCell>& cells,
                              const std::vector<LatticeLink>& links, double w,
-                             const std::map<int, double>& start) {
+                             const std::map<int, double>& start, double robotRadius,
+                             std::map<int, double>* gapLength = nullptr) {
     const size_t n = cells.size();
     std::vector<double> leftShared(n, 0.0), rightShared(n, 0.0); // with the same room
     for (const LatticeLink& l : links) {
@@ -142,6 +147,10 @@ StripeLayout denseLayoutFrom(const std::vector<LatticeCell>& cells,
     out.onLattice.assign(n, 1);
     out.sweepsSliver.assign(n, 0);
     const double eps = 1e-9 * w, tol = kDenseInsetTolerance * w;
+    // Lines nearer a face than this are blocked along it (never nearer than the inset: a
+    // robot as wide as its head has nowhere else to drive).
+    const double blocked = std::min(robotRadius + kDenseBlockedMargin * w, 0.5 * w - tol);
+    std::vector<std::pair<size_t, double>> handed; // (cell, inset stripe) for the cells across
     for (size_t i = 0; i < n; ++i) {
         const LatticeCell& c = cells[i];
         const double height = std::max(c.leftHeight, c.rightHeight);
@@ -149,18 +158,48 @@ StripeLayout denseLayoutFrom(const std::vector<LatticeCell>& cells,
             const double wall = sideHeight - shared;
             return wall > kDenseWallShare * height || wall > kDenseWallWidths * w;
         };
+        // A stripe the cell's whole height beside a face is shorter than a touch-up there
+        // and back where the face is at least half that height (and a metre or more).
+        auto faceWorthAStripe = [&](double face) {
+            return face > kDenseBlockedWallWidths * w && face > kDenseWallShare * height;
+        };
+        // A wall face on part of a side, which a lattice line closer than L/2 cannot pass:
+        // the line runs on beside it (fitStripes moves only a line blocked all along), and
+        // the strip along the face would be left to the touch-ups. (A line blocked along a
+        // whole side moves to where the robot fits, and sweeps the wall from there.)
+        auto blockingWall = [&](double sideHeight, double shared) {
+            return shared > 0.0 && faceWorthAStripe(sideHeight - shared);
+        };
         const double first = start.at(c.room) + 0.5 * w;
         // The lattice lines nearest each side, inside the cell or not.
         const double lineRightOfX0 = first + std::ceil((c.x0 - eps - first) / w) * w;
         const double lineLeftOfX1 = first + std::floor((c.x1 + eps - first) / w) * w;
-        const bool leftNeeds =
-            longWall(c.leftHeight, leftShared[i]) && lineRightOfX0 > c.x0 + 0.5 * w + tol;
-        const bool rightNeeds =
-            longWall(c.rightHeight, rightShared[i]) && lineLeftOfX1 < c.x1 - 0.5 * w - tol;
+        bool leftNeeds =
+            (longWall(c.leftHeight, leftShared[i]) && lineRightOfX0 > c.x0 + 0.5 * w + tol) ||
+            (blockingWall(c.leftHeight, leftShared[i]) && lineRightOfX0 < c.x0 + blocked);
+        bool rightNeeds =
+            (longWall(c.rightHeight, rightShared[i]) && lineLeftOfX1 < c.x1 - 0.5 * w - tol) ||
+            (blockingWall(c.rightHeight, rightShared[i]) && lineLeftOfX1 > c.x1 - blocked);
         std::vector<double>& xs = out.stripes[i];
+        // A sliver beside a wall face, too narrow for the robot: the stripe W/2 off the face
+        // runs in the cells across its other side. Its own lattice lines stay for the rest
+        // of its height.
+        if (leftNeeds != rightNeeds && !c.keepsStripe && c.x1 - c.x0 < 2.0 * robotRadius) {
+            handed.push_back({i, leftNeeds ? c.x0 + 0.5 * w : c.x1 - 0.5 * w});
+            leftNeeds = rightNeeds = false;
+        }
         if ((leftNeeds || rightNeeds || c.keepsStripe) && c.x1 - c.x0 <= w + eps) {
             xs = evenStripePositions(c.x0, c.x1, w);
             out.onLattice[i] = 0;
+            // The lattice line it replaces swept a strip of the cells across a shared side
+            // that the middle stripe does not: a gap left to the touch-ups, which the
+            // lattice's phase should avoid.
+            const double middle = xs.front();
+            const bool lineInside = lineRightOfX0 <= c.x1 + eps;
+            if (gapLength && lineInside &&
+                ((rightShared[i] > 0 && lineRightOfX0 - middle > tol) ||
+                 (leftShared[i] > 0 && middle - lineRightOfX0 > tol)))
+                (*gapLength)[c.room] += height;
             continue;
         }
         if (leftNeeds)
@@ -172,6 +211,60 @@ StripeLayout denseLayoutFrom(const std::vector<LatticeCell>& cells,
             xs.push_back(c.x1 - 0.5 * w);
         if (xs.empty() && c.keepsStripe)
             xs = evenStripePositions(c.x0, c.x1, w);
+        // Wall faces inside the cell (a bed's side, where the cell runs on beside it) get the
+        // same stripe W/2 off them, in this cell where it fits, else across its side.
+        for (const LatticeStep& step : c.steps) {
+            if (!faceWorthAStripe(step.length))
+                continue;
+            const double dir = step.facesRight ? 1.0 : -1.0;
+            const double line = first + (step.facesRight ? std::ceil((step.x - eps - first) / w)
+                                                         : std::floor((step.x + eps - first) / w)) *
+                                            w;
+            const double off = dir * (line - step.x);
+            if (off >= blocked && off <= 0.5 * w + tol)
+                continue;
+            const double x = step.x + dir * 0.5 * w;
+            if (x < c.x0 || x > c.x1)
+                handed.push_back({i, x});
+            else if (std::none_of(xs.begin(), xs.end(),
+                                  [&](double s) { return std::abs(s - x) <= tol; }))
+                xs.insert(std::lower_bound(xs.begin(), xs.end(), x), x);
+        }
+    }
+    // Each handed stripe goes to the cells of the room across the sliver's open side that
+    // hold its position, through further slivers where it lies beyond them.
+    std::vector<std::vector<size_t>> across(2 * n); // 2i: links on i's left, 2i + 1: right
+    if (!handed.empty())
+        for (size_t k = 0; k < links.size(); ++k) {
+            across[2 * static_cast<size_t>(links[k].left) + 1].push_back(k);
+            across[2 * static_cast<size_t>(links[k].right)].push_back(k);
+        }
+    std::vector<size_t> seenBy(n, handed.size()); // the handed stripe that reached a cell
+    for (size_t h = 0; h < handed.size(); ++h) {
+        const size_t giver = handed[h].first;
+        const double x = handed[h].second;
+        std::vector<size_t> todo{giver};
+        seenBy[giver] = h;
+        while (!todo.empty()) {
+            const size_t i = todo.back();
+            todo.pop_back();
+            const bool rightwards = x > cells[i].x1;
+            for (const size_t k : across[2 * i + (rightwards ? 1 : 0)]) {
+                const LatticeLink& l = links[k];
+                const auto j = static_cast<size_t>(rightwards ? l.right : l.left);
+                if (seenBy[j] == h || cells[j].room != cells[giver].room)
+                    continue;
+                seenBy[j] = h;
+                if (x < cells[j].x0 - eps || x > cells[j].x1 + eps) {
+                    todo.push_back(j);
+                    continue;
+                }
+                std::vector<double>& xs = out.stripes[j];
+                if (std::none_of(xs.begin(), xs.end(),
+                                 [&](double s) { return std::abs(s - x) <= tol; }))
+                    xs.insert(std::lower_bound(xs.begin(), xs.end(), x), x);
+            }
+        }
     }
     // A cell without stripes relies on the lattice lines beyond its sides; where a
     // neighbour's stripe is off the lattice (a narrow cell's one stripe, in its middle), it
@@ -199,15 +292,15 @@ constexpr int kDensePhases = 10;
 // laser barely saw, and a lattice W/2 inside it may miss every long wall by a little, each
 // then getting a stripe of its own.
 StripeLayout denseLayout(const std::vector<LatticeCell>& cells,
-                         const std::vector<LatticeLink>& links, double w) {
+                         const std::vector<LatticeLink>& links, double w, double robotRadius) {
     const std::map<int, double> first = roomStarts(cells);
     std::map<int, std::pair<double, double>> best; // room -> (length, phase)
     for (int k = 0; k < kDensePhases; ++k) {
         std::map<int, double> start = first;
         for (auto& [room, x] : start)
             x += w * k / kDensePhases;
-        const StripeLayout layout = denseLayoutFrom(cells, links, w, start);
-        std::map<int, double> length;
+        std::map<int, double> length; // with a stripe's length per gap
+        const StripeLayout layout = denseLayoutFrom(cells, links, w, start, robotRadius, &length);
         for (size_t i = 0; i < cells.size(); ++i)
             length[cells[i].room] +=
                 layout.stripes[i].size() * 0.5 * (cells[i].leftHeight + cells[i].rightHeight);
@@ -220,7 +313,7 @@ StripeLayout denseLayout(const std::vector<LatticeCell>& cells,
     std::map<int, double> start = first;
     for (auto& [room, x] : start)
         x += best[room].second;
-    return denseLayoutFrom(cells, links, w, start);
+    return denseLayoutFrom(cells, links, w, start, robotRadius);
 }
 
 } // namespace
@@ -242,9 +335,9 @@ std::vector<double> evenStripePositions(double x0, double x1, double w) {
 
 StripeLayout layOutStripes(const std::vector<LatticeCell>& cells,
                            const std::vector<LatticeLink>& links, double w, LatticeMode mode,
-                           double handOff) {
+                           double handOff, double robotDiameter) {
     if (mode == LatticeMode::Dense)
-        return denseLayout(cells, links, w);
+        return denseLayout(cells, links, w, 0.5 * robotDiameter);
     const bool lattice = mode == LatticeMode::AtCorners;
     const size_t n = cells.size();
     // A side is open where neighbours share (almost) all of it, within one room, both

@@ -30,11 +30,19 @@ namespace fc::detail {
 // the cell is at most W wide).
 std::vector<double> evenStripePositions(double x0, double x1, double w);
 
+// A wall face across the sweep inside a cell: a step of its floor or ceiling.
+struct LatticeStep {
+    double x = 0;
+    double length = 0;
+    bool facesRight = false; // free space on its +x side
+};
+
 struct LatticeCell {
     int room = 0;
     double x0 = 0, x1 = 0;
     double leftHeight = 0, rightHeight = 0; // ceiling - floor at x0 and x1
     bool keepsStripe = false;               // borders another room along the sweep (a doorway)
+    std::vector<LatticeStep> steps = {};    // read by Dense only
 };
 
 // Two raw cells sharing a piece of a slice: `left` ends at x, `right` starts there.
@@ -54,9 +62,11 @@ struct StripeLayout {
 // clear of a wall on the shared slice (W/2 - sliver >= L/2).
 double maxHandOff(double w, double robotDiameter);
 
-// Slivers up to handOff wide are handed off (0: none; not in Dense).
+// Slivers up to handOff wide are handed off (0: none; not in Dense). Dense keeps its stripes
+// robotDiameter / 2 clear of long wall faces.
 StripeLayout layOutStripes(const std::vector<LatticeCell>& cells,
                            const std::vector<LatticeLink>& links, double w,
-                           LatticeMode mode = LatticeMode::AtCorners, double handOff = 0.0);
+                           LatticeMode mode = LatticeMode::AtCorners, double handOff = 0.0,
+                           double robotDiameter = 0.0);
 
 } // namespace fc::detail

@@ -654,3 +654,43 @@ TEST(Decomposition, ItsClearanceFieldKeepsTheWallsAsDrawnNotAsStraightened) {
         area += c.area();
     EXPECT_NEAR(area, 60.0 - 6.0, 0.01);
 }
+
+// The floor beside a bed's long side: the dense lattice's line there runs closer than L/2 to
+// it (blocked along the bed), or the cell beside it is a sliver the robot cannot enter; a
+// stripe W/2 off the side sweeps it, in the cell beyond the sliver where need be.
+TEST(StripeLattice, DenseLatticeSweepsAlongABedsSideItsLineCannotPass) {
+    auto unswept = [](const Plan& p) {
+        DecompositionOptions o;
+        o.stripeAngleDeg = 90.0;
+        o.stripeLattice = LatticeMode::Dense;
+        o.robot.robotDiameter = 0.6;
+        o.robot.coverageWidth = 1.0;
+        const Decomposition d = decompose(p, o);
+        int missed = 0;
+        for (double x = 6.27; x < 7.2; x += 0.05) {
+            for (double y = 1.1; y < 2.9; y += 0.2) {
+                const Vec2 q = d.frame.toLocal(Vec2{x, y});
+                bool swept = false;
+                for (const Cell& c : d.cells)
+                    for (size_t k = 0; k < c.stripes.size() && k < c.stripeSpans.size(); ++k)
+                        swept = swept ||
+                                (std::abs(c.stripes[k] - q.x) <= 0.5 + 1e-9 &&
+                                 !c.stripeSpans[k].empty() && q.y >= c.stripeSpans[k].lo - 0.5 &&
+                                 q.y <= c.stripeSpans[k].hi + 0.5);
+                missed += !swept;
+            }
+        }
+        return missed;
+    };
+    // A 10 x 4 m ward room, its lattice W/2 inside the side walls (0.5, 1.5, ...): one bed's
+    // side at 3.0 m has a line W/2 off it; the other's at 6.25 m has one 0.25 m off it. The
+    // beds are 2.2 m long: a stripe the room's depth beside them costs less than a touch-up.
+    Plan p;
+    p.boundary = rectangle(0, 0, 10, 4);
+    p.obstacles = {rectangle(2.0, 0.9, 3.0, 3.1), rectangle(5.25, 0.9, 6.25, 3.1)};
+    EXPECT_EQ(unswept(p), 0);
+    // The traced bed: a corner knocked 5 cm out, so the side is a step of the cell below
+    // it and a sliver cell 5 cm wide runs beside the rest.
+    p.obstacles[1] = {{5.25, 0.9}, {6.25, 0.9}, {6.25, 3.0}, {6.3, 3.1}, {5.25, 3.1}};
+    EXPECT_EQ(unswept(p), 0);
+}
