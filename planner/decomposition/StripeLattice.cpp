@@ -114,10 +114,17 @@ constexpr double kDenseWallShare = 0.5;
 constexpr double kDenseWallWidths = 2.0;
 // A lattice line this share of W past the inset position still sweeps the side.
 constexpr double kDenseInsetTolerance = 0.05;
-// A wall face longer than this many W gets a stripe W/2 off it where the lattice line
-// nearest it runs closer than the robot's radius (plus this share of W): blocked there.
+// A wall face longer than this many W (and than half its cell's height) gets a stripe W/2
+// off it where the lattice line nearest it runs closer than the robot's radius (plus this
+// share of W), blocked there, or further than W/2 (plus the inset tolerance).
 constexpr double kDenseBlockedWallWidths = 1.0;
 constexpr double kDenseBlockedMargin = 0.02;
+
+// Adds x to the sorted stripes xs unless one lies within tol of it.
+void addStripe(std::vector<double>& xs, double x, double tol) {
+    if (std::none_of(xs.begin(), xs.end(), [&](double s) { return std::abs(s - x) <= tol; }))
+        xs.insert(std::lower_bound(xs.begin(), xs.end(), x), x);
+}
 
 std::map<int, double> roomStarts(const std::vector<LatticeCell>& cells) {
     std::map<int, double> start; // each room's lattice starts W/2 inside its first wall
@@ -226,9 +233,8 @@ StripeLayout denseLayoutFrom(const std::vector<LatticeCell>& cells,
             const double x = step.x + dir * 0.5 * w;
             if (x < c.x0 || x > c.x1)
                 handed.push_back({i, x});
-            else if (std::none_of(xs.begin(), xs.end(),
-                                  [&](double s) { return std::abs(s - x) <= tol; }))
-                xs.insert(std::lower_bound(xs.begin(), xs.end(), x), x);
+            else
+                addStripe(xs, x, tol);
         }
     }
     // Each handed stripe goes to the cells of the room across the sliver's open side that
@@ -259,10 +265,7 @@ StripeLayout denseLayoutFrom(const std::vector<LatticeCell>& cells,
                     todo.push_back(j);
                     continue;
                 }
-                std::vector<double>& xs = out.stripes[j];
-                if (std::none_of(xs.begin(), xs.end(),
-                                 [&](double s) { return std::abs(s - x) <= tol; }))
-                    xs.insert(std::lower_bound(xs.begin(), xs.end(), x), x);
+                addStripe(out.stripes[j], x, tol);
             }
         }
     }
