@@ -208,11 +208,91 @@ std::map<int, std::vector<Polyline>> chainedDetours(const ClearanceField& field,
     return detours;
 }
 
+// The missed points (local frame) that the detour to t and its stroke sweep, as indices.
+std::vector<int> sweptBy(const TouchUp& t, const std::vector<Vec2>& points,
+                         const std::map<CellKey, std::vector<int>>& grid, double w) {
+    Polyline line = t.route;
+    line.push_back(t.b);
+    BoundingBox box;
+    for (const Vec2& p : line)
+        box.add(p);
+    const double cell = w / 3.0, reach = 0.5 * w;
+    const CellKey lo = keyOf({box.minX - reach, box.minY - reach}, cell);
+    const CellKey hi = keyOf({box.maxX + reach, box.maxY + reach}, cell);
+    std::vector<int> swept;
+    for (long long x = lo.first; x <= hi.first; ++x)
+        for (long long y = lo.second; y <= hi.second; ++y) {
+            const auto it = grid.find({x, y});
+            if (it == grid.end())
+                continue;
+            for (const int i : it->second)
+                for (size_t k = 1; k < line.size(); ++k)
+                    if (pointSegmentDistance(points[i], line[k - 1], line[k]) <= reach) {
+                        swept.push_back(i);
+                        break;
+                    }
+        }
+    return swept;
+}
+
+// The touch-ups the budget keeps (CoverageRepair.h: best rate first, then only while floor
+// beyond budget.keepMissed is missed or the rate reaches budget.minRate).
+std::vector<TouchUp> withinBudget(std::vector<TouchUp> touchUps, const std::vector<Vec2>& points,
+                                  double w, const TouchUpBudget& budget, int& skipped) {
+    std::map<CellKey, std::vector<int>> grid;
+    for (size_t i = 0; i < points.size(); ++i)
+        grid[keyOf(points[i], w / 3.0)].push_back(static_cast<int>(i));
+    struct Priced {
+        size_t index;
+        std::vector<int> swept;
+        double seconds, rate;
+    };
+    std::vector<Priced> priced;
+    for (size_t k = 0; k < touchUps.size(); ++k) {
+        const TouchUp& t = touchUps[k];
+        Polyline detour = t.route;
+        detour.push_back(t.b);
+        detour.push_back(t.a);
+        detour.insert(detour.end(), t.route.rbegin() + 1, t.route.rend());
+        // One more turn where it leaves the path: the path rarely heads its way.
+        const double seconds =
+            polylineLength(detour) / budget.speed + (countTurns(detour) + 1) * budget.turnTime;
+        std::vector<int> swept = sweptBy(t, points, grid, w);
+        const double rate = swept.size() * budget.pointArea / std::max(seconds, 1e-9);
+        priced.push_back({k, std::move(swept), seconds, rate});
+    }
+    std::stable_sort(priced.begin(), priced.end(),
+                     [](const Priced& x, const Priced& y) { return x.rate > y.rate; });
+    std::vector<char> claimed(points.size(), 0);
+    std::vector<char> keep(touchUps.size(), 0);
+    double missed = budget.missedArea;
+    for (const Priced& p : priced) {
+        std::size_t fresh = 0;
+        for (const int i : p.swept)
+            fresh += claimed[i] ? 0 : 1;
+        const double area = fresh * budget.pointArea;
+        if (!(missed > budget.keepMissed) && area < budget.minRate * p.seconds)
+            continue;
+        keep[p.index] = 1;
+        missed -= area;
+        for (const int i : p.swept)
+            claimed[i] = 1;
+    }
+    std::vector<TouchUp> kept;
+    for (size_t k = 0; k < touchUps.size(); ++k) {
+        if (keep[k])
+            kept.push_back(std::move(touchUps[k]));
+        else
+            ++skipped;
+    }
+    return kept;
+}
+
 } // namespace
 
 CoverageRepairStats repairCoverage(const Decomposition& dec, CoveragePath& path,
                                    const std::vector<Vec2>& missed, double maxDetour,
-                                   bool chainNearby) {
+                                   bool chainNearby, const TouchUpBudget* budget) {
     CoverageRepairStats stats;
     if (missed.empty() || path.points.size() < 2)
         return stats;
@@ -314,6 +394,14 @@ CoverageRepairStats repairCoverage(const Decomposition& dec, CoveragePath& path,
         ++stats.touchUps;
         strokes.push_back(stroke);
         touchUps.push_back({from, std::move(route), a, b});
+    }
+    if (budget && !touchUps.empty()) {
+        std::vector<Vec2> points;
+        points.reserve(missed.size());
+        for (const Vec2& p : missed)
+            points.push_back(dec.frame.toLocal(p));
+        touchUps = withinBudget(std::move(touchUps), points, w, *budget, stats.skipped);
+        stats.touchUps = static_cast<int>(touchUps.size());
     }
     if (touchUps.empty())
         return stats;

@@ -16,6 +16,22 @@ struct CoverageRepairStats {
     int touchUps = 0;   // strokes added
     double added = 0.0; // path length added, m
     int chains = 0;     // groups of touch-ups driven as one chain
+    int skipped = 0;    // touch-ups the budget left out
+};
+
+// Which touch-ups are worth adding (nullptr: every one that can be driven). Each one's worth
+// is the missed floor its stroke sweeps, its price the time of its detour alone (there and
+// back, the turns included). They are taken best rate first: as long as the missed floor
+// still exceeds `keepMissed` (m^2), and after that only where they sweep at least `minRate`
+// (m^2 per second). So a plan that misses a little more than it may gets the few strokes that
+// bring it back, not a hundred turns for the last square metre.
+struct TouchUpBudget {
+    double pointArea = 0.0;  // m^2 each missed point stands for
+    double missedArea = 0.0; // m^2 missed now
+    double keepMissed = 0.0; // m^2 that may stay missed
+    double minRate = 0.0;    // m^2/s a touch-up beyond that must sweep
+    double speed = 0.5;      // m/s
+    double turnTime = 2.0;   // s per turn
 };
 
 // Adds a touch-up for each group of `missed` points (world frame, e.g. Metrics::uncovered)
@@ -27,6 +43,6 @@ struct CoverageRepairStats {
 // the head's square ends sweep a little differently: the caller measures both.
 CoverageRepairStats repairCoverage(const Decomposition& dec, CoveragePath& path,
                                    const std::vector<Vec2>& missed, double maxDetour,
-                                   bool chainNearby = true);
+                                   bool chainNearby = true, const TouchUpBudget* budget = nullptr);
 
 } // namespace fc

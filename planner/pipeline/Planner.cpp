@@ -389,10 +389,17 @@ void touchUpCoverage(const PreparedPlan& prepared, const std::vector<std::string
     for (int round = 0; round < kTouchUpRounds; ++round) {
         if (metrics.uncovered.empty() || metrics.uncoveredArea <= 0.0)
             return;
+        TouchUpBudget budget;
+        budget.pointArea = metrics.uncoveredArea / static_cast<double>(metrics.uncovered.size());
+        budget.missedArea = metrics.uncoveredArea;
+        budget.keepMissed = kTouchUpKeepShare * kTouchUpFraction * metrics.requiredArea;
+        budget.speed = prepared.robot.speed;
+        budget.turnTime = prepared.robot.turnTime;
+        budget.minRate = kTouchUpMinRateShare * prepared.robot.coverageWidth * budget.speed;
         CoveragePath repaired = path;
         const CoverageRepairStats stats =
             repairCoverage(prepared.decomposition, repaired, metrics.uncovered,
-                           kTouchUpReachInWidths * prepared.robot.coverageWidth);
+                           kTouchUpReachInWidths * prepared.robot.coverageWidth, true, &budget);
         if (stats.touchUps == 0)
             return;
         Metrics after = measurePath(prepared, requiredRooms, repaired);
@@ -401,7 +408,7 @@ void touchUpCoverage(const PreparedPlan& prepared, const std::vector<std::string
         if (stats.chains > 0) {
             CoveragePath lone = path;
             repairCoverage(prepared.decomposition, lone, metrics.uncovered,
-                           kTouchUpReachInWidths * prepared.robot.coverageWidth, false);
+                           kTouchUpReachInWidths * prepared.robot.coverageWidth, false, &budget);
             Metrics loneAfter = measurePath(prepared, requiredRooms, lone);
             if (betterPlanChoice(loneAfter, after)) {
                 repaired = std::move(lone);

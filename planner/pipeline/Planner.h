@@ -187,6 +187,12 @@ inline constexpr int kTouchUpRounds = 3;
 // reported kReportedLossFraction by a margin, since the planner's raster measure and an
 // exact one differ by up to about 0.1% of the floor (tests/checker).
 inline constexpr double kTouchUpFraction = 0.0035;
+// What the touch-ups aim for (path/CoverageRepair.h TouchUpBudget): the best-paying strokes
+// until the plan misses at most this share of kTouchUpFraction (a margin, as their sweep is
+// estimated), and beyond that only strokes that sweep at least this share of what a stripe
+// sweeps per second (W times the speed).
+inline constexpr double kTouchUpKeepShare = 0.5;
+inline constexpr double kTouchUpMinRateShare = 0.05;
 void touchUpCoverage(const PreparedPlan& prepared, const std::vector<std::string>& requiredRooms,
                      CoveragePath& path, Metrics& metrics);
 

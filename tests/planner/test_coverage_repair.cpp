@@ -109,3 +109,59 @@ TEST(CoverageRepair, OverlappingStrokesAlongOneWallAreDrivenAsOne) {
     EXPECT_GE(a.coveredArea, b.coveredArea - 1e-9);
     EXPECT_TRUE(clearOf(dec, chained));
 }
+
+// A budget (TouchUpBudget): the strokes that pay best are taken until what stays missed is
+// what may stay missed; the ones left out would each have cost more time per square metre
+// than the ones taken. A plan that misses a little more than it may no longer gets a hundred
+// turns for its last square metre.
+TEST(CoverageRepair, ABudgetTakesTheBestPayingStrokesUntilWhatMayStayMissed) {
+    const PlanRequest request = laserMap();
+    const PreparedPlans prepared(request.plan, request.robot, true);
+    const PlanResult draft = draftCoverage(request, prepared);
+    const Metrics& before = draft.metrics;
+    ASSERT_GT(before.uncovered.size(), 10u);
+    const Decomposition& dec = draft.prepared.decomposition;
+    const double reach = kTouchUpReachInWidths * request.robot.coverageWidth;
+
+    CoveragePath every = draft.path;
+    const CoverageRepairStats all = repairCoverage(dec, every, before.uncovered, reach);
+    const Metrics allAfter = measurePath(draft.prepared, {}, every);
+    ASSERT_GT(all.touchUps, 4);
+    ASSERT_EQ(all.skipped, 0);
+
+    TouchUpBudget budget;
+    budget.pointArea = before.uncoveredArea / static_cast<double>(before.uncovered.size());
+    budget.missedArea = before.uncoveredArea;
+    budget.keepMissed = 0.5 * (before.uncoveredArea + allAfter.uncoveredArea);
+    budget.minRate = INFINITY; // nothing beyond what must be swept
+    budget.speed = request.robot.speed;
+    budget.turnTime = request.robot.turnTime;
+    CoveragePath some = draft.path;
+    const CoverageRepairStats taken =
+        repairCoverage(dec, some, before.uncovered, reach, true, &budget);
+    const Metrics someAfter = measurePath(draft.prepared, {}, some);
+    EXPECT_GT(taken.touchUps, 0);
+    EXPECT_GT(taken.skipped, 0);
+    EXPECT_EQ(taken.touchUps + taken.skipped, all.touchUps) << "the same strokes, fewer driven";
+    EXPECT_TRUE(clearOf(dec, some));
+    // Close to what may stay missed (the strokes' sweep is estimated): below the draft, and
+    // within a quarter of the way from it.
+    EXPECT_LT(someAfter.uncoveredArea,
+              budget.keepMissed + 0.25 * (before.uncoveredArea - budget.keepMissed));
+    EXPECT_LT(someAfter.time, allAfter.time);
+    // Seconds per square metre swept: the strokes taken pay better than the ones left out.
+    const double takenRate =
+        (someAfter.time - before.time) / (before.uncoveredArea - someAfter.uncoveredArea);
+    const double leftRate =
+        (allAfter.time - someAfter.time) / (someAfter.uncoveredArea - allAfter.uncoveredArea);
+    EXPECT_LT(takenRate, leftRate);
+
+    // Nothing needed and no stroke pays enough: the path stays as it was.
+    budget.keepMissed = before.uncoveredArea;
+    CoveragePath none = draft.path;
+    const CoverageRepairStats nothing =
+        repairCoverage(dec, none, before.uncovered, reach, true, &budget);
+    EXPECT_EQ(nothing.touchUps, 0);
+    EXPECT_EQ(nothing.skipped, all.touchUps);
+    EXPECT_EQ(none.points, draft.path.points);
+}
