@@ -271,7 +271,8 @@ std::vector<TouchUp> withinBudget(std::vector<TouchUp> touchUps, const std::vect
         for (const int i : p.swept)
             fresh += claimed[i] ? 0 : 1;
         const double area = fresh * budget.pointArea;
-        if (!(missed > budget.keepMissed) && area < budget.minRate * p.seconds)
+        // A stroke whose floor the better-paying ones sweep already adds only time.
+        if (fresh == 0 || (!(missed > budget.keepMissed) && area < budget.minRate * p.seconds))
             continue;
         keep[p.index] = 1;
         missed -= area;

@@ -23,8 +23,9 @@ struct CoverageRepairStats {
 // is the missed floor its stroke sweeps, its price the time of its detour alone (there and
 // back, the turns included). They are taken best rate first: as long as the missed floor
 // still exceeds `keepMissed` (m^2), and after that only where they sweep at least `minRate`
-// (m^2 per second). So a plan that misses a little more than it may gets the few strokes that
-// bring it back, not a hundred turns for the last square metre.
+// (m^2 per second); a stroke that sweeps nothing the better-paying ones leave is never
+// taken. So a plan that misses a little more than it may gets the few strokes that bring it
+// back, not a hundred turns for the last square metre.
 struct TouchUpBudget {
     double pointArea = 0.0;  // m^2 each missed point stands for
     double missedArea = 0.0; // m^2 missed now

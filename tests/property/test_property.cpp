@@ -5,8 +5,8 @@
 //   (b) coverage >= 99.5 % of the sweepable area, or metrics.uncoveredArea matching the
 //       checker's uncovered area within 0.2 % of the floor (a reported loss);
 //   (c) no exception but fc::InputError with a message, no run over 30 s.
-// Cases: 10 seeds of each generated family (tests/checker/PlanGenerator.h) and every sample
-// plan unrotated and rotated by two seeded odd angles.
+// Cases: 10 seeds of each generated family (tests/checker/PlanGenerator.h), floors the bench
+// once failed, and every sample plan unrotated and rotated by two seeded odd angles.
 #include "PlanGenerator.h"
 #include "PropertyCheck.h"
 #include "formats/PlanIO.h"
@@ -17,6 +17,7 @@
 #include <gtest/gtest.h>
 #include <iostream>
 #include <string>
+#include <utility>
 #include <vector>
 
 using namespace fcgen;
@@ -24,6 +25,10 @@ using namespace fcgen;
 namespace {
 
 constexpr int kSeedsPerFamily = 10;
+// Floors beyond those seeds that `floorcover-property-bench --seed 7 --count 250` once failed,
+// kept as cases: door rooms seed 36, where touch-ups within a budget left 0.44% of the floor
+// missed by the planner's raster and 0.66% by the checker.
+const std::pair<Family, int> kRegressionCases[] = {{Family::DoorRooms, 36}};
 constexpr int kAnglesPerSample = 2;
 constexpr std::uint64_t kAngleSeed = 13;
 
@@ -49,14 +54,18 @@ std::string identifier(std::string s) {
 
 std::vector<Case> generatedCases() {
     std::vector<Case> cases;
+    auto add = [&cases](Family family, int seed) {
+        Case c;
+        c.family = family;
+        c.seed = static_cast<std::uint64_t>(seed);
+        c.name = identifier(familyName(family)) + "_" + std::to_string(seed);
+        cases.push_back(c);
+    };
     for (Family family : allFamilies())
-        for (int seed = 1; seed <= kSeedsPerFamily; ++seed) {
-            Case c;
-            c.family = family;
-            c.seed = static_cast<std::uint64_t>(seed);
-            c.name = identifier(familyName(family)) + "_" + std::to_string(seed);
-            cases.push_back(c);
-        }
+        for (int seed = 1; seed <= kSeedsPerFamily; ++seed)
+            add(family, seed);
+    for (const auto& [family, seed] : kRegressionCases)
+        add(family, seed);
     return cases;
 }
 
