@@ -61,6 +61,16 @@ struct TouchUp {
     Vec2 a, b;
 };
 
+// The detour driving t alone: from its vertex to the stroke, along it and back, and back to
+// the vertex (route[0] at both ends).
+Polyline outAndBack(const TouchUp& t) {
+    Polyline detour = t.route;
+    detour.push_back(t.b);
+    detour.push_back(t.a);
+    detour.insert(detour.end(), t.route.rbegin() + 1, t.route.rend());
+    return detour;
+}
+
 // A run of short strokes along one stretch of wall: the touch-ups of `left` whose strokes
 // lie on t's line (within a millionth of W) and overlap t's stroke or one another, t
 // included, and the ends of the stretch they sweep together.
@@ -114,11 +124,8 @@ std::map<int, std::vector<Polyline>> chainedDetours(const ClearanceField& field,
               [](const TouchUp& x, const TouchUp& y) { return x.from < y.from; });
     std::map<int, std::vector<Polyline>> detours;
     auto alone = [&](const TouchUp& t) {
-        Polyline detour(t.route.begin() + 1, t.route.end()); // from the vertex to a
-        detour.push_back(t.b);
-        detour.push_back(t.a);
-        detour.insert(detour.end(), t.route.rbegin() + 1, t.route.rend()); // back
-        detours[t.from].push_back(std::move(detour));
+        const Polyline detour = outAndBack(t);
+        detours[t.from].push_back(Polyline(detour.begin() + 1, detour.end())); // not the vertex
     };
     auto clearLeg = [&](Vec2 p, Vec2 q) -> Polyline {
         if (field.segmentIsClear(p, q))
@@ -250,10 +257,7 @@ std::vector<TouchUp> withinBudget(std::vector<TouchUp> touchUps, const std::vect
     std::vector<Priced> priced;
     for (size_t k = 0; k < touchUps.size(); ++k) {
         const TouchUp& t = touchUps[k];
-        Polyline detour = t.route;
-        detour.push_back(t.b);
-        detour.push_back(t.a);
-        detour.insert(detour.end(), t.route.rbegin() + 1, t.route.rend());
+        const Polyline detour = outAndBack(t);
         // One more turn where it leaves the path: the path rarely heads its way.
         const double seconds =
             polylineLength(detour) / budget.speed + (countTurns(detour) + 1) * budget.turnTime;
