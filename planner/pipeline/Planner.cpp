@@ -744,7 +744,8 @@ PlanResult planCoverage(const PlanRequest& request, const SolveControl& control,
         // The lattice is an offer: where it cannot be planned, the first plan stands.
     }
     if (loop.valid()) {
-        if (estimated.get() < detail::kEdgeEstimateGain * result.metrics.length) {
+        if (estimated.get() / request.robot.speed <
+            detail::kEdgeEstimateGain * result.metrics.time) {
             try {
                 plans.push_back(detail::wallLoopPlan(request, result, loop.get()));
             } catch (const InputError&) {
