@@ -185,9 +185,20 @@ size_t loopSplit(const WallLoop& walls, Vec2 end, double width) {
 } // namespace
 
 bool wantsWallLoop(const PlanRequest& request) {
+    const double width = request.robot.coverageWidth;
+    const bool ragged = averageWallPiece(request.plan) < kEdgeRaggedWallInWidths * width;
+    // Pillars and furniture small enough to be driven round (IslandDetours.h) in a hall: the
+    // first plan parts its stripes at each one, whatever its walls. Not on floors of several
+    // rooms, each a piece of its own: the ward's beds drafted a loop that never won, and its
+    // 0.8 s of planning became 2.2 s.
+    const bool islands = request.plan.rooms.size() <= 1 &&
+                         std::any_of(request.plan.obstacles.begin(), request.plan.obstacles.end(),
+                                     [&](const Ring& obstacle) {
+                                         return std::abs(signedArea(obstacle)) <=
+                                                kEdgeIslandInWidths2 * width * width;
+                                     });
     return request.wallLoop && request.rooms.empty() && plansAnyGraph(request.solver) &&
-           request.solver != "exact" &&
-           averageWallPiece(request.plan) < kEdgeRaggedWallInWidths * request.robot.coverageWidth;
+           request.solver != "exact" && (ragged || islands);
 }
 
 WallLoopDraft draftWallLoop(const PlanRequest& request, const SolveControl& control,
