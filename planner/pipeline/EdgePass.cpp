@@ -73,13 +73,23 @@ void append(CoveragePath& path, const CoveragePath& more) {
     }
 }
 
+// Pieces end where the wall turns: a straight wall that a CAD export or an editor split into
+// short segments is one piece (the ward with every wall cut every 0.2 m drafted a loop for
+// nothing, 0.7 s of planning became 1.8 s).
 double averageWallPiece(const Plan& plan) {
+    constexpr double kStraight = 1e-3; // sine of the turn below which a corner is no corner
     double length = 0.0;
     size_t pieces = 0;
     auto add = [&](const Ring& ring) {
-        for (size_t i = 0; i < ring.size(); ++i)
-            length += norm(ring[(i + 1) % ring.size()] - ring[i]);
-        pieces += ring.size();
+        const size_t n = ring.size();
+        for (size_t i = 0; i < n; ++i) {
+            const Vec2 in = ring[i] - ring[(i + n - 1) % n], out = ring[(i + 1) % n] - ring[i];
+            length += norm(out);
+            const double lengths = norm(in) * norm(out);
+            if (lengths > 0.0 &&
+                (dot(in, out) < 0.0 || std::abs(cross(in, out)) > kStraight * lengths))
+                ++pieces;
+        }
     };
     add(plan.boundary);
     for (const Ring& obstacle : plan.obstacles)
