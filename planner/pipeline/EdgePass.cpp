@@ -194,6 +194,20 @@ size_t loopSplit(const WallLoop& walls, Vec2 end, double width) {
 
 } // namespace
 
+bool everyRoomAsked(const PlanRequest& request) {
+    if (request.rooms.empty())
+        return true;
+    double rooms = 0.0, floor = std::abs(signedArea(request.plan.boundary));
+    for (const Ring& obstacle : request.plan.obstacles)
+        floor -= std::abs(signedArea(obstacle));
+    for (const Room& room : request.plan.rooms) {
+        if (std::find(request.rooms.begin(), request.rooms.end(), room.name) == request.rooms.end())
+            return false;
+        rooms += std::abs(signedArea(room.outline));
+    }
+    return rooms >= (1.0 - kEdgeRoomsCoverFloorSlack) * floor;
+}
+
 bool wantsWallLoop(const PlanRequest& request) {
     const double width = request.robot.coverageWidth;
     const bool ragged = averageWallPiece(request.plan) < kEdgeRaggedWallInWidths * width;
@@ -207,7 +221,7 @@ bool wantsWallLoop(const PlanRequest& request) {
                                          return std::abs(signedArea(obstacle)) <=
                                                 kEdgeIslandInWidths2 * width * width;
                                      });
-    return request.wallLoop && request.rooms.empty() && plansAnyGraph(request.solver) &&
+    return request.wallLoop && everyRoomAsked(request) && plansAnyGraph(request.solver) &&
            request.solver != "exact" && (ragged || islands);
 }
 
@@ -304,7 +318,10 @@ PlanResult wallLoopPlan(const PlanRequest& request, const PlanResult& first, Wal
     result.solution.graphCost = draft.graphCost;
     result.solution.lowerBound = draft.lowerBound;
     result.stripeAngleDeg = first.stripeAngleDeg;
-    const std::vector<std::string>& required = first.prepared.decomposition.roomNames;
+    // The rooms asked for (every one, covering the floor; see everyRoomAsked), as the first
+    // plan was measured.
+    const std::vector<std::string>& required =
+        request.rooms.empty() ? first.prepared.decomposition.roomNames : request.rooms;
     result.path = std::move(draft.path);
     result.metrics = measurePath(first.prepared, required, result.path);
     if (result.metrics.uncoveredArea > kTouchUpFraction * result.metrics.requiredArea)

@@ -48,9 +48,17 @@ struct WallLoopDraft {
     int cells = 0;
 };
 
+// Rooms may leave this share of the floor outside them and still count as covering it.
+inline constexpr double kEdgeRoomsCoverFloorSlack = 0.01;
+
+// Whether `request` asks for the whole floor: no rooms named, or every room of the plan named
+// where the rooms cover the floor (an imported map's rooms; the editor with every room picked).
+bool everyRoomAsked(const PlanRequest& request);
+
 // Whether planCoverage drafts a wall loop for `request`: every room asked for (a subset
 // would need a loop around its walls alone), a solver that plans any graph (not exact: the
-// rest's many small floors would take it to its limit), and ragged walls.
+// rest's many small floors would take it to its limit), and ragged walls or, in a hall of at
+// most one room, obstacles small enough to be driven round.
 bool wantsWallLoop(const PlanRequest& request);
 
 // Plans the loop from request.start (without one, from the loop's point farthest from the
