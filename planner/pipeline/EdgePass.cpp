@@ -205,6 +205,11 @@ bool everyRoomAsked(const PlanRequest& request) {
             return false;
         rooms += std::abs(signedArea(room.outline));
     }
+    // A name that is no room is the planner's to report.
+    for (const std::string& name : request.rooms)
+        if (std::none_of(request.plan.rooms.begin(), request.plan.rooms.end(),
+                         [&](const Room& room) { return room.name == name; }))
+            return false;
     return rooms >= (1.0 - kEdgeRoomsCoverFloorSlack) * floor;
 }
 
@@ -318,10 +323,7 @@ PlanResult wallLoopPlan(const PlanRequest& request, const PlanResult& first, Wal
     result.solution.graphCost = draft.graphCost;
     result.solution.lowerBound = draft.lowerBound;
     result.stripeAngleDeg = first.stripeAngleDeg;
-    // The rooms asked for (every one, covering the floor; see everyRoomAsked), as the first
-    // plan was measured.
-    const std::vector<std::string>& required =
-        request.rooms.empty() ? first.prepared.decomposition.roomNames : request.rooms;
+    const std::vector<std::string>& required = first.prepared.decomposition.roomNames;
     result.path = std::move(draft.path);
     result.metrics = measurePath(first.prepared, required, result.path);
     if (result.metrics.uncoveredArea > kTouchUpFraction * result.metrics.requiredArea)

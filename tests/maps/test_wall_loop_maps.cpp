@@ -276,9 +276,9 @@ TEST(WallLoopMaps, TheRealCorridorMapIsSweptAlongItsWallsFirst) {
 }
 
 // Every room picked (the editor's pick tool, `--rooms` naming them all) is the whole floor
-// when the rooms cover it, as an imported map's do: the loop is drafted as with none named.
-// It used to be drafted only with none named: the faculty map with both rooms named planned
-// 1,929 m and 1,360 turns instead of 1,713 m and 907.
+// when the rooms cover it, as an imported map's do: planned as with none named, the loop
+// included. The loop used to be drafted only with none named: the faculty map with both
+// rooms named planned 1,929 m and 1,360 turns instead of 1,713 m and 907.
 TEST(WallLoopMaps, EveryRoomPickedPlansAsNoneNamed) {
     const Plan corridor =
         importPlanFile(std::string(FC_REAL_MAPS_DIR) + "/localization-demo.yaml").project.plan;
@@ -292,6 +292,11 @@ TEST(WallLoopMaps, EveryRoomPickedPlansAsNoneNamed) {
     EXPECT_NEAR(every.metrics.length, none.metrics.length, 1e-6);
     EXPECT_EQ(every.metrics.turns, none.metrics.turns);
     EXPECT_NEAR(every.metrics.coverage, none.metrics.coverage, 1e-9);
+    // A name that is no room is refused, also beside every real one (it was dropped without
+    // a word where the rooms sweep at several angles).
+    PlanRequest unknown = request;
+    unknown.rooms.push_back("No such room");
+    EXPECT_THROW(planCoverage(unknown), InputError);
     // One room left out: a subset, which would need a loop round its own walls.
     request.rooms.pop_back();
     EXPECT_FALSE(detail::everyRoomAsked(request));
