@@ -189,6 +189,18 @@ int joinableNode(const PreparedPlan& prepared, Vec2 p, const std::vector<int>* c
     return inRegion >= 0 ? inRegion : closest;
 }
 
+namespace {
+// The error for a room name that is none of `rooms` (the editor matches its wording).
+InputError unknownRoom(const std::string& name, const std::vector<std::string>& rooms) {
+    std::ostringstream msg;
+    msg << "unknown room \"" << name << "\" (rooms:";
+    for (const std::string& room : rooms)
+        msg << ' ' << room;
+    msg << ")";
+    return InputError(msg.str());
+}
+} // namespace
+
 Query makeQuery(const PreparedPlan& prepared, const std::vector<std::string>& rooms,
                 std::optional<Vec2> start, std::optional<Vec2> end, std::uint64_t seed,
                 std::vector<std::string>& warnings, std::optional<Vec2> mainRegionAt,
@@ -198,14 +210,8 @@ Query makeQuery(const PreparedPlan& prepared, const std::vector<std::string>& ro
     std::vector<char> roomSelected(dec.roomNames.size(), rooms.empty() ? 1 : 0);
     for (const std::string& name : rooms) {
         auto it = std::find(dec.roomNames.begin(), dec.roomNames.end(), name);
-        if (it == dec.roomNames.end()) {
-            std::ostringstream msg;
-            msg << "unknown room \"" << name << "\" (rooms:";
-            for (const std::string& n : dec.roomNames)
-                msg << ' ' << n;
-            msg << ")";
-            throw InputError(msg.str());
-        }
+        if (it == dec.roomNames.end())
+            throw unknownRoom(name, dec.roomNames);
         roomSelected[it - dec.roomNames.begin()] = 1;
     }
     Query q;
@@ -705,17 +711,13 @@ PlanResult planCoverage(const PlanRequest& request, const SolveControl& control,
                         const PreparedPlans* prepared) {
     // A name that is no room of the plan is refused here: a per-room plan takes its rooms
     // from each angle's decomposition and used to drop it without a word.
-    for (const std::string& name : request.rooms) {
-        const std::vector<Room>& rooms = request.plan.rooms;
-        if (rooms.empty() || std::any_of(rooms.begin(), rooms.end(),
-                                         [&](const Room& room) { return room.name == name; }))
-            continue;
-        std::ostringstream msg;
-        msg << "unknown room \"" << name << "\" (rooms:";
-        for (const Room& room : rooms)
-            msg << ' ' << room.name;
-        msg << ")";
-        throw InputError(msg.str());
+    if (!request.plan.rooms.empty()) {
+        std::vector<std::string> names;
+        for (const Room& room : request.plan.rooms)
+            names.push_back(room.name);
+        for (const std::string& name : request.rooms)
+            if (std::find(names.begin(), names.end(), name) == names.end())
+                throw unknownRoom(name, names);
     }
     // Every room named where the rooms cover the floor (the editor with every room picked)
     // is the whole floor: planned as with none named, the same path (the lab map's rooms
