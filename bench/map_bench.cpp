@@ -1,7 +1,7 @@
 // Occupancy maps (issue 15): noisy maps rendered from the sample plans (seeded, ground truth
 // known) and real laser maps (tests/data/real-maps, from Debian's mrpt-common), imported
 // with the default cleaning and room segmentation, then planned with the default request;
-// the largest real map once more without cleaning.
+// the largest real map once more without cleaning, and four copies of it joined into one.
 // Prints a Markdown table per kind (docs/formats.md holds a copy).
 //   floorcover-map-bench [--seeds N] [--real-only] [--noisy-only] [--angles A,B,...]
 // (--angles: also noisy maps of office, ward and room-obstacle drawn at those angles)
@@ -11,6 +11,7 @@
 #include "formats/FileIO.h"
 #include "formats/PlanIO.h"
 #include "importers/Import.h"
+#include "importers/ImportSupport.h"
 #include "pipeline/Planner.h"
 
 #include <chrono>
@@ -18,6 +19,7 @@
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
+#include <fstream>
 #include <numeric>
 #include <string>
 
@@ -111,21 +113,59 @@ void noisyRows(int seeds) {
     }
 }
 
+// Four copies of a map overlaid at offsets (dx, dy) pixels, free where any copy is free,
+// else occupied where any is, else unknown: one building four times the size whose copies
+// join where their free space overlaps. Written as PGM + YAML into dir; returns the YAML.
+std::string joinedCopies(const std::string& name, int dx, int dy,
+                         const std::filesystem::path& dir) {
+    const std::string base = std::string(FC_REAL_MAPS_DIR) + "/" + name;
+    const importing::GreyImage image = importing::readMapImage(base + ".png");
+    const int w = image.width + dx, h = image.height + dy;
+    std::vector<unsigned char> out(static_cast<size_t>(w) * h, 205);
+    for (const auto& [ox, oy] : {std::pair{0, 0}, {dx, 0}, {0, dy}, {dx, dy}})
+        for (int y = 0; y < image.height; ++y)
+            for (int x = 0; x < image.width; ++x) {
+                const unsigned char v = image.grey[static_cast<size_t>(y) * image.width + x];
+                unsigned char& o = out[static_cast<size_t>(y + oy) * w + x + ox];
+                if (v >= 250)
+                    o = 254;
+                else if (v <= 50 && o != 254)
+                    o = 0;
+            }
+    std::filesystem::create_directories(dir);
+    std::ofstream pgm(dir / (name + "-x4.pgm"), std::ios::binary);
+    pgm << "P5\n" << w << " " << h << "\n255\n";
+    pgm.write(reinterpret_cast<const char*>(out.data()), static_cast<std::streamsize>(out.size()));
+    std::ifstream yamlIn(base + ".yaml");
+    std::string yamlText((std::istreambuf_iterator<char>(yamlIn)), {});
+    yamlText.replace(yamlText.find(name + ".png"), name.size() + 4, name + "-x4.pgm");
+    const std::filesystem::path yaml = dir / (name + "-x4.yaml");
+    std::ofstream(yaml) << yamlText;
+    return yaml.string();
+}
+
 void realRows() {
     std::printf("| map | cells | free m² | specks removed | obstacles | rooms | length m | ideal "
                 "m | extra / ideal | coverage | checker | unreachable m² | import s | plan s |\n"
                 "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n");
     struct RealMap {
-        const char* name;
+        std::string name, yaml;
         bool cleaned;
     };
-    // The last row: the largest map as it comes without cleaning (thousands of speckle
-    // obstacles), for the planner's speed on what an importer may hand it.
-    for (const RealMap& map :
-         {RealMap{"uwb-localization-demo", true}, RealMap{"localization-demo", true},
-          RealMap{"telecom-faculty", true}, RealMap{"telecom-faculty", false}}) {
-        const std::string yaml = std::string(FC_REAL_MAPS_DIR) + "/" + map.name + ".yaml";
-        const std::string name = std::string(map.name) + (map.cleaned ? "" : " (no cleaning)");
+    auto real = [](const char* name, bool cleaned) {
+        return RealMap{std::string(name) + (cleaned ? "" : " (no cleaning)"),
+                       std::string(FC_REAL_MAPS_DIR) + "/" + name + ".yaml", cleaned};
+    };
+    // The largest map as it comes without cleaning (thousands of speckle obstacles), for the
+    // planner's speed on what an importer may hand it; and four copies of it joined into one
+    // building of 4,650 m^2, for how import and planning grow with the floor.
+    const auto dir = std::filesystem::temp_directory_path() / "fc-map-bench";
+    for (const RealMap& map : {real("uwb-localization-demo", true), real("localization-demo", true),
+                               real("telecom-faculty", true), real("telecom-faculty", false),
+                               RealMap{"telecom-faculty ×4, joined",
+                                       joinedCopies("telecom-faculty", 800, 960, dir), true}}) {
+        const std::string& yaml = map.yaml;
+        const std::string& name = map.name;
         ImportOptions options;
         options.cleaning.enabled = map.cleaned;
         auto t0 = std::chrono::steady_clock::now();

@@ -38,6 +38,109 @@ std::pair<int, int> topologyOf(const OGRGeometry& g) {
     return {static_cast<int>(polygons.size()), holes};
 }
 
+OGRPolygon rectangle(double x0, double y0, double x1, double y1) {
+    OGRLinearRing ring;
+    ring.addPoint(x0, y0);
+    ring.addPoint(x1, y0);
+    ring.addPoint(x1, y1);
+    ring.addPoint(x0, y1);
+    ring.closeRings();
+    OGRPolygon box;
+    box.addRing(&ring);
+    return box;
+}
+
+// The floor cut to a small box, from nested clips made on demand (a quadtree whose nodes
+// overlap by a margin): cutting it from the whole floor for each of a big map's thousands of
+// pieces cost a linear pass each, half a minute on a 4,700 m^2 map.
+class LocalFloor {
+public:
+    explicit LocalFloor(const OGRGeometry& free) {
+        free.getEnvelope(&root_.core);
+        root_.region = root_.core;
+        root_.clip.reset(free.clone());
+    }
+
+    // The floor inside `box` (null where GEOS failed).
+    GeometryPtr within(const OGREnvelope& box) {
+        Node* node = &root_;
+        for (int depth = 0; depth < kMaxDepth; ++depth) {
+            const double w = node->core.MaxX - node->core.MinX;
+            const double h = node->core.MaxY - node->core.MinY;
+            if (std::max(w, h) < kSmallestCore || !node->clip)
+                break;
+            const int q = quadrantHolding(*node, box);
+            if (q < 0)
+                break;
+            if (!node->children[q])
+                node->children[q] = child(*node, q);
+            node = node->children[q].get();
+        }
+        if (!node->clip)
+            return nullptr;
+        const OGRPolygon rect = rectangle(box.MinX, box.MinY, box.MaxX, box.MaxY);
+        return GeometryPtr(node->clip->Intersection(&rect));
+    }
+
+private:
+    static constexpr int kMaxDepth = 12;
+    static constexpr double kSmallestCore = 128; // pixels
+    static constexpr double kOverlap = 16;       // pixels: pieces across a core's edge
+
+    struct Node {
+        OGREnvelope core, region; // region: the core grown by the overlap
+        GeometryPtr clip;         // the floor within region
+        std::unique_ptr<Node> children[4];
+    };
+
+    static OGREnvelope quadrant(const Node& n, int q) {
+        const double mx = 0.5 * (n.core.MinX + n.core.MaxX);
+        const double my = 0.5 * (n.core.MinY + n.core.MaxY);
+        OGREnvelope e;
+        e.MinX = q & 1 ? mx : n.core.MinX;
+        e.MaxX = q & 1 ? n.core.MaxX : mx;
+        e.MinY = q & 2 ? my : n.core.MinY;
+        e.MaxY = q & 2 ? n.core.MaxY : my;
+        return e;
+    }
+
+    static OGREnvelope grown(OGREnvelope e) {
+        e.MinX -= kOverlap, e.MinY -= kOverlap, e.MaxX += kOverlap, e.MaxY += kOverlap;
+        return e;
+    }
+
+    static int quadrantHolding(const Node& n, const OGREnvelope& box) {
+        for (int q = 0; q < 4; ++q)
+            if (grown(quadrant(n, q)).Contains(box))
+                return q;
+        return -1;
+    }
+
+    static std::unique_ptr<Node> child(const Node& parent, int q) {
+        auto node = std::make_unique<Node>();
+        node->core = quadrant(parent, q);
+        node->region = grown(node->core);
+        const OGRPolygon rect =
+            rectangle(node->region.MinX, node->region.MinY, node->region.MaxX, node->region.MaxY);
+        node->clip.reset(parent.clip->Intersection(&rect));
+        return node;
+    }
+
+    Node root_;
+};
+
+// Whether taking `piece` from the floor changes its parts or holes. That depends only on
+// how the piece meets the floor's outline, so it is decided on the floor round the piece.
+bool changesTopology(LocalFloor& floor, const OGRGeometry& piece) {
+    OGREnvelope box;
+    piece.getEnvelope(&box);
+    constexpr double kMargin = 1.0; // pixels: the box's edges stay clear of the piece
+    box.MinX -= kMargin, box.MinY -= kMargin, box.MaxX += kMargin, box.MaxY += kMargin;
+    const GeometryPtr local = floor.within(box);
+    const GeometryPtr without(local ? local->Difference(&piece) : nullptr);
+    return without && topologyOf(*without) != topologyOf(*local);
+}
+
 // The rings that a closed passage changed (a joined obstacle's outline zigzags along its
 // former gaps) simplified as the tracing was; the others are simplified already and stay.
 // Passages left are at least the robot wide, so a ring cannot cross another.
@@ -240,8 +343,8 @@ PassageClosing withoutNarrowPassages(const OGRGeometry& free, double radius) {
     // a sweep direction a hundredth of a degree off cuts cells at every wall's end).
     std::vector<Polygon2> parts;
     collectPolygons(lost.get(), parts);
-    const std::pair<int, int> topology = topologyOf(free);
     GeometryPtr closed = std::make_unique<OGRMultiPolygon>();
+    LocalFloor localFloor(free);
     for (const Polygon2& part : parts) {
         OGRPolygon polygon; // the shell: a passage all round a speck closes over it too
         polygon.addRingDirectly(ogrRing(part.shell));
@@ -251,8 +354,7 @@ PassageClosing withoutNarrowPassages(const OGRGeometry& free, double radius) {
         const GeometryPtr grown(simple ? simple->Buffer(kOpening, 1) : nullptr);
         // A passage joins two walls (or parts the floor); a wedge or a notch of one wall,
         // which the opening cuts off as well, changes neither and stays.
-        const GeometryPtr without(grown ? free.Difference(grown.get()) : nullptr);
-        if (!without || topologyOf(*without) == topology)
+        if (!grown || !changesTopology(localFloor, *grown))
             continue;
         GeometryPtr joined(closed->Union(grown.get()));
         if (!joined)
@@ -269,7 +371,7 @@ PassageClosing withoutNarrowPassages(const OGRGeometry& free, double radius) {
     const GeometryPtr taken(out.free ? free.Difference(out.free.get()) : nullptr);
     if (!out.free || !taken)
         throw InputError("closing the passages narrower than the robot failed");
-    out.obstaclesJoined = std::max(0, topology.second - topologyOf(*out.free).second);
+    out.obstaclesJoined = std::max(0, topologyOf(free).second - topologyOf(*out.free).second);
     if (auto* surfaces = dynamic_cast<const OGRGeometryCollection*>(taken.get()))
         out.area = surfaces->get_Area();
     else if (auto* surface = dynamic_cast<const OGRSurface*>(taken.get()))

@@ -183,6 +183,42 @@ TEST(RosMap, ObstaclesTheRobotCannotPassBetweenAreJoined) {
         EXPECT_LT(obstacle.size(), 20u);
 }
 
+// The same on a map large enough that each passage is judged on the floor round it (nested
+// clips of the floor, importers/MapTracing.cpp): nine copies of a dotted line and of two
+// blocks 1.2 m apart, wherever they fall against the clips' edges.
+TEST(RosMap, PassagesAreJudgedAlikeAllOverABigMap) {
+    const auto dir = test::scratchDir("ros-passages-big");
+    const int width = 620, height = 380;
+    std::vector<unsigned char> pixels(static_cast<size_t>(width * height), kOccupied);
+    auto set = [&](int x, int y, unsigned char v) {
+        pixels[static_cast<size_t>(y * width + x)] = v;
+    };
+    for (int y = 3; y < height - 3; ++y)
+        for (int x = 3; x < width - 3; ++x)
+            set(x, y, kFree);
+    for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j) {
+            const int ox = 206 * i, oy = 126 * j;
+            for (int k = 0; k < 40; ++k)
+                for (int b = 0; b < 4; ++b)
+                    set(ox + 30 + 2 * k + b % 2, oy + 20 + 2 * k + b / 2, kOccupied);
+            for (int y = 20; y < 30; ++y)
+                for (int x = 0; x < 10; ++x)
+                    set(ox + 130 + x, oy + y, kOccupied), set(ox + 164 + x, oy + y, kOccupied);
+        }
+    std::ostringstream pgm;
+    pgm << "P5\n" << width << " " << height << "\n255\n";
+    pgm.write(reinterpret_cast<const char*>(pixels.data()),
+              static_cast<std::streamsize>(pixels.size()));
+    test::writeText(dir / "lines.pgm", pgm.str());
+    const ImportResult r = importPlanFile(test::writeText(dir / "lines.yaml", yaml("lines.pgm")));
+    ASSERT_TRUE(r.cleaning);
+    EXPECT_EQ(r.project.plan.obstacles.size(), 27u); // nine lines, eighteen blocks
+    // Each line traces as 78 holes (blocks and the pinches where they touch) joined into one;
+    // the count the whole floor's difference per piece gave before the clips.
+    EXPECT_EQ(r.cleaning->obstaclesJoined, 9 * 77);
+}
+
 TEST(RosMap, BadMapsGiveOneLineErrors) {
     const auto dir = test::scratchDir("ros-bad");
     const Map map;
