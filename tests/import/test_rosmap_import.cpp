@@ -214,8 +214,7 @@ TEST(RosMap, PassagesAreJudgedAlikeAllOverABigMap) {
     const ImportResult r = importPlanFile(test::writeText(dir / "lines.yaml", yaml("lines.pgm")));
     ASSERT_TRUE(r.cleaning);
     EXPECT_EQ(r.project.plan.obstacles.size(), 27u); // nine lines, eighteen blocks
-    // Each line traces as 78 holes (blocks and the pinches where they touch) joined into one;
-    // the count the whole floor's difference per piece gave before the clips.
+    // 77 per line: the count that judging each piece on the whole floor gave before the clips.
     EXPECT_EQ(r.cleaning->obstaclesJoined, 9 * 77);
 }
 
