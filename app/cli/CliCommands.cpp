@@ -231,6 +231,13 @@ const std::string& planPath(const Arguments& args) {
     return args.positional()[0];
 }
 
+Project loadProject(const std::string& path) {
+    Project project = loadProjectFile(path);
+    for (const std::string& note : project.notes)
+        std::cerr << "floorcover-cli: note: " << path << ": " << note << "\n";
+    return project;
+}
+
 namespace {
 
 constexpr int kExitCoverageLoss = 3;
@@ -238,7 +245,7 @@ constexpr int kExitCoverageLoss = 3;
 int commandPlan(const Arguments& args) {
     args.allowOnly(kPlanOptions);
     const std::string& path = planPath(args);
-    const Project project = loadProjectFile(path);
+    const Project project = loadProject(path);
     PlanRequest request;
     const PlanResult result = planFromArguments(path, project, args, request);
     if (auto out = args.text("--out"))
@@ -260,7 +267,7 @@ int commandGraph(const Arguments& args) {
     const auto out = args.text("--out");
     if (!out)
         throw InputError("graph needs --out FILE.json");
-    const Project project = loadProjectFile(path);
+    const Project project = loadProject(path);
     try {
         PlanRequest request = requestFrom(project, args);
         if (request.sweep.automatic)
@@ -308,7 +315,7 @@ int commandCompare(const Arguments& args) {
     allowed.push_back("--json");
     args.allowOnly(allowed);
     const std::string& path = planPath(args);
-    const Project project = loadProjectFile(path);
+    const Project project = loadProject(path);
     std::vector<std::string> solvers = args.list("--solvers");
     if (solvers.empty())
         solvers = solverNames(); // dqn without --model: the built-in generalist

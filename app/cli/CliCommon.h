@@ -24,6 +24,8 @@ PathExportInfo exportInfoFor(const Project& project, const PlanRequest& request,
                              const PlanResult& result);
 // The one positional PLAN argument; throws InputError otherwise.
 const std::string& planPath(const Arguments& args);
+// loadProjectFile, its notes printed on stderr.
+Project loadProject(const std::string& path);
 
 int commandTrain(const Arguments& args);
 int commandTile(const Arguments& args);   // TileCommand.cpp: the tiling robot

@@ -13,7 +13,7 @@ int commandTile(const Arguments& args) {
     args.allowOnly({"--solver", "--out", "--seed", "--block-leg", "--block-masses", "--model",
                     "--train-seconds", "--save-model"});
     const std::string& path = planPath(args);
-    const Project project = loadProjectFile(path);
+    const Project project = loadProject(path);
     tiling::TilingRequest request;
     request.plan = project.plan;
     request.solver = args.text("--solver").value_or("greedy");

@@ -69,7 +69,7 @@ int commandTrain(const Arguments& args) {
     if (setting != "improved" && setting != "paper" && setting != "graph")
         throw InputError("--setting must be graph, improved or paper");
 
-    const Project project = loadProjectFile(path);
+    const Project project = loadProject(path);
     PreparedPlan prepared;
     double angle = 90.0;
     try {

@@ -6,25 +6,66 @@
 
 namespace fc::detail {
 
-void snapCoordinates(std::vector<Ring*>& rings, double eps, bool alongY) {
+namespace {
+
+// Every coordinate (x, or y with alongY) replaced by representative(sorted values), which
+// gives one value per entry of the sorted list.
+template <typename Representatives>
+void replaceCoordinates(std::vector<Ring*>& rings, bool alongY, Representatives representatives) {
     auto coord = [alongY](Vec2& p) -> double& { return alongY ? p.y : p.x; };
     std::vector<double> values;
     for (Ring* r : rings)
         for (Vec2& p : *r)
             values.push_back(coord(p));
     std::sort(values.begin(), values.end());
-    const double grid = std::exp2(std::floor(std::log2(eps)));
-    std::vector<double> rep(values.size());
-    double start = values.empty() ? 0 : values[0];
-    for (size_t i = 0; i < values.size(); ++i) {
-        if (values[i] - start > eps)
-            start = values[i];
-        rep[i] = std::round(start / grid) * grid;
-    }
+    const std::vector<double> rep = representatives(values);
     for (Ring* r : rings)
         for (Vec2& p : *r)
             coord(p) =
                 rep[std::lower_bound(values.begin(), values.end(), coord(p)) - values.begin()];
+}
+
+} // namespace
+
+void snapCoordinates(std::vector<Ring*>& rings, double eps, bool alongY) {
+    replaceCoordinates(rings, alongY, [eps](const std::vector<double>& values) {
+        const double grid = std::exp2(std::floor(std::log2(eps)));
+        std::vector<double> rep(values.size());
+        double start = values.empty() ? 0 : values[0];
+        for (size_t i = 0; i < values.size(); ++i) {
+            if (values[i] - start > eps)
+                start = values[i];
+            rep[i] = std::round(start / grid) * grid;
+        }
+        return rep;
+    });
+}
+
+void mergeCloseCoordinates(std::vector<Ring*>& rings, double eps, bool alongY) {
+    // Groups of at most eps span; each becomes its most frequent value (the smallest of
+    // equals), so that a group of one value, and every coordinate apart from others by
+    // more than eps, stays as it is.
+    replaceCoordinates(rings, alongY, [eps](const std::vector<double>& values) {
+        std::vector<double> rep(values.size());
+        for (size_t first = 0; first < values.size();) {
+            size_t end = first;
+            while (end < values.size() && values[end] - values[first] <= eps)
+                ++end;
+            double best = values[first];
+            size_t bestCount = 0;
+            for (size_t i = first; i < end;) {
+                size_t j = i;
+                while (j < end && values[j] == values[i])
+                    ++j;
+                if (j - i > bestCount)
+                    best = values[i], bestCount = j - i;
+                i = j;
+            }
+            std::fill(rep.begin() + first, rep.begin() + end, best);
+            first = end;
+        }
+        return rep;
+    });
 }
 
 void straightenNearVertical(std::vector<Ring*>& rings, size_t firstRoom, double eps) {

@@ -15,6 +15,13 @@ namespace fc::detail {
 // plan drawn at any rotation decomposes as the same plan drawn axis-parallel.
 void snapCoordinates(std::vector<Ring*>& rings, double eps, bool alongY);
 
+// Merges coordinates (x, or y with `alongY`) lying within eps of each other onto the most
+// frequent of them, without rounding: the jitter of drawing tools and reprojections (tens of
+// micrometres) leaned walls at the sweep angle and cut sliver slices. Coordinates farther
+// than eps from any other keep their values (snapCoordinates' dyadic rounding, at this
+// scale, would move every vertex by up to half the grid).
+void mergeCloseCoordinates(std::vector<Ring*>& rings, double eps, bool alongY);
+
 // Makes edges within `eps` of vertical (across the sweep) exactly vertical where a room's
 // outline takes part: the x values joined by such edges, in any ring, become the most
 // frequent of them where they all lie within eps and one is a vertex of a room (rings from

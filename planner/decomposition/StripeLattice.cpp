@@ -19,6 +19,7 @@ constexpr double kHandOffShare = 0.15;
 // Receivers at least this many W wide: a narrower cell's one stripe goes wherever the robot
 // fits in it (StripePlanner), not where the giver's sliver is.
 constexpr double kReceiverMinWidth = 1.0;
+constexpr double kStripeCountTolerance = 1e-3; // in W, as the lattice's own tolerance
 
 // Lattice lines origin + W/2 + kW inside the cell; at a side that is not open, a stripe
 // W/2 inside it unless a lattice line is there already.
@@ -41,8 +42,11 @@ std::vector<double> latticePositions(double x0, double x1, double w, bool leftOp
     return xs;
 }
 
+// A cell up to a millimetre (per metre of W) wider than n W takes n stripes: drawing tools'
+// and reprojections' jitter of tens of micrometres made a room's cells take one more, each
+// a cell of its own (a plan read from longitude/latitude 9% slower than the same in metres).
 int evenCount(double width, double w) {
-    return std::max(1, static_cast<int>(std::ceil(width / w - 1e-9)));
+    return std::max(1, static_cast<int>(std::ceil(width / w - kStripeCountTolerance)));
 }
 
 // Noisy outlines make cells a few centimetres wider than n W (an obstacle traced 2.05 m

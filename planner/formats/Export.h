@@ -69,6 +69,20 @@ std::string zonesToWkt(const Plan& plan); // MULTIPOLYGON of the zones
 std::string reprojectGeoJsonToWgs84(const std::string& localGeoJson, int epsg);
 // Lon/lat (degrees) of points given in EPSG:`epsg`; throws InputError on failure.
 std::vector<Vec2> toWgs84(const std::vector<Vec2>& points, int epsg);
+// Whether PROJ knows EPSG:`epsg` as a geographic (longitude/latitude) CRS.
+bool isGeographicCrs(int epsg);
+// Web Mercator (EPSG:3857 and its older codes): "metres" that are 1/cos(latitude) of the
+// ground's (1.5x at 48 degrees), what web maps and GIS tools drawing on them use.
+bool isWebMercator(int epsg);
+// A plan in longitude/latitude (EPSG:`sourceEpsg`, longitude first as in GeoJSON) or in Web
+// Mercator, in true metres: WGS84 / UTM in the zone of its centre (EPSG:326zz north, 327zz
+// south), which becomes its EPSG. Throws InputError when the centre is not on the globe or
+// PROJ fails.
+Plan projectedToUtm(const Plan& plan, int sourceEpsg);
+// The plan in metres (projectedToUtm) where its EPSG is geographic or Web Mercator, or where
+// `guessedLonLat` (no EPSG, coordinates that can only be degrees); returns the line that
+// says what was done, nothing where the plan stays as it is.
+std::optional<std::string> reprojectToMetres(Plan& plan, bool guessedLonLat);
 
 // Drawings of the plan with the path (may be empty): obstacles, rooms with names, the path
 // by segment kind and the overlap segments (path over area already swept) in blue.

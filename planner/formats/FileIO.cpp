@@ -143,7 +143,7 @@ Project loadProjectFile(const std::string& path, std::optional<int> building) {
         if (isProject)
             project = readProject(text);
         else
-            project.plan = readGeoJsonPlan(text, building);
+            project.plan = readGeoJsonPlan(text, building, &project.notes);
     } catch (const InputError& e) {
         throw InputError(path + ": " + e.what());
     }

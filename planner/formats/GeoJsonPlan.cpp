@@ -1,7 +1,9 @@
 // GeoJSON floor plans (SPEC sect. 7): a FeatureCollection of Polygon features with
 // properties.role = boundary | obstacle | room.
+#include "formats/Export.h"
 #include "formats/JsonSupport.h"
 #include "formats/PlanIO.h"
+#include "formats/WriterSupport.h"
 #include "geometry/Geometry.h"
 
 #include <algorithm>
@@ -238,9 +240,30 @@ struct PlanReader {
     }
 };
 
+// Whether every vertex lies inside the globe's ranges within kLonLatExtent degrees.
+bool looksLikeLonLat(const Plan& plan) {
+    BoundingBox box = plan.bounds();
+    for (const Ring& obstacle : plan.obstacles)
+        for (const Vec2& p : obstacle)
+            box.add(p);
+    for (const Room& room : plan.rooms)
+        for (const Vec2& p : room.outline)
+            box.add(p);
+    return box.minX >= -180.0 && box.maxX <= 180.0 && box.minY >= -90.0 && box.maxY <= 90.0 &&
+           std::max(box.width(), box.height()) < kLonLatExtent;
+}
+
+// A plan in longitude/latitude is planned in metres (the robot's sizes are metres).
+void inMetres(Plan& plan, std::vector<std::string>* notes) {
+    const bool guessed = !plan.epsg && looksLikeLonLat(plan);
+    if (std::optional<std::string> note = reprojectToMetres(plan, guessed); note && notes)
+        notes->push_back(*note);
+}
+
 } // namespace
 
-Plan readGeoJsonPlan(const std::string& text, std::optional<int> building) {
+Plan readGeoJsonPlan(const std::string& text, std::optional<int> building,
+                     std::vector<std::string>* notes) {
     const json root = formats::parseJsonDocument(text);
     if (!root.is_object())
         throw InputError("not a GeoJSON FeatureCollection (the document is " +
@@ -287,6 +310,7 @@ Plan readGeoJsonPlan(const std::string& text, std::optional<int> building) {
     }
     reader.selectBuilding(building);
     reader.plan.epsg = readEpsg(root, reader.boundaryProperties);
+    inMetres(reader.plan, notes);
     if (root.contains("name") && root["name"].is_string())
         reader.plan.name = root["name"].get<std::string>();
     return reader.plan;

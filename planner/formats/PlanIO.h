@@ -6,6 +6,7 @@
 
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace fc {
 
@@ -15,7 +16,12 @@ namespace fc {
 // the buildings of a site; a plan holds one: `building` K = 1, 2, ... (largest first) picks
 // it with the obstacles and rooms inside it, and without it such a file is refused with the
 // buildings' areas. Throws InputError (message without the file name).
-Plan readGeoJsonPlan(const std::string& text, std::optional<int> building = std::nullopt);
+// Longitude/latitude (a geographic `crs`, or none and an extent below kLonLatExtent degrees
+// inside the globe's ranges, RFC 7946's default) is reprojected to metres in its UTM zone,
+// which becomes the plan's EPSG; `notes` (when given) gets a line saying so.
+inline constexpr double kLonLatExtent = 0.05; // degrees, about 5 km: no building in metres
+Plan readGeoJsonPlan(const std::string& text, std::optional<int> building = std::nullopt,
+                     std::vector<std::string>* notes = nullptr);
 std::string writeGeoJsonPlan(const Plan& plan);
 
 // The native project file: a versioned JSON document holding the plan, robot profile,
@@ -26,7 +32,8 @@ std::string writeProject(const Project& project);
 
 // Reads a plan or project file by extension (.geojson/.json with a FeatureCollection,
 // .fcproj), throwing InputError("FILE: problem") on any failure. `building`: as in
-// readGeoJsonPlan (a project holds one building already: refused with one).
+// readGeoJsonPlan (a project holds one building already: refused with one). The project's
+// notes say what was done to read it (coordinates reprojected).
 Project loadProjectFile(const std::string& path, std::optional<int> building = std::nullopt);
 
 } // namespace fc

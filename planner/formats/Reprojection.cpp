@@ -2,8 +2,10 @@
 #include "formats/Export.h"
 #include "formats/WriterSupport.h"
 
+#include <algorithm>
 #include <cmath>
 #include <memory>
+#include <optional>
 #include <proj.h>
 
 namespace fc {
@@ -63,6 +65,90 @@ std::vector<Vec2> toWgs84(const std::vector<Vec2>& points, int epsg) {
         result.push_back({out.lp.lam, out.lp.phi});
     }
     return result;
+}
+
+bool isGeographicCrs(int epsg) {
+    std::unique_ptr<PJ_CONTEXT, ContextDeleter> context(proj_context_create());
+    proj_log_level(context.get(), PJ_LOG_NONE);
+    const std::string code = "EPSG:" + std::to_string(epsg);
+    std::unique_ptr<PJ, TransformDeleter> crs(proj_create(context.get(), code.c_str()));
+    if (!crs)
+        return false;
+    const PJ_TYPE type = proj_get_type(crs.get());
+    return type == PJ_TYPE_GEOGRAPHIC_2D_CRS || type == PJ_TYPE_GEOGRAPHIC_3D_CRS ||
+           type == PJ_TYPE_GEOGRAPHIC_CRS;
+}
+
+bool isWebMercator(int epsg) {
+    return epsg == 3857 || epsg == 3785 || epsg == 900913 || epsg == 102100 || epsg == 102113;
+}
+
+Plan projectedToUtm(const Plan& plan, int sourceEpsg) {
+    const BoundingBox box = plan.bounds();
+    const Vec2 centre{0.5 * (box.minX + box.maxX), 0.5 * (box.minY + box.maxY)};
+    const bool geographic = isGeographicCrs(sourceEpsg);
+    const Vec2 lonLat = geographic ? centre : toWgs84({centre}, sourceEpsg).front();
+    const double lon = lonLat.x, lat = lonLat.y;
+    if (!(std::abs(lon) <= 180.0 && std::abs(lat) <= 90.0))
+        throw InputError("coordinates in EPSG:" + std::to_string(sourceEpsg) +
+                         (geographic ? " are longitude/latitude, but the plan's centre ("
+                                     : ": the plan's centre (") +
+                         formats::fixedNumber(centre.x, 6) + ", " +
+                         formats::fixedNumber(centre.y, 6) + ") is not on the globe");
+    const int zone = std::clamp(static_cast<int>(std::floor((lon + 180.0) / 6.0)) + 1, 1, 60);
+    const int target = (lat >= 0.0 ? 32600 : 32700) + zone;
+    std::unique_ptr<PJ_CONTEXT, ContextDeleter> context(proj_context_create());
+    proj_log_level(context.get(), PJ_LOG_NONE);
+    const std::string source = "EPSG:" + std::to_string(sourceEpsg);
+    const std::string destination = "EPSG:" + std::to_string(target);
+    std::unique_ptr<PJ, TransformDeleter> raw(
+        proj_create_crs_to_crs(context.get(), source.c_str(), destination.c_str(), nullptr));
+    // Normalised: GeoJSON's longitude first in, easting first out.
+    std::unique_ptr<PJ, TransformDeleter> transform(
+        raw ? proj_normalize_for_visualization(context.get(), raw.get()) : nullptr);
+    if (!transform)
+        throw InputError("cannot reproject from " + source + " to " + destination + ": " +
+                         projError(context.get()));
+    auto project = [&](Ring& ring) {
+        for (Vec2& p : ring) {
+            const PJ_COORD out = proj_trans(transform.get(), PJ_FWD, proj_coord(p.x, p.y, 0, 0));
+            if (!std::isfinite(out.xy.x) || !std::isfinite(out.xy.y))
+                throw InputError("cannot reproject point (" + formats::fixedNumber(p.x, 9) + ", " +
+                                 formats::fixedNumber(p.y, 9) + ") from " + source + " to " +
+                                 destination);
+            p = {out.xy.x, out.xy.y};
+        }
+    };
+    Plan out = plan;
+    project(out.boundary);
+    for (Ring& obstacle : out.obstacles)
+        project(obstacle);
+    for (Room& room : out.rooms)
+        project(room.outline);
+    out.epsg = target;
+    return out;
+}
+
+std::optional<std::string> reprojectToMetres(Plan& plan, bool guessedLonLat) {
+    const bool geographic = plan.epsg && isGeographicCrs(*plan.epsg);
+    const bool webMercator = plan.epsg && isWebMercator(*plan.epsg);
+    if (!guessedLonLat && !geographic && !webMercator)
+        return std::nullopt;
+    const int source = guessedLonLat ? 4326 : *plan.epsg;
+    plan = projectedToUtm(plan, source);
+    const std::string utm = "metres in WGS84 / UTM zone " + std::to_string(*plan.epsg % 100) +
+                            (*plan.epsg < 32700 ? "N" : "S") +
+                            " (EPSG:" + std::to_string(*plan.epsg) + ")";
+    const std::string code = "EPSG:" + std::to_string(source);
+    if (guessedLonLat)
+        return "no crs, and coordinates that only make sense as degrees (the plan spans "
+               "less than 0.05): read as WGS84 longitude/latitude (GeoJSON's default) and "
+               "reprojected to " +
+               utm;
+    if (webMercator)
+        return "Web Mercator (" + code + "), whose metres are not the ground's, reprojected to " +
+               utm;
+    return "longitude/latitude (" + code + ") reprojected to " + utm;
 }
 
 std::string reprojectGeoJsonToWgs84(const std::string& localGeoJson, int epsg) {

@@ -2,6 +2,7 @@
 // validates the result with the planner's own validation.
 #include "importers/Import.h"
 
+#include "formats/Export.h"
 #include "formats/FileIO.h"
 #include "importers/BuildingModelImport.h"
 #include "importers/ImportSupport.h"
@@ -54,6 +55,8 @@ ImportResult importByExtension(const std::string& path, const std::string& exten
     if (extension == "geojson" || extension == "json" || extension == "fcproj") {
         ImportResult result;
         result.project = loadProjectFile(path, options.building);
+        // Longitude/latitude reprojected: said where the importers' other findings are.
+        result.warnings = result.project.notes;
         return result;
     }
 
@@ -113,6 +116,9 @@ ImportResult importPlanFile(const std::string& path, const ImportOptions& option
             plan.name = std::filesystem::path(path).stem().string();
         if (options.epsg)
             plan.epsg = options.epsg;
+        // Degrees or Web Mercator (a WKT's SRID=4326, --epsg 4326): planned in metres.
+        if (std::optional<std::string> note = reprojectToMetres(plan, false))
+            result.warnings.push_back(*note);
         plan = normalizedPlan(plan);
         try {
             validatePlan(plan, result.project.robot);

@@ -17,6 +17,9 @@ struct Project {
     std::vector<std::string> selectedRooms; // empty = all
     bool hasStart = false, hasEnd = false;
     Vec2 start, end;
+    // What reading the file did that a user should hear of (e.g. longitude/latitude
+    // reprojected to metres); not saved.
+    std::vector<std::string> notes;
 };
 
 } // namespace fc

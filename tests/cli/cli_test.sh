@@ -146,6 +146,21 @@ for name in simple.fcproj utm-offset.geojson rooms-with-hole.geojson; do
 done
 check "utm path keeps its crs" cli plan "$data/utm-offset.geojson" --out "$work/utm.geojson"
 check "utm geojson names epsg" grep -q 32632 "$work/utm.geojson"
+# A plan in longitude/latitude (RFC 7946, as GIS tools write GeoJSON) plans in metres, in its
+# UTM zone, with a note; its path is the UTM plan's.
+check "plan exported to wgs84" "$cli" export "$data/utm-offset.geojson" --format wgs84-geojson \
+  --what plan --out "$work/lonlat.geojson"
+"$cli" plan "$work/lonlat.geojson" >"$work/lonlat.out" 2>"$work/lonlat.err"
+check "lon/lat plan plans" test $? -eq 0
+check "lon/lat note names the zone" grep -q "note: .*reprojected to metres in WGS84 / UTM zone 32N (EPSG:32632)" "$work/lonlat.err"
+"$cli" plan "$data/utm-offset.geojson" >"$work/utm.out" 2>/dev/null
+check "lon/lat plan is the utm plan" python3 -c "
+import json
+a=json.loads(open('$work/lonlat.out').read().splitlines()[-1])
+b=json.loads(open('$work/utm.out').read().splitlines()[-1])
+assert abs(a['ideal']-b['ideal']) < 1e-3 and abs(a['length']-b['length']) < 0.01 * b['length'], (a, b)"
+check "lon/lat path keeps the utm crs" "$cli" plan "$work/lonlat.geojson" --out "$work/lonlat-path.geojson"
+check "lon/lat path names epsg" grep -q 32632 "$work/lonlat-path.geojson"
 expect_bad_input "missing file" "$work/does-not-exist.geojson"
 expect_bad_input "robot wider than W" "$plans/simple.geojson" --robot-diameter 2 --width 1
 expect_bad_input "negative width" "$plans/simple.geojson" --width -1

@@ -5,6 +5,7 @@
 #include "canvas/PlanScene.h"
 #include "docks/PlanningDock.h"
 #include "document/Autosaver.h"
+#include "formats/Export.h"
 #include "formats/FileIO.h"
 #include "formats/PlanIO.h"
 #include "tasks/PlanningController.h"
@@ -16,6 +17,7 @@
 #include <QListWidget>
 #include <QPushButton>
 #include <QStandardPaths>
+#include <QStatusBar>
 #include <QTemporaryDir>
 #include <QUndoStack>
 #include <nlohmann/json.hpp>
@@ -46,6 +48,7 @@ private slots:
     void exportGeoJsonParses();
     void screenshotWritesPng();
     void brokenFileKeepsDocument();
+    void longitudeLatitudePlanOpensInMetres();
     void autosaveRecoversAfterCrash();
 };
 
@@ -303,6 +306,22 @@ void EditorTest::brokenFileKeepsDocument() {
     }
     QVERIFY(!window->openFile(dir_.filePath(QStringLiteral("missing.fcproj"))));
     QCOMPARE(window->document(), before);
+}
+
+// A plan in longitude/latitude (what GIS tools write) opens in metres, in its UTM zone, and
+// the status bar says so.
+void EditorTest::longitudeLatitudePlanOpensInMetres() {
+    const fc::Plan utm = fc::loadProjectFile(FC_TEST_DATA_DIR "/utm-offset.geojson").plan;
+    const QString path = dir_.filePath(QStringLiteral("lonlat.geojson"));
+    fc::writeFileAtomically(
+        path.toStdString(),
+        fc::exportToFormat(fc::ExportFormat::Wgs84GeoJson, fc::ExportSubject::Plan, utm, {}, {}));
+    auto window = makeWindow();
+    QVERIFY2(window->openFile(path), qPrintable(window->lastError()));
+    QCOMPARE(window->document()->plan().epsg, std::optional<int>(32632));
+    QVERIFY(std::abs(window->document()->plan().boundary[0].x - utm.boundary[0].x) < 1e-3);
+    const QString message = window->statusBar()->currentMessage();
+    QVERIFY2(message.contains(QLatin1String("UTM zone 32N (EPSG:32632)")), qPrintable(message));
 }
 
 void EditorTest::autosaveRecoversAfterCrash() {

@@ -37,6 +37,35 @@ TEST(WktImport, UnitsScaleTheCoordinates) {
     EXPECT_DOUBLE_EQ(test::freeArea(importPlanFile(path, options).project.plan), 200);
 }
 
+// A WKT in degrees (PostGIS's SRID=4326) or Web Mercator, or any import given --epsg 4326, is
+// planned in metres in its UTM zone, with a warning saying so.
+TEST(WktImport, DegreesAndWebMercatorArePlannedInMetres) {
+    const auto dir = test::scratchDir("wkt-degrees");
+    // 0.0002 x 0.0001 degrees at 48.137 N, 11.575 E: 14.88 x 11.12 m in UTM zone 32N.
+    const std::string lonLat = test::writeText(
+        dir / "lonlat.wkt", "SRID=4326;POLYGON ((11.575 48.137, 11.5752 48.137, 11.5752 48.1371, "
+                            "11.575 48.1371, 11.575 48.137))");
+    const ImportResult a = importPlanFile(lonLat);
+    EXPECT_EQ(a.project.plan.epsg, 32632);
+    EXPECT_NEAR(test::freeArea(a.project.plan), 165.5, 0.5);
+    ASSERT_EQ(a.warnings.size(), 1u);
+    EXPECT_NE(a.warnings[0].find("UTM zone 32N (EPSG:32632)"), std::string::npos) << a.warnings[0];
+    const std::string bare = test::writeText(
+        dir / "bare.wkt", "POLYGON ((11.575 48.137, 11.5752 48.137, 11.5752 48.1371, 11.575 "
+                          "48.1371, 11.575 48.137))");
+    ImportOptions degrees;
+    degrees.epsg = 4326;
+    EXPECT_NEAR(test::freeArea(importPlanFile(bare, degrees).project.plan), 165.5, 0.5);
+    // The same corners in Web Mercator: its "metres" are 1.5 times the ground's here.
+    const std::string mercator = test::writeText(
+        dir / "mercator.wkt",
+        "SRID=3857;POLYGON ((1288523.106 6129677.092, 1288545.370 6129677.092, 1288545.370 "
+        "6129693.773, 1288523.106 6129693.773, 1288523.106 6129677.092))");
+    const ImportResult m = importPlanFile(mercator);
+    EXPECT_EQ(m.project.plan.epsg, 32632);
+    EXPECT_NEAR(test::freeArea(m.project.plan), 165.5, 1.0);
+}
+
 TEST(WktImport, BadTextGivesAnInputError) {
     const auto dir = test::scratchDir("wkt-bad");
     for (const std::string text :

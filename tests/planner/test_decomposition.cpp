@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <gtest/gtest.h>
+#include <map>
 
 using namespace fc;
 using fc::test::rectangle;
@@ -630,6 +631,55 @@ TEST(Decomposition, ARoomCutAlongALeaningJambStartsNoCellsThere) {
     };
     EXPECT_EQ(southStripes(0.0), 6u);
     EXPECT_EQ(southStripes(3e-4), 6u);
+}
+
+TEST(Decomposition, VerticesJitteredByMicrometresDecomposeAsDrawn) {
+    // Two 6 x 8 m rooms round a 2 x 2 m block (tests/data/utm-offset.geojson), every vertex
+    // moved by up to 60 um as a reprojection or a drawing tool's rounding does: the same
+    // cells and stripes as drawn, at the sweep angle the jittered walls give (off by 1e-4
+    // degrees). The walls leaned at it by tens of micrometres and cut slivers, a room 60 um
+    // wider than 6 m took a seventh stripe, and a centroid micrometres off the middle
+    // turned the sweep round: 10 to 17 cells for 8.
+    Plan drawn;
+    drawn.boundary = {{0, 0}, {12, 0}, {12, 8}, {0, 8}};
+    drawn.obstacles = {{{5, 3}, {5, 5}, {7, 5}, {7, 3}}};
+    drawn.rooms = {{"West", {{0, 0}, {6, 0}, {6, 8}, {0, 8}}},
+                   {"East", {{6, 0}, {12, 0}, {12, 8}, {6, 8}}}};
+    auto layout = [](const Plan& p, double angle) {
+        DecompositionOptions o;
+        o.stripeAngleDeg = angle;
+        o.robot.robotDiameter = 0.6; // the defaults: a disc the robot drives W/2 off walls
+        o.robot.coverageWidth = 1.0;
+        const Decomposition d = decompose(p, o);
+        size_t stripes = 0;
+        for (const Cell& c : d.cells)
+            stripes += c.stripes.size();
+        return std::pair{d.cells.size(), stripes};
+    };
+    const auto asDrawn = layout(drawn, 90.0);
+    std::uint64_t state = 7;
+    auto jitter = [&] { // uniform in [-60, 60] um
+        state = state * 6364136223846793005ull + 1442695040888963407ull;
+        return 120e-6 * (static_cast<double>(state >> 11) / 9007199254740992.0 - 0.5);
+    };
+    for (int trial = 0; trial < 5; ++trial) {
+        std::map<std::pair<double, double>, Vec2> moved; // a shared vertex moves once
+        auto move = [&](Ring& ring) {
+            for (Vec2& v : ring) {
+                auto [it, added] = moved.try_emplace({v.x, v.y}, v);
+                if (added)
+                    it->second = v + Vec2{jitter(), jitter()};
+                v = it->second;
+            }
+        };
+        Plan p = drawn;
+        move(p.boundary);
+        move(p.obstacles[0]);
+        for (Room& room : p.rooms)
+            move(room.outline);
+        for (const double angle : {90.0, 90.0 + 1e-4, 90.0 - 1e-4})
+            EXPECT_EQ(layout(p, angle), asDrawn) << "trial " << trial << " at " << angle;
+    }
 }
 
 TEST(Decomposition, ItsClearanceFieldKeepsTheWallsAsDrawnNotAsStraightened) {

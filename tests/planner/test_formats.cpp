@@ -1,10 +1,12 @@
 // Plan and project files: reading, writing, error messages and atomic writes.
 #include "TestPlans.h"
+#include "formats/Export.h"
 #include "formats/FileIO.h"
 #include "formats/PlanIO.h"
 #include "model/Validation.h"
 
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <gtest/gtest.h>
@@ -184,10 +186,111 @@ TEST(PlanIO, ReadsEpsgFromCrsNameVariants) {
         "properties":{"name":"EPSG:25832"}},)" +
                                    features + "}");
     EXPECT_EQ(a.epsg, 25832);
-    const Plan b = readGeoJsonPlan(R"({"type":"FeatureCollection","epsg":3857,)" + features + "}");
-    EXPECT_EQ(b.epsg, 3857);
+    const Plan b = readGeoJsonPlan(R"({"type":"FeatureCollection","epsg":2056,)" + features + "}");
+    EXPECT_EQ(b.epsg, 2056);
     const Plan c = readGeoJsonPlan(R"({"type":"FeatureCollection",)" + features + "}");
     EXPECT_FALSE(c.epsg.has_value());
+}
+
+// The plan as RFC 7946 GeoJSON: longitude/latitude, with `crs` as given ("" for none).
+std::string lonLatGeoJson(const Plan& plan, int epsg, const std::string& crs) {
+    auto ring = [&](const Ring& r) {
+        nlohmann::json coordinates = nlohmann::json::array();
+        for (const Vec2& p : toWgs84(r, epsg))
+            coordinates.push_back({p.x, p.y});
+        coordinates.push_back(coordinates.front());
+        return nlohmann::json::array({coordinates});
+    };
+    nlohmann::json root{{"type", "FeatureCollection"}, {"features", nlohmann::json::array()}};
+    if (!crs.empty())
+        root["crs"] = {{"type", "name"}, {"properties", {{"name", crs}}}};
+    auto add = [&](const std::string& role, const Ring& r, const std::string& name) {
+        nlohmann::json properties{{"role", role}};
+        if (!name.empty())
+            properties["name"] = name;
+        root["features"].push_back({{"type", "Feature"},
+                                    {"properties", properties},
+                                    {"geometry", {{"type", "Polygon"}, {"coordinates", ring(r)}}}});
+    };
+    add("boundary", plan.boundary, "");
+    for (const Ring& obstacle : plan.obstacles)
+        add("obstacle", obstacle, "");
+    for (const Room& room : plan.rooms)
+        add("room", room.outline, room.name);
+    return root.dump();
+}
+
+// A plan drawn in longitude/latitude (what GIS tools write as GeoJSON by default) is planned
+// in metres: reprojected to its UTM zone, which becomes its EPSG, with a note.
+TEST(PlanIO, LongitudeLatitudeAndWebMercatorAreReprojectedToMetres) {
+    Plan utm = loadProjectFile(kDataDir + "/utm-offset.geojson").plan; // EPSG:32632, 12 x 8 m
+    utm.rooms = {Room{"Hall", utm.boundary}};
+    for (const std::string& crs :
+         {std::string(), std::string("urn:ogc:def:crs:OGC:1.3:CRS84"), std::string("EPSG:4326")}) {
+        std::vector<std::string> notes;
+        const Plan read = readGeoJsonPlan(lonLatGeoJson(utm, 32632, crs), std::nullopt, &notes);
+        ASSERT_EQ(read.epsg, 32632) << crs;
+        ASSERT_EQ(notes.size(), 1u) << crs;
+        EXPECT_NE(notes[0].find("EPSG:32632"), std::string::npos) << notes[0];
+        ASSERT_EQ(read.boundary.size(), utm.boundary.size());
+        for (size_t i = 0; i < utm.boundary.size(); ++i)
+            EXPECT_LT(distance(read.boundary[i], utm.boundary[i]), 1e-3) << crs << " vertex " << i;
+        ASSERT_EQ(read.obstacles.size(), utm.obstacles.size());
+        ASSERT_EQ(read.rooms.size(), 1u);
+        EXPECT_NEAR(ringArea(read.rooms[0].outline), ringArea(utm.boundary), 1e-3);
+    }
+    // South of the equator, zone 21S (Buenos Aires); a geographic crs other than WGS84.
+    Plan south = utm;
+    for (Ring* r : {&south.boundary, &south.rooms[0].outline})
+        for (Vec2& p : *r)
+            p = p - utm.boundary[0] + Vec2{373000, 6171000}; // EPSG:32721
+    for (Ring& obstacle : south.obstacles)
+        for (Vec2& p : obstacle)
+            p = p - utm.boundary[0] + Vec2{373000, 6171000};
+    EXPECT_EQ(readGeoJsonPlan(lonLatGeoJson(south, 32721, "")).epsg, 32721);
+    EXPECT_EQ(readGeoJsonPlan(lonLatGeoJson(utm, 32632, "EPSG:4258")).epsg, 32632); // ETRS89
+    // Web Mercator (what web maps draw in): its "metres" are 1/cos(latitude) of the ground's,
+    // 1.41 at 45 degrees north; planned in true metres.
+    Plan mercator = utm;
+    auto toMercator = [&](Ring& ring) {
+        const std::vector<Vec2> lonLat = toWgs84(ring, 32632);
+        for (size_t i = 0; i < ring.size(); ++i) {
+            const double lambda = lonLat[i].x * M_PI / 180, phi = lonLat[i].y * M_PI / 180;
+            ring[i] = {6378137.0 * lambda, 6378137.0 * std::log(std::tan(M_PI / 4 + phi / 2))};
+        }
+    };
+    toMercator(mercator.boundary);
+    for (Ring& obstacle : mercator.obstacles)
+        toMercator(obstacle);
+    for (Room& room : mercator.rooms)
+        toMercator(room.outline);
+    mercator.epsg = 3857;
+    EXPECT_NEAR(ringArea(mercator.boundary) / ringArea(utm.boundary), 2.0, 0.02);
+    std::vector<std::string> mercatorNotes;
+    const Plan fromMercator =
+        readGeoJsonPlan(writeGeoJsonPlan(mercator), std::nullopt, &mercatorNotes);
+    EXPECT_EQ(fromMercator.epsg, 32632);
+    for (size_t i = 0; i < utm.boundary.size(); ++i)
+        EXPECT_LT(distance(fromMercator.boundary[i], utm.boundary[i]), 1e-3) << "vertex " << i;
+    ASSERT_EQ(mercatorNotes.size(), 1u);
+    EXPECT_NE(mercatorNotes[0].find("Web Mercator (EPSG:3857)"), std::string::npos);
+    // Plans in metres are left alone, with no note.
+    std::vector<std::string> notes;
+    const Plan metres = readGeoJsonPlan(readFile(kDataDir + "/utm-offset.geojson"), {}, &notes);
+    EXPECT_EQ(metres.boundary, loadProjectFile(kDataDir + "/utm-offset.geojson").plan.boundary);
+    const Plan office = readGeoJsonPlan(readFile(kPlansDir + "/office.geojson"), {}, &notes);
+    EXPECT_FALSE(office.epsg.has_value());
+    EXPECT_TRUE(notes.empty());
+    // A geographic crs whose coordinates are not on the globe: one line saying so.
+    try {
+        readGeoJsonPlan(R"({"type":"FeatureCollection","crs":{"type":"name","properties":
+            {"name":"EPSG:4326"}},"features":[{"type":"Feature","properties":{"role":"boundary"},
+            "geometry":{"type":"Polygon","coordinates":[[[500000,5000000],[500012,5000000],
+            [500012,5000008],[500000,5000000]]]}}]})");
+        ADD_FAILURE() << "metres labelled EPSG:4326 were read";
+    } catch (const InputError& e) {
+        EXPECT_NE(std::string(e.what()).find("not on the globe"), std::string::npos) << e.what();
+    }
 }
 
 TEST(PlanIO, ErrorFixturesNameTheFileAndTheProblem) {

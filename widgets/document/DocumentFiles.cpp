@@ -42,10 +42,13 @@ Project loadResource(const QString& path) {
 
 } // namespace
 
-std::unique_ptr<Document> loadDocument(const QString& path, QString* error) {
+std::unique_ptr<Document> loadDocument(const QString& path, QString* error, QStringList* notes) {
     try {
         Project project = path.startsWith(QLatin1Char(':')) ? loadResource(path)
                                                             : loadProjectFile(path.toStdString());
+        if (notes)
+            for (const std::string& note : project.notes)
+                notes->append(fromStd(note));
         try {
             // A plan the planner refuses still opens, read-only with its problems listed
             // (Document::needsRepair), so that it can be repaired rather than lost.

@@ -2,6 +2,7 @@
 #pragma once
 
 #include <QString>
+#include <QStringList>
 #include <memory>
 
 namespace fc::ui {
@@ -14,8 +15,10 @@ extern const char* const kSamplePlanPath;
 // Reads a .fcproj project or a .geojson/.json plan (also from Qt resources, ":/..."),
 // validates the robot profile, and returns a new document (a plan with problems opens
 // needing repair, see Document::needsRepair). On failure returns null
-// and sets *error to a one-line message naming the file.
-std::unique_ptr<Document> loadDocument(const QString& path, QString* error);
+// and sets *error to a one-line message naming the file. *notes (when given) gets what
+// reading did that the user should hear of (longitude/latitude reprojected to metres).
+std::unique_ptr<Document> loadDocument(const QString& path, QString* error,
+                                       QStringList* notes = nullptr);
 
 // Writes the project atomically (temporary file + rename) as .fcproj, then marks the
 // document saved under that name. Returns false and sets *error on failure.

@@ -392,7 +392,8 @@ void MainWindow::newDocument() {
 
 bool MainWindow::openFile(const QString& path) {
     QString error;
-    std::unique_ptr<Document> document = loadDocument(path, &error);
+    QStringList notes;
+    std::unique_ptr<Document> document = loadDocument(path, &error, &notes);
     if (!document) {
         showError(error);
         return false;
@@ -404,7 +405,11 @@ bool MainWindow::openFile(const QString& path) {
         pendingModel_ = modelFileFor(path);
     if (!path.startsWith(QLatin1Char(':')))
         addRecentFile(path);
-    statusBar()->showMessage(tr("Opened %1").arg(path), 5000);
+    if (notes.isEmpty())
+        statusBar()->showMessage(tr("Opened %1").arg(path), 5000);
+    else // e.g. longitude/latitude reprojected: the plan is not where the file had it
+        statusBar()->showMessage(tr("Opened %1: %2").arg(path, notes.join(QStringLiteral("; "))),
+                                 20000);
     return true;
 }
 
