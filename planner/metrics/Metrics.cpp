@@ -330,7 +330,6 @@ Metrics computeMetrics(const MetricsInput& input) {
         sweepFrameSegments(input.path.points, decomposition->frame);
     SweptRaster swept(grid, width);
     swept.sweep(segments);
-    const PathWalk walk = walkPath(segments, grid, swept.firstArc(), width);
 
     double requiredPixels = 0.0, sweepablePixels = 0.0, coveredPixels = 0.0; // counts
     const std::vector<float>& firstArc = swept.firstArc();
@@ -368,6 +367,9 @@ Metrics computeMetrics(const MetricsInput& input) {
     metrics.ideal = metrics.sweepableArea / width;
     metrics.extra = metrics.length - metrics.ideal;
 
+    if (!input.overlaps)
+        return metrics;
+    const PathWalk walk = walkPath(segments, grid, swept.firstArc(), width);
     for (const Segment& piece : mergeCollinear(walk.overlaps, 1e-6 * resolution))
         metrics.overlaps.push_back(
             {decomposition->frame.toWorld(piece.a), decomposition->frame.toWorld(piece.b)});

@@ -45,6 +45,9 @@ struct MetricsInput {
     CoveragePath path;               // world frame
     // Raster cell size in metres; 0 picks W/10, coarsened to keep the raster bounded.
     double resolution = 0.0;
+    // False: Metrics::overlaps is left empty. They are only drawn, and walking the path for
+    // them took a sixth of a big map's planning when every candidate path was measured.
+    bool overlaps = true;
 };
 
 Metrics computeMetrics(const MetricsInput& input);

@@ -1,6 +1,7 @@
 #include "pipeline/PerRoomSweep.h"
 
 #include "graph/ComponentBridges.h"
+#include "pipeline/LayoutOffers.h"
 #include "pipeline/PathChoice.h"
 #include "pipeline/PreparedPlans.h"
 
@@ -200,7 +201,7 @@ PlanResult planWithRoomAngles(const PlanRequest& request,
             addAngle(sweepAngleOfRoom(angles, room));
     }
     if (distinct.size() == 1)
-        return planAtAngle(request, distinct.front(), control, &prepared);
+        return detail::planOneAngle(request, distinct.front(), control, &prepared);
     const auto t0 = std::chrono::steady_clock::now();
 
     // Each group decomposes the whole floor at its angle (other rooms' cells carry its

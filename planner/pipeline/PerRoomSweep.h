@@ -43,6 +43,7 @@ PlanResult planWithRoomAngles(const PlanRequest& request,
 // The per-room plan (SPEC sect. 1): the family plan, and on small floors (rooms, obstacles) the
 // rooms' own angles and turned groups, keeping the best. `prepared` (optional): of request.plan and
 // request.robot, shared with other requests (the editor's live replanning).
+// Both are steps of planCoverage and leave Metrics::overlaps empty (withOverlaps fills them).
 PlanResult planPerRoom(const PlanRequest& request, const SolveControl& control = {},
                        const PreparedPlans* prepared = nullptr);
 

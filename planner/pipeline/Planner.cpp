@@ -468,7 +468,17 @@ Metrics measurePath(const PreparedPlan& prepared, const std::vector<std::string>
         if (it != dec.roomNames.end())
             in.requiredRooms[static_cast<size_t>(it - dec.roomNames.begin())] = 1;
     }
+    in.overlaps = false;
     return computeMetrics(in);
+}
+
+void withOverlaps(PlanResult& result) {
+    // The overlap pieces depend on the path and the raster only, not on the rooms required.
+    MetricsInput in;
+    in.decomposition = &result.prepared.decomposition;
+    in.robot = result.prepared.robot;
+    in.path = result.path;
+    result.metrics.overlaps = computeMetrics(in).overlaps;
 }
 
 namespace detail {
@@ -624,7 +634,9 @@ std::vector<std::string> coverageLossWarnings(const Metrics& metrics) {
 PlanResult planAtAngle(const PlanRequest& request, double angleDeg, const SolveControl& control,
                        const PreparedPlans* prepared) {
     request.robot.validate();
-    return detail::planOneAngle(request, angleDeg, control, prepared);
+    PlanResult result = detail::planOneAngle(request, angleDeg, control, prepared);
+    withOverlaps(result);
+    return result;
 }
 
 namespace {
@@ -786,6 +798,7 @@ PlanResult planCoverage(const PlanRequest& request, const SolveControl& control,
         plans.insert(plans.begin(), std::move(result)); // the first of equals
         result = std::move(plans[choosePlan(plans)]);
     }
+    withOverlaps(result);
     result.metrics.seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     return result;
@@ -813,6 +826,7 @@ PlanResult draftCoverage(const PlanRequest& request, const PreparedPlans& prepar
                                  request.sweep.automatic ? candidateAngles(request.plan).front()
                                                          : request.sweep.angleDeg,
                                  control, &prepared);
+    withOverlaps(result);
     result.metrics.seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     return result;

@@ -175,9 +175,14 @@ class PreparedPlans;
 PlanResult planAtAngle(const PlanRequest& request, double angleDeg,
                        const SolveControl& control = {}, const PreparedPlans* prepared = nullptr);
 
-// The metrics of a path over the required rooms (by decomposition room name; empty: all).
+// The metrics of a path over the required rooms (by decomposition room name; empty: all),
+// for ranking candidate paths: without Metrics::overlaps (see withOverlaps).
 Metrics measurePath(const PreparedPlan& prepared, const std::vector<std::string>& requiredRooms,
                     const CoveragePath& path);
+
+// Fills result.metrics.overlaps for the path chosen. Every plan the planner hands out has
+// them (planCoverage, planAtAngle, draftCoverage).
+void withOverlaps(PlanResult& result);
 
 // Wall touch-ups (path/CoverageRepair.h) for the floor `metrics` found unswept, within this
 // many coverage widths of the path; path and metrics are replaced when coverage improves.

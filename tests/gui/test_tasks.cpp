@@ -235,7 +235,8 @@ void TasksTest::compareCancelsWhenTheDialogCloses() {
     QVERIFY2(clock.elapsed() < 500, qPrintable(QString::number(clock.elapsed())));
     QVERIFY(ended.wait(2000) || !ended.isEmpty());
     QTRY_VERIFY(!dialog); // deleted on close
-    QTRY_VERIFY(window->taskList()->isHidden());
+    // The row goes when the worker has stopped; on two busy cores that took 6.3 s once.
+    QTRY_VERIFY_WITH_TIMEOUT(window->taskList()->isHidden(), 30000);
     window->document()->setSolver(QStringLiteral("greedy"));
     QVERIFY(window->planningController()->planAndWait());
 }
