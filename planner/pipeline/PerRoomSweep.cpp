@@ -583,6 +583,8 @@ PlanResult planPerRoom(const PlanRequest& request, const SolveControl& control,
         if (!isFamily && !hopeless)
             finalists.push_back(screened[i].angles);
     }
+    if (request.singleFinalist && !screened.empty()) // beside a wall loop on a large floor
+        finalists = {screened.front().angles};
     SolveControl quiet;
     quiet.cancelled = control.cancelled;
     std::vector<std::future<PlanResult>> plans;

@@ -768,7 +768,13 @@ PlanResult planCoverage(const PlanRequest& request, const SolveControl& control,
     else if (prepared->stripeLattice() != firstLayoutFor(request))
         prepared = &own.emplace(request.plan, request.robot, request.transitionCells,
                                 prepared->floorCache(), firstLayoutFor(request));
-    PlanResult result = planWithoutTouchUps(request, control, prepared);
+    PlanRequest first = request;
+    double freeArea = ringArea(request.plan.boundary);
+    for (const Ring& obstacle : request.plan.obstacles)
+        freeArea -= ringArea(obstacle);
+    const double width = request.robot.coverageWidth;
+    first.singleFinalist = loop.valid() && freeArea > kSingleFinalistMinArea * width * width;
+    PlanResult result = planWithoutTouchUps(first, control, prepared);
     // The candidates of a search over angles were compared with their touch-ups (a plan
     // that leaves wedges along slanted walls may be the best once they are swept); a plan of
     // one angle gets them here.

@@ -6,6 +6,7 @@
 #include "pipeline/Planner.h"
 #include "pipeline/PreparedPlans.h"
 
+#include <algorithm>
 #include <cmath>
 #include <future>
 #include <gtest/gtest.h>
@@ -281,6 +282,31 @@ TEST(PreparedPlans, AnEndBesideASweptSliverJoinsASweptCell) {
         ++tried;
     }
     EXPECT_GT(tried, 0);
+}
+
+// planCoverage's first plan beside a wall loop on a large floor (singleFinalist) plans only
+// the per-room search's best screened candidate: one finalist instead of the family and the
+// two best, and at most kTimeTie faster than what the whole search keeps (the search's
+// finalists include that candidate).
+TEST(PerRoomSearch, ASingleFinalistIsTheBestScreenedCandidateAlone) {
+    PlanRequest request;
+    request.plan = samplePlan("office");
+    const PreparedPlans plans(request.plan, request.robot, true);
+    std::vector<double> fractions;
+    SolveControl control;
+    control.progress = [&fractions](double fraction) { fractions.push_back(fraction); };
+    auto finalistSteps = [&fractions] { // a report as each finalist after the first is taken
+        return std::count_if(fractions.begin(), fractions.end(),
+                             [](double f) { return f > 0.5 && f < 1.0; });
+    };
+    const PlanResult all = planPerRoom(request, control, &plans);
+    EXPECT_GT(finalistSteps(), 0);
+    fractions.clear();
+    request.singleFinalist = true;
+    const PlanResult one = planPerRoom(request, control, &plans);
+    EXPECT_EQ(finalistSteps(), 0);
+    EXPECT_TRUE(completePlan(one.metrics));
+    EXPECT_LE(all.metrics.time, one.metrics.time * (1 + kTimeTie) + 1e-9);
 }
 
 } // namespace
