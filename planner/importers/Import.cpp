@@ -68,13 +68,6 @@ ImportResult importByExtension(const std::string& path, const std::string& exten
 
 } // namespace
 
-double freeAreaOf(const Plan& plan) {
-    double area = ringArea(plan.boundary);
-    for (const Ring& obstacle : plan.obstacles)
-        area -= ringArea(obstacle);
-    return area;
-}
-
 std::vector<std::string> importableExtensions() {
     std::vector<std::string> extensions{"dxf", "yaml", "yml", "wkt", "geojson", "json", "fcproj"};
     for (const std::string& model : buildingModelExtensions())

@@ -126,8 +126,6 @@ struct ImportResult {
 // Throws InputError("FILE: problem") for unreadable, corrupt, hostile or empty sources.
 ImportResult importPlanFile(const std::string& path, const ImportOptions& options = {});
 ImportPreview previewImport(const std::string& path);
-// Boundary area minus the obstacles' (which do not overlap in a valid plan), m^2.
-double freeAreaOf(const Plan& plan);
 
 // A plan that validatePlan refuses, made valid with GEOS (through GDAL's OGR): rings that
 // cross or touch themselves are split at the crossings (MakeValid), the free space is the

@@ -5,6 +5,13 @@
 
 namespace fc {
 
+double freeAreaOf(const Plan& plan) {
+    double area = ringArea(plan.boundary);
+    for (const Ring& obstacle : plan.obstacles)
+        area -= ringArea(obstacle);
+    return area;
+}
+
 void RobotProfile::validate() const {
     auto finitePositive = [](double v) { return std::isfinite(v) && v > 0.0; };
     std::ostringstream msg;

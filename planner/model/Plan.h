@@ -33,6 +33,9 @@ struct Plan {
     BoundingBox bounds() const { return boundsOf(boundary); }
 };
 
+// Boundary area minus the obstacles' (which do not overlap in a valid plan), m^2.
+double freeAreaOf(const Plan& plan);
+
 struct RobotProfile {
     double robotDiameter = 0.6;    // L, m
     double cleaningDiameter = 1.0; // D, m

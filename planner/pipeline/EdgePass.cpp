@@ -197,9 +197,8 @@ size_t loopSplit(const WallLoop& walls, Vec2 end, double width) {
 bool everyRoomAsked(const PlanRequest& request) {
     if (request.rooms.empty())
         return true;
-    double rooms = 0.0, floor = std::abs(signedArea(request.plan.boundary));
-    for (const Ring& obstacle : request.plan.obstacles)
-        floor -= std::abs(signedArea(obstacle));
+    const double floor = freeAreaOf(request.plan);
+    double rooms = 0.0;
     for (const Room& room : request.plan.rooms) {
         if (std::find(request.rooms.begin(), request.rooms.end(), room.name) == request.rooms.end())
             return false;

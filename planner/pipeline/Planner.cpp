@@ -769,11 +769,9 @@ PlanResult planCoverage(const PlanRequest& request, const SolveControl& control,
         prepared = &own.emplace(request.plan, request.robot, request.transitionCells,
                                 prepared->floorCache(), firstLayoutFor(request));
     PlanRequest first = request;
-    double freeArea = ringArea(request.plan.boundary);
-    for (const Ring& obstacle : request.plan.obstacles)
-        freeArea -= ringArea(obstacle);
     const double width = request.robot.coverageWidth;
-    first.singleFinalist = loop.valid() && freeArea > kSingleFinalistMinArea * width * width;
+    first.singleFinalist =
+        loop.valid() && freeAreaOf(request.plan) > kSingleFinalistMinArea * width * width;
     PlanResult result = planWithoutTouchUps(first, control, prepared);
     // The candidates of a search over angles were compared with their touch-ups (a plan
     // that leaves wedges along slanted walls may be the best once they are swept); a plan of
