@@ -1,13 +1,15 @@
 // Occupancy maps (issue 15): noisy maps rendered from the sample plans (seeded, ground truth
 // known) and real laser maps (tests/data/real-maps, from Debian's mrpt-common), imported
 // with the default cleaning and room segmentation, then planned with the default request;
-// the largest real map once more without cleaning, and four copies of it joined into one.
+// the largest real map once more without cleaning, and four copies of it joined into one;
+// each real map also at half and twice its cell size and turned by 30 degrees.
 // Prints a Markdown table per kind (docs/formats.md holds a copy).
 //   floorcover-map-bench [--seeds N] [--real-only] [--noisy-only] [--angles A,B,...]
 // (--angles: also noisy maps of office, ward and room-obstacle drawn at those angles)
 #include "NoisyMap.h"
 #include "PathChecker.h"
 #include "PlanGenerator.h"
+#include "ResampledMap.h"
 #include "formats/FileIO.h"
 #include "formats/PlanIO.h"
 #include "importers/Import.h"
@@ -15,6 +17,7 @@
 #include "pipeline/Planner.h"
 
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -22,6 +25,8 @@
 #include <fstream>
 #include <numeric>
 #include <string>
+#include <utility>
+#include <vector>
 
 using namespace fc;
 
@@ -160,10 +165,21 @@ void realRows() {
     // planner's speed on what an importer may hand it; and four copies of it joined into one
     // building of 4,650 m^2, for how import and planning grow with the floor.
     const auto dir = std::filesystem::temp_directory_path() / "fc-map-bench";
-    for (const RealMap& map : {real("uwb-localization-demo", true), real("localization-demo", true),
-                               real("telecom-faculty", true), real("telecom-faculty", false),
-                               RealMap{"telecom-faculty ×4, joined",
-                                       joinedCopies("telecom-faculty", 800, 960, dir), true}}) {
+    std::vector<RealMap> maps{real("uwb-localization-demo", true), real("localization-demo", true),
+                              real("telecom-faculty", true), real("telecom-faculty", false),
+                              RealMap{"telecom-faculty ×4, joined",
+                                      joinedCopies("telecom-faculty", 800, 960, dir), true}};
+    // The same buildings at half and twice the cell size and turned by 30 degrees: the
+    // cleaning's defaults are meant for 2-10 cm maps drawn at any angle.
+    for (const char* name : {"uwb-localization-demo", "localization-demo", "telecom-faculty"})
+        for (auto [how, label] : {std::pair{test::Resample::Finer, " (cells halved)"},
+                                  {test::Resample::Coarser, " (cells doubled)"},
+                                  {test::Resample::Turned30, " (turned 30°)"}})
+            maps.push_back({name + std::string(label),
+                            test::resampledMap(std::string(FC_REAL_MAPS_DIR) + "/" + name + ".yaml",
+                                               how, dir.string()),
+                            true});
+    for (const RealMap& map : maps) {
         const std::string& yaml = map.yaml;
         const std::string& name = map.name;
         ImportOptions options;

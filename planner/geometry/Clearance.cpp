@@ -15,6 +15,11 @@ constexpr std::size_t kMaxRememberedSearches = 200'000; // tens of MB at most
 // 0.3 m longer of 1,747 with the grid in the others), an uncleaned one's thousands.
 constexpr std::size_t kCrowdedWindow = 1'000;
 constexpr std::size_t kCrowdedWindowChecks = 50'000; // per crowded window but the last
+// Gaps across a wall corner up to this many radii wide get a waypoint in their middle; the
+// corner points keep 1.01 r from walls at 1.02 r from their corner, so none fits below ~2.03 r.
+constexpr double kGapMiddleMaxWidth = 2.05;
+// Walls within this cosine of the corner's free-side bisector (78 degrees) count as across.
+constexpr double kGapMiddleCosine = 0.2;
 
 // The y-interval where the vertical line x meets the capsule of radius r around ab.
 bool capsuleSpan(Vec2 a, Vec2 b, double x, double r, double& lo, double& hi) {
@@ -148,7 +153,53 @@ void ClearanceField::buildCornerPoints() const {
                 if (walls_.pointKeepsDistance(q, radius_ * 1.01))
                     cornerPoints_.push_back(q);
             }
+            addGapMiddle(p, bis);
         }
+    }
+}
+
+// A gap across from corner p barely wider than the robot (a traced doorway of 2r to 2.05r):
+// the points above keep 1.01 r from every wall and none fits in it, nor a node of the open
+// regions' grid, so no search found a way through that the robot may drive. Its middle is
+// a waypoint of its own, kept where it is clear.
+void ClearanceField::addGapMiddle(Vec2 p, Vec2 away) const {
+    const double reach = kGapMiddleMaxWidth * radius_;
+    BoundingBox box;
+    box.add({p.x - reach, p.y - reach});
+    box.add({p.x + reach, p.y + reach});
+    std::vector<int> hits;
+    walls_.query(box, hits);
+    double nearest = INFINITY;
+    Vec2 across{};
+    for (int id : hits) {
+        const Segment& s = walls_.segments()[static_cast<size_t>(id)];
+        if (s.a == p || s.b == p)
+            continue;
+        const Vec2 d = s.b - s.a;
+        const double l2 = dot(d, d);
+        const double t = l2 > 0 ? std::clamp(dot(p - s.a, d) / l2, 0.0, 1.0) : 0.0;
+        const Vec2 w = s.a + d * t;
+        const double gap = distance(p, w);
+        // Only walls across the free side: the corner's own ragged wall lies behind it.
+        if (gap < nearest && dot(w - p, away) > kGapMiddleCosine * gap) {
+            nearest = gap;
+            across = w;
+        }
+    }
+    if (nearest < 2 * (radius_ - acceptance_) || nearest > reach)
+        return;
+    const Vec2 middle = (p + across) * 0.5;
+    if (!walls_.pointKeepsDistance(middle, radius_ - 0.5 * acceptance_))
+        return;
+    cornerPoints_.push_back(middle);
+    // And on the way in and out, along the gap: a gap in a channel (traced walls a robot
+    // width apart for a metre) is seen from neither end's corners.
+    const Vec2 across1 = (across - p) * (1 / nearest);
+    const Vec2 along{-across1.y, across1.x};
+    for (double step : {-2.0, -1.0, 1.0, 2.0}) {
+        const Vec2 q = middle + along * (step * radius_);
+        if (walls_.pointKeepsDistance(q, radius_ - 0.5 * acceptance_))
+            cornerPoints_.push_back(q);
     }
 }
 

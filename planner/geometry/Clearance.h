@@ -73,6 +73,7 @@ private:
     double acceptance_;
     const std::vector<Vec2>& cornerPoints() const; // built on first use
     void buildCornerPoints() const;
+    void addGapMiddle(Vec2 corner, Vec2 away) const; // part of buildCornerPoints
     std::vector<Ring> rings_;
     mutable std::once_flag cornersBuilt_;
     mutable std::vector<Vec2> cornerPoints_; // clear points hugging wall corners

@@ -73,30 +73,6 @@ void append(CoveragePath& path, const CoveragePath& more) {
     }
 }
 
-// Pieces end where the wall turns: a straight wall that a CAD export or an editor split into
-// short segments is one piece (the ward with every wall cut every 0.2 m drafted a loop for
-// nothing, 0.7 s of planning became 1.8 s).
-double averageWallPiece(const Plan& plan) {
-    constexpr double kStraight = 1e-3; // sine of the turn below which a corner is no corner
-    double length = 0.0;
-    size_t pieces = 0;
-    auto add = [&](const Ring& ring) {
-        const size_t n = ring.size();
-        for (size_t i = 0; i < n; ++i) {
-            const Vec2 in = ring[i] - ring[(i + n - 1) % n], out = ring[(i + 1) % n] - ring[i];
-            length += norm(out);
-            const double lengths = norm(in) * norm(out);
-            if (lengths > 0.0 &&
-                (dot(in, out) < 0.0 || std::abs(cross(in, out)) > kStraight * lengths))
-                ++pieces;
-        }
-    };
-    add(plan.boundary);
-    for (const Ring& obstacle : plan.obstacles)
-        add(obstacle);
-    return pieces ? length / static_cast<double>(pieces) : 0.0;
-}
-
 void throwIfStopped(const SolveControl& control) {
     if (control.cancelled && control.cancelled())
         throw SolverError("wall loop: cancelled");
@@ -193,6 +169,27 @@ size_t loopSplit(const WallLoop& walls, Vec2 end, double width) {
 }
 
 } // namespace
+
+double averageWallPiece(const Plan& plan) {
+    constexpr double kStraight = 1e-3; // sine of the turn below which a corner is no corner
+    double length = 0.0;
+    size_t pieces = 0;
+    auto add = [&](const Ring& ring) {
+        const size_t n = ring.size();
+        for (size_t i = 0; i < n; ++i) {
+            const Vec2 in = ring[i] - ring[(i + n - 1) % n], out = ring[(i + 1) % n] - ring[i];
+            length += norm(out);
+            const double lengths = norm(in) * norm(out);
+            if (lengths > 0.0 &&
+                (dot(in, out) < 0.0 || std::abs(cross(in, out)) > kStraight * lengths))
+                ++pieces;
+        }
+    };
+    add(plan.boundary);
+    for (const Ring& obstacle : plan.obstacles)
+        add(obstacle);
+    return pieces ? length / static_cast<double>(pieces) : 0.0;
+}
 
 bool everyRoomAsked(const PlanRequest& request) {
     if (request.rooms.empty())

@@ -262,3 +262,30 @@ TEST(Geometry, RememberedSearchesAnswerOnlyTheSameQuestion) {
         EXPECT_EQ(field.findPath(b, a).size(), path.size()) << round;
     }
 }
+
+// Two rooms joined by a channel a hair wider than the robot (2.01 r, a traced doorway), at
+// an angle: the robot may drive it, so a path is found through it and keeps clear of every
+// wall. The corner points keep 1.01 r from walls and none fits in the channel; its middle
+// and the points along it are waypoints of their own.
+TEST(Geometry, FindPathThroughAGapBarelyWiderThanTheRobot) {
+    const double r = 0.3;
+    for (double width : {2.01 * r, 2.04 * r}) {
+        const double h = 0.5 * width;
+        const Ring flat{{0, 0},    {5, 0},   {5, 2.5 - h},   {6.2, 2.5 - h}, {6.2, 0}, {11.2, 0},
+                        {11.2, 5}, {6.2, 5}, {6.2, 2.5 + h}, {5, 2.5 + h},   {5, 5},   {0, 5}};
+        const Frame frame({0, 0}, 90.0 + 23.0); // flat's x axis turned by 23 degrees
+        Ring ring;
+        for (const Vec2& p : flat)
+            ring.push_back(frame.toWorld(p));
+        const ClearanceField field({ring}, r);
+        // From a corner of one room to the far corner of the other: the path turns at
+        // both ends of the channel.
+        const Vec2 a = frame.toWorld({1.0, 4.5}), b = frame.toWorld({10.2, 0.5});
+        const Polyline path = field.findPath(a, b);
+        ASSERT_GE(path.size(), 4u) << width;
+        EXPECT_TRUE(keepsClearOfEveryWall(field, path)) << width;
+        const double shortest = distance({1.0, 4.5}, {5.0, 2.5 + h - r}) + 1.2 +
+                                distance({6.2, 2.5 - h + r}, {10.2, 0.5});
+        EXPECT_LT(polylineLength(path), shortest + 0.3) << width;
+    }
+}
