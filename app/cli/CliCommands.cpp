@@ -6,11 +6,13 @@
 #include "formats/PathIO.h"
 #include "formats/PlanIO.h"
 #include "model/RobotPlacement.h"
+#include "model/Validation.h"
 #include "pipeline/Comparison.h"
 #include "pipeline/Planner.h"
 
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <iostream>
 #include <sstream>
 
@@ -193,6 +195,12 @@ void placeEndpoint(const std::string& path, const PlanRequest& request, std::opt
 
 } // namespace
 
+void rethrowInFile(const std::string& path, const InputError& e) {
+    if (dynamic_cast<const RepairablePlanError*>(&e))
+        throw RepairablePlanError(path + ": " + e.what());
+    throw InputError(path + ": " + e.what());
+}
+
 PlanResult planFromArguments(const std::string& path, const Project& project, const Arguments& args,
                              PlanRequest& request) {
     PlanResult result;
@@ -202,7 +210,7 @@ PlanResult planFromArguments(const std::string& path, const Project& project, co
         placeEndpoint(path, request, request.end, "end");
         result = planCoverage(request);
     } catch (const InputError& e) {
-        throw InputError(path + ": " + e.what());
+        rethrowInFile(path, e);
     } catch (const SolverError& e) {
         throw InputError(path + ": " + e.what());
     }
@@ -279,7 +287,7 @@ int commandGraph(const Arguments& args) {
                   << ",\"edges\":" << prepared.graph.edges.size()
                   << ",\"cells\":" << prepared.graph.cells.size() << "}" << std::endl;
     } catch (const InputError& e) {
-        throw InputError(path + ": " + e.what());
+        rethrowInFile(path, e);
     }
     return 0;
 }
@@ -324,7 +332,7 @@ int commandCompare(const Arguments& args) {
     try {
         request = requestFrom(project, args);
     } catch (const InputError& e) {
-        throw InputError(path + ": " + e.what());
+        rethrowInFile(path, e);
     }
     if (!json)
         std::printf("%-20s %10s %10s %10s %6s %9s %10s %11s %9s\n", "solver", "length_m", "ideal_m",
@@ -351,7 +359,7 @@ int commandCompare(const Arguments& args) {
             else
                 std::printf("%-20s refused: %s\n", solver.c_str(), e.what());
         } catch (const InputError& e) {
-            throw InputError(path + ": " + e.what());
+            rethrowInFile(path, e);
         }
     }
     printRatios(baselineRatios(answered), json);
@@ -391,6 +399,17 @@ int run(int argc, char** argv) {
             return commandExport(args);
         throw InputError("unknown command \"" + command +
                          "\" (plan, graph, compare, train, tile, import, export)");
+    } catch (const RepairablePlanError& e) {
+        // The plan is the first argument after the command (its options come after it).
+        const std::filesystem::path plan = argc > 2 ? argv[2] : "PLAN";
+        const std::string repaired =
+            (plan.parent_path() / (plan.stem().string() + "-repaired.fcproj")).string();
+        // One line, as every error: the problem, then how to mend it.
+        std::cerr << "floorcover-cli: error: " << e.what()
+                  << " (to repair it: floorcover-cli import " << plan.string() << " --repair --out "
+                  << repaired << ", which says what it changed; in the editor: Plan > Repair Plan)"
+                  << std::endl;
+        return 2;
     } catch (const InputError& e) {
         std::cerr << "floorcover-cli: error: " << e.what() << std::endl;
         return 2;

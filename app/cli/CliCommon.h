@@ -19,6 +19,9 @@ PlanRequest requestFrom(const Project& project, const Arguments& args);
 // InputError("PATH: problem").
 PlanResult planFromArguments(const std::string& path, const Project& project, const Arguments& args,
                              PlanRequest& request);
+// Throws e again as "PATH: problem", of the same kind (a RepairablePlanError stays one, so
+// that the error can point to the repair).
+[[noreturn]] void rethrowInFile(const std::string& path, const InputError& e);
 // Solver, robot, metrics and EPSG of a planned path, for the path writers.
 PathExportInfo exportInfoFor(const Project& project, const PlanRequest& request,
                              const PlanResult& result);

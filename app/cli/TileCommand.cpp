@@ -48,7 +48,7 @@ int commandTile(const Arguments& args) {
         if (auto out = args.text("--out"))
             writeFileAtomically(*out, tiling::waypointsToFormat(*out, plan));
     } catch (const InputError& e) {
-        throw InputError(path + ": " + e.what());
+        rethrowInFile(path, e);
     }
     if (!plan.tiling.unreachable.empty() || !plan.tiling.untiled.empty())
         std::cerr << "floorcover-cli: warning: " << path << ": " << plan.tiling.unreachable.size()

@@ -81,7 +81,7 @@ int commandTrain(const Arguments& args) {
         }
         prepared = preparePlan(request.plan, request.robot, angle, request.transitionCells);
     } catch (const InputError& e) {
-        throw InputError(path + ": " + e.what());
+        rethrowInFile(path, e);
     } catch (const SolverError& e) {
         throw InputError(path + ": " + e.what());
     }

@@ -187,7 +187,7 @@ void throwFirst(std::vector<Defect>& defects, int fromRing, int toRing) {
     std::sort(defects.begin(), defects.end());
     for (const Defect& defect : defects) {
         if (std::get<0>(defect.key) >= fromRing && std::get<0>(defect.key) < toRing)
-            throw InputError(defect.message);
+            throw RepairablePlanError(defect.message);
     }
 }
 
@@ -200,8 +200,9 @@ void checkDuplicateObstacles(const Plan& plan) {
         std::sort(vertices.begin(), vertices.end());
         const auto [it, inserted] = seen.emplace(std::move(vertices), k + 1);
         if (!inserted)
-            throw InputError("obstacles " + std::to_string(it->second) + " and " +
-                             std::to_string(k + 1) + " are identical (duplicate obstacle)");
+            throw RepairablePlanError("obstacles " + std::to_string(it->second) + " and " +
+                                      std::to_string(k + 1) +
+                                      " are identical (duplicate obstacle)");
     }
 }
 
@@ -220,9 +221,9 @@ void checkObstaclePlacement(const Plan& plan) {
     const overlap::EvenOddIndex boundary(overlap::edgesOf(plan.boundary));
     for (size_t k = 0; k < plan.obstacles.size(); ++k) {
         if (!boundary.contains(plan.obstacles[k][0]))
-            throw InputError("obstacle " + std::to_string(k + 1) +
-                             " lies outside the boundary, near " +
-                             formatPoint(plan.obstacles[k][0]));
+            throw RepairablePlanError("obstacle " + std::to_string(k + 1) +
+                                      " lies outside the boundary, near " +
+                                      formatPoint(plan.obstacles[k][0]));
     }
     std::vector<Box> boxes;
     for (size_t k = 0; k < plan.obstacles.size(); ++k)
@@ -238,8 +239,8 @@ void checkObstaclePlacement(const Plan& plan) {
     });
     if (!nested.empty()) {
         const auto [outer, inner] = *std::min_element(nested.begin(), nested.end());
-        throw InputError("obstacle " + std::to_string(inner + 1) + " lies inside obstacle " +
-                         std::to_string(outer + 1));
+        throw RepairablePlanError("obstacle " + std::to_string(inner + 1) +
+                                  " lies inside obstacle " + std::to_string(outer + 1));
     }
 }
 
@@ -385,9 +386,10 @@ void checkRooms(const Plan& plan, const RobotProfile& robot, double tolerance) {
             roomEdges[i], [&](Vec2 p) { return pointInRing(first.outline, p); }, roomEdges[j],
             [&](Vec2 p) { return pointInRing(second.outline, p); }, origin, tolerance);
         if (shared.area > allowed)
-            throw InputError("rooms \"" + first.name + "\" and \"" + second.name +
-                             "\" overlap by " + formatArea(shared.area) +
-                             (shared.hasSample ? " near " + formatPoint(shared.sample) : ""));
+            throw RepairablePlanError(
+                "rooms \"" + first.name + "\" and \"" + second.name + "\" overlap by " +
+                formatArea(shared.area) +
+                (shared.hasSample ? " near " + formatPoint(shared.sample) : ""));
     }
 }
 

@@ -8,6 +8,14 @@
 
 namespace fc {
 
+// A defect of the plan's own rings that repairPlan mends: rings that cross or touch
+// themselves or each other, obstacles outside, inside or on top of one another, rooms that
+// overlap. Front ends may point to the repair (`floorcover-cli import --repair`).
+class RepairablePlanError : public InputError {
+public:
+    using InputError::InputError;
+};
+
 // Throws InputError with one line naming the problem, e.g.
 //   "obstacle 3 crosses the boundary near (12.5, 4.0)".
 // Checks: at least 3 distinct vertices per ring, finite coordinates, no duplicate

@@ -139,6 +139,18 @@ done
 for name in $(sed -n 's/^| `\([^`]*\)` |.*/\1/p' "$data/README.md"); do
   expect_bad_input "bad input $name" "$data/$name"
 done
+# A plan whose own rings are wrong names the repair in its one line, and the repair it names
+# gives a plan that plans.
+cp "$data/overlapping-holes.geojson" "$work/overlapping.geojson"
+"$cli" plan "$work/overlapping.geojson" >"$work/out" 2>"$work/repair.err"
+check "repairable plan is bad input" test $? -eq 2
+check "its error is one line" test "$(wc -l <"$work/repair.err")" -eq 1
+check "its error names the repair" grep -q "to repair it: floorcover-cli import $work/overlapping.geojson --repair --out $work/overlapping-repaired.fcproj" "$work/repair.err"
+check "the named repair works" "$cli" import "$work/overlapping.geojson" --repair --out "$work/overlapping-repaired.fcproj"
+check "the repaired plan plans" cli plan "$work/overlapping-repaired.fcproj"
+check "metrics of the repaired plan" metrics_ok
+"$cli" plan "$plans/office.geojson" --rooms Kitchen >"$work/out" 2>"$work/other.err"
+check "other bad input names no repair" test "$(grep -c 'to repair it' "$work/other.err")" -eq 0
 # The valid fixtures plan.
 for name in simple.fcproj utm-offset.geojson rooms-with-hole.geojson; do
   check "valid fixture $name" cli plan "$data/$name"
