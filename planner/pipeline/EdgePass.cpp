@@ -80,6 +80,23 @@ void throwIfStopped(const SolveControl& control) {
 
 // Plans one piece of the rest as a floor of its own, from the point of it nearest `from`
 // to the point nearest `towards`. Empty where the robot fits nowhere in it.
+// The stripe angle the user fixed for a piece of the rest: the whole floor's (`--angle DEG`,
+// the editor's fixed sweep angle) or that of the piece's room (the editor's per-room "Fixed");
+// none where the angle is the planner's to choose.
+std::optional<double> fixedAngleOfPiece(const PlanRequest& request, int room) {
+    const SweepOptions& sweep = request.sweep;
+    if (sweep.automatic)
+        return std::nullopt;
+    if (!sweep.perRoom)
+        return sweep.angleDeg;
+    const std::string name =
+        room >= 0 ? request.plan.rooms[static_cast<size_t>(room)].name
+                  : (request.plan.rooms.empty() ? std::string("Floor") : std::string());
+    if (auto it = sweep.roomAngles.find(name); !name.empty() && it != sweep.roomAngles.end())
+        return it->second;
+    return std::nullopt;
+}
+
 std::optional<PlanResult> planPiece(const PlanRequest& request, const WallLoop& walls, size_t index,
                                     Vec2 from, Vec2 towards, const SolveControl& control) {
     PlanRequest piece;
@@ -101,6 +118,11 @@ std::optional<PlanResult> planPiece(const PlanRequest& request, const WallLoop& 
     piece.end = clearPointNear(piece.plan.boundary, piece.plan.obstacles, radius, towards);
     if (!piece.start || !piece.end)
         return std::nullopt;
+    const std::optional<double> fixed = fixedAngleOfPiece(request, walls.restRoom[index]);
+    auto plan = [&](const PlanRequest& floor, const PreparedPlans& prepared) {
+        return fixed ? planOneAngle(floor, *fixed, control, &prepared)
+                     : planPerRoom(floor, control, &prepared);
+    };
     try {
         // Small islands (traced furniture) out of the way of the stripes, which then drive
         // round them; where that cannot be (a path that would start beside one), the piece
@@ -109,7 +131,7 @@ std::optional<PlanResult> planPiece(const PlanRequest& request, const WallLoop& 
             PlanRequest open = piece;
             open.plan.obstacles = islands.keptHoles;
             const PreparedPlans prepared(open.plan, open.robot, open.transitionCells);
-            PlanResult planned = planPerRoom(open, control, &prepared);
+            PlanResult planned = plan(open, prepared);
             std::optional<CoveragePath> round = detouredPath(planned.path, islands.zones);
             if (round && !round->empty()) {
                 planned.path = std::move(*round);
@@ -117,7 +139,7 @@ std::optional<PlanResult> planPiece(const PlanRequest& request, const WallLoop& 
             }
         }
         const PreparedPlans prepared(piece.plan, piece.robot, piece.transitionCells);
-        PlanResult planned = planPerRoom(piece, control, &prepared);
+        PlanResult planned = plan(piece, prepared);
         if (planned.path.empty())
             return std::nullopt;
         return planned;

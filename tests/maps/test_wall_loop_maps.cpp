@@ -479,6 +479,47 @@ TEST(WallLoopMaps, RealMapsAreRaggedAtTwiceTheirCellSize) {
     }
 }
 
+// The share of a path's stripe length (segments over 1 m) within a degree of `angle`.
+double stripeShareAt(const CoveragePath& path, double angle) {
+    double at = 0.0, all = 0.0;
+    for (size_t i = 0; i < path.kinds.size(); ++i) {
+        const Vec2 d = path.points[i + 1] - path.points[i];
+        if (path.kinds[i] != SegmentKind::Stripe || norm(d) <= 1.0)
+            continue;
+        const double off =
+            std::abs(std::fmod(std::atan2(d.y, d.x) * 180.0 / M_PI - angle + 360.0, 180.0));
+        all += norm(d);
+        at += std::min(off, 180.0 - off) < 1.0 ? norm(d) : 0.0;
+    }
+    return all > 0.0 ? at / all : 0.0;
+}
+
+// An angle the user fixed holds for the stripes over the wall loop's rest too: `--angle 30`
+// on a traced map gave the loop's rest stripes along its walls (the faculty map: 97 degrees
+// for --angle 45), and so did a room's fixed angle in the editor.
+TEST(WallLoopMaps, AFixedAngleHoldsForTheStripesBesideTheLoop) {
+    for (std::uint64_t seed = 1; seed <= 2; ++seed) {
+        const Plan map = traced(raggedHall(seed), "hall", seed);
+        ASSERT_TRUE(detail::wantsWallLoop(fcgen::defaultRequest(map))) << seed;
+        PlanRequest whole = fcgen::defaultRequest(map);
+        whole.sweep.perRoom = false;
+        whole.sweep.angleDeg = 30.0;
+        PlanRequest rooms = fcgen::defaultRequest(map);
+        for (const Room& room : map.rooms)
+            rooms.sweep.roomAngles[room.name] = 30.0;
+        if (map.rooms.empty())
+            rooms.sweep.roomAngles["Floor"] = 30.0;
+        for (const PlanRequest& request : {whole, rooms}) {
+            // A few stripes bend round traced furniture or end along a slanted wall.
+            const double share = stripeShareAt(planCoverage(request).path, 30.0);
+            std::printf("seed %d%s: %.1f%% of the stripes at 30 degrees\n", static_cast<int>(seed),
+                        request.sweep.perRoom ? ", rooms' angles" : "", 100.0 * share);
+            EXPECT_GT(share, 0.9) << "seed " << seed
+                                  << (request.sweep.perRoom ? ", rooms' angles" : "");
+        }
+    }
+}
+
 // Drawn plans' walls run metres between corners: no loop is drafted and their paths stay
 // what they were.
 TEST(WallLoopMaps, DrawnPlansKeepTheirPaths) {
