@@ -2,7 +2,9 @@
 
 #include "geometry/BoostGeometry.h"
 
+#include <algorithm>
 #include <cmath>
+#include <cstddef>
 #include <limits>
 
 namespace fc {
@@ -22,6 +24,25 @@ template <typename Geometry> BMulti buffered(const Geometry& geometry, double di
     return roundBuffer(geometry, distance, kCirclePoints);
 }
 
+// Douglas-Peucker keeps a closed ring's first vertex and splits from there, so what it keeps
+// depends on where the ring starts, and Boost starts the rings it computes at a vertex that
+// depends on how the plan is turned. Each ring starts at its vertex farthest from the
+// polygon's centroid instead, the same vertex at any rotation of the plan: the faculty map
+// turned by 90 degrees planned 5,703 s against 5,100 s turned by 180 (the same stripes), its
+// main piece simplified into another outline that left 22 m^2 instead of 14 to touch-ups.
+void startAtFarthestVertex(BRing& ring, const BPoint& centre) {
+    if (ring.size() < 4)
+        return;
+    ring.pop_back(); // closed: the first vertex repeated
+    size_t farthest = 0;
+    for (size_t i = 1; i < ring.size(); ++i)
+        if (bg::comparable_distance(ring[i], centre) >
+            bg::comparable_distance(ring[farthest], centre))
+            farthest = i;
+    std::rotate(ring.begin(), ring.begin() + static_cast<std::ptrdiff_t>(farthest), ring.end());
+    ring.push_back(ring.front());
+}
+
 // A piece's outline is mostly the band's edge, a line the robot need not follow: simplified
 // (its arcs and the loop's wiggles would each start cells), then cut back to the free floor.
 BMulti simplified(const BMulti& pieces, const BPolygon& free, double tolerance) {
@@ -35,7 +56,12 @@ BMulti simplified(const BMulti& pieces, const BPolygon& free, double tolerance) 
         bg::buffer(piece, grown, bg::strategy::buffer::distance_symmetric<double>(tolerance),
                    bg::strategy::buffer::side_straight(), bg::strategy::buffer::join_miter(),
                    bg::strategy::buffer::end_flat(), bg::strategy::buffer::point_square());
-        for (const BPolygon& part : grown) {
+        for (BPolygon part : grown) {
+            BPoint centre;
+            bg::centroid(part, centre);
+            startAtFarthestVertex(part.outer(), centre);
+            for (BRing& inner : part.inners())
+                startAtFarthestVertex(inner, centre);
             BPolygon simple;
             bg::simplify(part, simple, tolerance);
             bg::correct(simple);
