@@ -78,8 +78,6 @@ void throwIfStopped(const SolveControl& control) {
         throw SolverError("wall loop: cancelled");
 }
 
-// Plans one piece of the rest as a floor of its own, from the point of it nearest `from`
-// to the point nearest `towards`. Empty where the robot fits nowhere in it.
 // The stripe angle the user fixed for a piece of the rest: the whole floor's (`--angle DEG`,
 // the editor's fixed sweep angle) or that of the piece's room (the editor's per-room "Fixed");
 // none where the angle is the planner's to choose.
@@ -97,6 +95,8 @@ std::optional<double> fixedAngleOfPiece(const PlanRequest& request, int room) {
     return std::nullopt;
 }
 
+// Plans one piece of the rest as a floor of its own, from the point of it nearest `from`
+// to the point nearest `towards`. Empty where the robot fits nowhere in it.
 std::optional<PlanResult> planPiece(const PlanRequest& request, const WallLoop& walls, size_t index,
                                     Vec2 from, Vec2 towards, const SolveControl& control) {
     PlanRequest piece;
