@@ -432,8 +432,8 @@
         <translation>%1 hat keinen Namen: Räume brauchen einen in properties.name.</translation>
     </message>
     <message>
-        <source>The file holds %1 buildings (outer walls of %2 m², largest first), and a plan holds one: import each building on its own with the command-line tool&apos;s import command.</source>
-        <translation>Die Datei enthält %1 Gebäude (Außenwände von %2 m², das größte zuerst), ein Plan aber nur eines: importieren Sie jedes Gebäude einzeln mit dem Import-Befehl des Kommandozeilenwerkzeugs.</translation>
+        <source>The file holds %1 buildings (outer walls of %2 m², largest first), and a plan holds one: choose one as you open it.</source>
+        <translation>Die Datei enthält %1 Gebäude (Außenwände von %2 m², das größte zuerst), ein Plan aber nur eines: wählen Sie eines beim Öffnen.</translation>
     </message>
     <message>
         <source>%1 has a hole; floor inside an obstacle is not supported.</source>
@@ -1668,6 +1668,14 @@
             <numerusform>Über Lücken, schmaler als der Roboter, mit Nachbarn verbundene Hindernisse: %n (%1 m²).</numerusform>
         </translation>
     </message>
+    <message>
+        <source>Building:</source>
+        <translation>Gebäude:</translation>
+    </message>
+    <message>
+        <source>The file holds several buildings (outer walls); a plan holds one. Largest first.</source>
+        <translation>Die Datei enthält mehrere Gebäude (Außenwände); ein Plan enthält eines. Das größte zuerst.</translation>
+    </message>
 </context>
 <context>
     <name>fc::ui::LegendDock</name>
@@ -2092,6 +2100,10 @@ Abdeckungspfadplanung für Reinigungs- und Desinfektionsroboter.</translation>
     <message>
         <source>The sample plans and the ways to start</source>
         <translation>Die Beispielpläne und die Wege zum Einstieg</translation>
+    </message>
+    <message>
+        <source>Opened %1: %2</source>
+        <translation>%1 geöffnet: %2</translation>
     </message>
 </context>
 <context>
@@ -2898,6 +2910,23 @@ Abdeckungspfadplanung für Reinigungs- und Desinfektionsroboter.</translation>
     </message>
 </context>
 <context>
+    <name>fc::ui::SiteBuildingChoice</name>
+    <message>
+        <source>Building %1 (%2 m²)</source>
+        <translation>Gebäude %1 (%2 m²)</translation>
+    </message>
+    <message>
+        <source>Choose a Building</source>
+        <translation>Gebäude wählen</translation>
+    </message>
+    <message>
+        <source>%1 holds %2 buildings, and a plan holds one.
+Which building do you want to open?</source>
+        <translation>%1 enthält %2 Gebäude, ein Plan aber nur eines.
+Welches Gebäude möchten Sie öffnen?</translation>
+    </message>
+</context>
+<context>
     <name>fc::ui::SplitRoomTool</name>
     <message>
         <source>Split Room</source>
@@ -3405,6 +3434,10 @@ Abdeckungspfadplanung für Reinigungs- und Desinfektionsroboter.</translation>
     <message>
         <source>A .fcproj or .geojson file.</source>
         <translation>Eine .fcproj- oder .geojson-Datei.</translation>
+    </message>
+    <message>
+        <source>Of a GeoJSON site of several buildings, open building K (1 = the largest) instead of asking.</source>
+        <translation>Von einem GeoJSON-Gelände mit mehreren Gebäuden Gebäude K öffnen (1 = das größte), statt zu fragen.</translation>
     </message>
 </context>
 </TS>

@@ -432,8 +432,8 @@
         <translation>%1 n’a pas de nom : les pièces en ont besoin d’un dans properties.name.</translation>
     </message>
     <message>
-        <source>The file holds %1 buildings (outer walls of %2 m², largest first), and a plan holds one: import each building on its own with the command-line tool&apos;s import command.</source>
-        <translation>Le fichier contient %1 bâtiments (murs extérieurs de %2 m², le plus grand d’abord), et un plan n’en contient qu’un : importez chaque bâtiment séparément avec la commande import de l’outil en ligne de commande.</translation>
+        <source>The file holds %1 buildings (outer walls of %2 m², largest first), and a plan holds one: choose one as you open it.</source>
+        <translation>Le fichier contient %1 bâtiments (murs extérieurs de %2 m², le plus grand d’abord), et un plan n’en contient qu’un : choisissez-en un à l’ouverture.</translation>
     </message>
     <message>
         <source>%1 has a hole; floor inside an obstacle is not supported.</source>
@@ -1668,6 +1668,14 @@
             <numerusform>Obstacles reliés à leurs voisins par des passages plus étroits que le robot : %n (%1 m²).</numerusform>
         </translation>
     </message>
+    <message>
+        <source>Building:</source>
+        <translation>Bâtiment :</translation>
+    </message>
+    <message>
+        <source>The file holds several buildings (outer walls); a plan holds one. Largest first.</source>
+        <translation>Le fichier contient plusieurs bâtiments (murs extérieurs) ; un plan en contient un. Le plus grand d’abord.</translation>
+    </message>
 </context>
 <context>
     <name>fc::ui::LegendDock</name>
@@ -2092,6 +2100,10 @@ Planification de trajets de couverture pour robots de nettoyage et de désinfect
     <message>
         <source>The sample plans and the ways to start</source>
         <translation>Les plans d’exemple et les façons de commencer</translation>
+    </message>
+    <message>
+        <source>Opened %1: %2</source>
+        <translation>%1 ouvert : %2</translation>
     </message>
 </context>
 <context>
@@ -2898,6 +2910,23 @@ Planification de trajets de couverture pour robots de nettoyage et de désinfect
     </message>
 </context>
 <context>
+    <name>fc::ui::SiteBuildingChoice</name>
+    <message>
+        <source>Building %1 (%2 m²)</source>
+        <translation>Bâtiment %1 (%2 m²)</translation>
+    </message>
+    <message>
+        <source>Choose a Building</source>
+        <translation>Choisir un bâtiment</translation>
+    </message>
+    <message>
+        <source>%1 holds %2 buildings, and a plan holds one.
+Which building do you want to open?</source>
+        <translation>%1 contient %2 bâtiments, et un plan n’en contient qu’un.
+Quel bâtiment voulez-vous ouvrir ?</translation>
+    </message>
+</context>
+<context>
     <name>fc::ui::SplitRoomTool</name>
     <message>
         <source>Split Room</source>
@@ -3405,6 +3434,10 @@ Planification de trajets de couverture pour robots de nettoyage et de désinfect
     <message>
         <source>A .fcproj or .geojson file.</source>
         <translation>Un fichier .fcproj ou .geojson.</translation>
+    </message>
+    <message>
+        <source>Of a GeoJSON site of several buildings, open building K (1 = the largest) instead of asking.</source>
+        <translation>D’un site GeoJSON de plusieurs bâtiments, ouvrir le bâtiment K (1 = le plus grand) au lieu de demander.</translation>
     </message>
 </context>
 </TS>

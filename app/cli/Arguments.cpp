@@ -80,6 +80,15 @@ void Arguments::allowOnly(const std::vector<std::string>& allowed) const {
             throw InputError("unknown option " + name);
 }
 
+Arguments Arguments::with(const std::string& name, const std::optional<std::string>& value) const {
+    Arguments copy = *this;
+    if (value)
+        copy.values_[name] = *value;
+    else
+        copy.values_.erase(name);
+    return copy;
+}
+
 std::vector<std::string> splitList(const std::string& text, char separator) {
     std::vector<std::string> out;
     std::string cur;

@@ -25,6 +25,8 @@ public:
     std::vector<std::string> list(const std::string& name) const; // "A,B"
     // Throws InputError for options not in the allowed list.
     void allowOnly(const std::vector<std::string>& allowed) const;
+    // A copy with option `name` set to `value` (nullopt: removed).
+    Arguments with(const std::string& name, const std::optional<std::string>& value) const;
 
 private:
     std::vector<std::string> positional_;

@@ -92,7 +92,12 @@ commands:
                 the path is exported; ros-path/nav2: [--frame-id ID]; vda5050:
                 [--manufacturer M] [--serial-number S] [--order-id O] [--map-id ID]
 
-PLAN is a GeoJSON floor plan (.geojson) or a FloorCover project (.fcproj).
+PLAN is a GeoJSON floor plan (.geojson) or a FloorCover project (.fcproj). A GeoJSON site
+of several buildings (boundary polygons) is planned one building at a time: --building K,
+1 = the largest (plan, graph, train, compare, tile, export); its obstacles and rooms come
+with it. plan --building all plans every building: a path file each (--out site.csv writes
+site-building-K.csv), one JSON line of the site's totals with each building's metrics under
+"buildings"; --rooms, --start and --end apply to the building that holds them.
 Exit codes: 0 success, 2 bad input (one line on stderr), 3 coverage loss with --strict,
 1 internal error.
 )";
@@ -100,12 +105,12 @@ Exit codes: 0 success, 2 bad input (one line on stderr), 3 coverage loss with --
 } // namespace
 
 const std::vector<std::string> kPlanOptions{
-    "--width",       "--robot-diameter", "--cleaning-diameter",
-    "--speed",       "--turn-time",      "--angle",
-    "--rooms",       "--start",          "--end",
-    "--solver",      "--model",          "--seed",
-    "--out",         "--strict",         "--no-transition-cells",
-    "--no-wall-loop"};
+    "--width",        "--robot-diameter", "--cleaning-diameter",
+    "--speed",        "--turn-time",      "--angle",
+    "--rooms",        "--start",          "--end",
+    "--solver",       "--model",          "--seed",
+    "--out",          "--strict",         "--no-transition-cells",
+    "--no-wall-loop", "--building"};
 
 // A request from the project file's settings, overridden by command-line options.
 PlanRequest requestFrom(const Project& project, const Arguments& args) {
@@ -239,8 +244,18 @@ const std::string& planPath(const Arguments& args) {
     return args.positional()[0];
 }
 
-Project loadProject(const std::string& path) {
-    Project project = loadProjectFile(path);
+Project loadProject(const std::string& path, const Arguments& args) {
+    std::optional<int> building;
+    if (args.text("--building") == "all")
+        throw InputError(path + ": --building all: only `plan` plans every building of a site; " +
+                         "choose one with --building K");
+    if (const auto k = args.integer("--building")) {
+        if (*k < 1 || *k > 1'000'000)
+            throw InputError(path + ": --building " + std::to_string(*k) +
+                             ": buildings are numbered from 1, the largest");
+        building = static_cast<int>(*k);
+    }
+    Project project = loadProjectFile(path, building);
     for (const std::string& note : project.notes)
         std::cerr << "floorcover-cli: note: " << path << ": " << note << "\n";
     return project;
@@ -252,8 +267,10 @@ constexpr int kExitCoverageLoss = 3;
 
 int commandPlan(const Arguments& args) {
     args.allowOnly(kPlanOptions);
+    if (args.text("--building") == "all")
+        return commandPlanSite(args);
     const std::string& path = planPath(args);
-    const Project project = loadProject(path);
+    const Project project = loadProject(path, args);
     PlanRequest request;
     const PlanResult result = planFromArguments(path, project, args, request);
     if (auto out = args.text("--out"))
@@ -270,12 +287,13 @@ int commandPlan(const Arguments& args) {
 }
 
 int commandGraph(const Arguments& args) {
-    args.allowOnly({"--width", "--angle", "--out", "--robot-diameter", "--no-transition-cells"});
+    args.allowOnly(
+        {"--width", "--angle", "--out", "--robot-diameter", "--no-transition-cells", "--building"});
     const std::string& path = planPath(args);
     const auto out = args.text("--out");
     if (!out)
         throw InputError("graph needs --out FILE.json");
-    const Project project = loadProject(path);
+    const Project project = loadProject(path, args);
     try {
         PlanRequest request = requestFrom(project, args);
         if (request.sweep.automatic)
@@ -323,7 +341,7 @@ int commandCompare(const Arguments& args) {
     allowed.push_back("--json");
     args.allowOnly(allowed);
     const std::string& path = planPath(args);
-    const Project project = loadProject(path);
+    const Project project = loadProject(path, args);
     std::vector<std::string> solvers = args.list("--solvers");
     if (solvers.empty())
         solvers = solverNames(); // dqn without --model: the built-in generalist

@@ -27,9 +27,11 @@ PathExportInfo exportInfoFor(const Project& project, const PlanRequest& request,
                              const PlanResult& result);
 // The one positional PLAN argument; throws InputError otherwise.
 const std::string& planPath(const Arguments& args);
-// loadProjectFile, its notes printed on stderr.
-Project loadProject(const std::string& path);
+// loadProjectFile, its notes printed on stderr; --building K picks a building of a site.
+Project loadProject(const std::string& path, const Arguments& args);
 
+// SitePlanCommand.cpp: `plan SITE --building all`, every building of a site in one run.
+int commandPlanSite(const Arguments& args);
 int commandTrain(const Arguments& args);
 int commandTile(const Arguments& args);   // TileCommand.cpp: the tiling robot
 int commandImport(const Arguments& args); // ImportCommand.cpp: DXF, ROS maps, WKT to a plan

@@ -38,7 +38,7 @@ int commandExport(const Arguments& args) {
         throw InputError(*out + ": " + e.what());
     }
 
-    const Project project = loadProject(path);
+    const Project project = loadProject(path, args);
     PathExportInfo info;
     CoveragePath coveragePath;
     if (exportNeedsPath(subject)) {

@@ -11,9 +11,9 @@ namespace fc::cli {
 
 int commandTile(const Arguments& args) {
     args.allowOnly({"--solver", "--out", "--seed", "--block-leg", "--block-masses", "--model",
-                    "--train-seconds", "--save-model"});
+                    "--train-seconds", "--save-model", "--building"});
     const std::string& path = planPath(args);
-    const Project project = loadProject(path);
+    const Project project = loadProject(path, args);
     tiling::TilingRequest request;
     request.plan = project.plan;
     request.solver = args.text("--solver").value_or("greedy");

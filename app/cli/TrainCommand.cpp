@@ -53,7 +53,7 @@ const char* stopName(TrainingStop stop) {
 int commandTrain(const Arguments& args) {
     args.allowOnly({"--out", "--episodes", "--seconds", "--seed", "--setting", "--resume",
                     "--evaluate-every", "--width", "--robot-diameter", "--cleaning-diameter",
-                    "--angle", "--no-transition-cells", "--from-scratch"});
+                    "--angle", "--no-transition-cells", "--from-scratch", "--building"});
     const std::string& path = planPath(args);
     const auto out = args.text("--out");
     if (!out)
@@ -69,7 +69,7 @@ int commandTrain(const Arguments& args) {
     if (setting != "improved" && setting != "paper" && setting != "graph")
         throw InputError("--setting must be graph, improved or paper");
 
-    const Project project = loadProject(path);
+    const Project project = loadProject(path, args);
     PreparedPlan prepared;
     double angle = 90.0;
     try {

@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <cstring>
+#include <optional>
 
 namespace {
 
@@ -52,17 +53,34 @@ int main(int argc, char** argv) {
                                 "FILE (PNG) and exit."),
         QApplication::translate("main", "FILE"));
     parser.addOption(screenshot);
+    const QCommandLineOption building(
+        QStringLiteral("building"),
+        QApplication::translate("main", "Of a GeoJSON site of several buildings, open building K "
+                                        "(1 = the largest) instead of asking."),
+        QStringLiteral("K"));
+    parser.addOption(building);
     parser.addPositionalArgument(QStringLiteral("plan"),
                                  QApplication::translate("main", "A .fcproj or .geojson file."),
                                  QStringLiteral("[PLAN]"));
     parser.process(app);
     const QStringList positional = parser.positionalArguments();
     const QString planPath = positional.value(0);
+    std::optional<int> buildingNumber;
+    if (parser.isSet(building)) {
+        bool ok = false;
+        const int k = parser.value(building).toInt(&ok);
+        if (!ok || k < 1) {
+            std::fprintf(stderr, "floorcover: --building %s: buildings are numbered from 1\n",
+                         qPrintable(parser.value(building)));
+            return 2;
+        }
+        buildingNumber = k;
+    }
 
     fc::ui::MainWindow window;
     if (parser.isSet(screenshot)) {
         QString error;
-        if (!window.renderScreenshot(parser.value(screenshot), planPath, &error)) {
+        if (!window.renderScreenshot(parser.value(screenshot), planPath, &error, buildingNumber)) {
             std::fprintf(stderr, "floorcover: %s\n", qPrintable(error));
             return 2;
         }
@@ -70,7 +88,7 @@ int main(int argc, char** argv) {
     }
     window.show();
     // A plan named on the command line, else what a crashed session left, else the sample.
-    if (!planPath.isEmpty() && window.openFile(planPath))
+    if (!planPath.isEmpty() && window.openFile(planPath, buildingNumber))
         return QApplication::exec();
     if (!window.recoverAutosave()) {
         window.openSample();

@@ -144,6 +144,8 @@ Project loadProjectFile(const std::string& path, std::optional<int> building) {
             project = readProject(text);
         else
             project.plan = readGeoJsonPlan(text, building, &project.notes);
+    } catch (const SiteError& e) {
+        throw SiteError(path + ": " + e.what(), e.buildingAreas());
     } catch (const InputError& e) {
         throw InputError(path + ": " + e.what());
     }

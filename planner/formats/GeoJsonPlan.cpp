@@ -165,15 +165,20 @@ struct PlanReader {
         const int count = static_cast<int>(boundaries.size());
         if (!building && count > 1) {
             std::string areas;
+            std::vector<double> all;
+            for (int i = 0; i < count; ++i)
+                all.push_back(ringArea(boundaries[i].outline));
             for (int i = 0; i < count && i < 6; ++i)
-                areas += (i > 0 ? ", " : "") + formatArea(ringArea(boundaries[i].outline));
+                areas += (i > 0 ? ", " : "") + formatArea(all[i]);
             if (count > 6)
                 areas += ", ...";
-            throw InputError(std::to_string(count) + " buildings (boundary polygons of " + areas +
-                             " m2, largest first); a plan holds one building: choose one with "
-                             "`floorcover-cli import FILE --building K --out PLAN.fcproj`, "
-                             "K = 1.." +
-                             std::to_string(count));
+            throw SiteError(std::to_string(count) + " buildings (boundary polygons of " + areas +
+                                " m2, largest first); a plan holds one building: choose one "
+                                "with --building K, K = 1.." +
+                                std::to_string(count) +
+                                " (plan, graph, train, compare, tile, export, or `import FILE "
+                                "--building K --out PLAN.fcproj` for a project of its own)",
+                            std::move(all));
         }
         const int chosen = building.value_or(1);
         if (chosen < 1 || chosen > count)

@@ -20,6 +20,19 @@ namespace fc {
 // inside the globe's ranges, RFC 7946's default) is reprojected to metres in its UTM zone,
 // which becomes the plan's EPSG; `notes` (when given) gets a line saying so.
 inline constexpr double kLonLatExtent = 0.05; // degrees, about 5 km: no building in metres
+
+// A site of several buildings read without `building`: the message lists their areas and
+// the option; buildingAreas() (m^2, largest first, building K at K - 1) lets an editor ask.
+class SiteError : public InputError {
+public:
+    SiteError(const std::string& message, std::vector<double> buildingAreas)
+        : InputError(message), areas_(std::move(buildingAreas)) {}
+    const std::vector<double>& buildingAreas() const { return areas_; }
+
+private:
+    std::vector<double> areas_;
+};
+
 Plan readGeoJsonPlan(const std::string& text, std::optional<int> building = std::nullopt,
                      std::vector<std::string>* notes = nullptr);
 std::string writeGeoJsonPlan(const Plan& plan);

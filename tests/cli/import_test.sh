@@ -123,7 +123,7 @@ bad "obstacle across the wall" "$work/crossing.wkt" --out "$work/x.geojson"
   fail "--repair: $(cat "$work/err")"
 
 # A site of two buildings (a MultiPolygon boundary at UTM coordinates): plan refuses it and
-# names the buildings; import takes one at a time with its own obstacles and rooms.
+# names the buildings; import and plan take one at a time with its own obstacles and rooms.
 cat >"$work/site.geojson" <<'JSON'
 {"type":"FeatureCollection","features":[
 {"type":"Feature","properties":{"role":"boundary"},"geometry":{"type":"MultiPolygon","coordinates":[
@@ -142,6 +142,38 @@ JSON
   fail "building 2: $(cat "$work/out")"
 "$cli" import "$work/site.geojson" --building 1 --out "$work/b1.geojson" >"$work/out" 2>/dev/null &&
   grep -q '"free_area":240.000,"obstacles":0,"rooms":0' "$work/out" || fail "building 1: $(cat "$work/out")"
+# Every command that reads a plan takes --building K too: no import step needed.
+"$cli" plan "$work/site.geojson" --building 2 --out "$work/b2.csv" >"$work/out" 2>"$work/err" &&
+  grep -q '"coverage":1.0' "$work/out" && [ -s "$work/b2.csv" ] ||
+  fail "plan --building 2: $(cat "$work/out" "$work/err")"
+"$cli" graph "$work/site.geojson" --building 1 --out "$work/g1.json" >/dev/null 2>"$work/err" &&
+  grep -q '"nodes"' "$work/g1.json" || fail "graph --building 1: $(cat "$work/err")"
+"$cli" plan "$work/site.geojson" --building 3 >/dev/null 2>"$work/err"
+[ $? -eq 2 ] && grep -q "building 3 does not exist: the file has 2 buildings" "$work/err" ||
+  fail "plan --building 3 of 2: $(cat "$work/err")"
+"$cli" plan "$work/site.geojson" --building 0 >/dev/null 2>"$work/err"
+[ $? -eq 2 ] && grep -q "buildings are numbered from 1" "$work/err" ||
+  fail "plan --building 0: $(cat "$work/err")"
+# --building all: every building in one run, a path file each and the site's totals.
+"$cli" plan "$work/site.geojson" --building all --out "$work/site.csv" >"$work/out" 2>"$work/err" &&
+  [ -s "$work/site-building-1.csv" ] && [ -s "$work/site-building-2.csv" ] &&
+  [ ! -e "$work/site.csv" ] && [ "$(wc -l <"$work/out")" -eq 1 ] &&
+  grep -q '"ideal":316.0,' "$work/out" && grep -q '"buildings":\[{"building":1,' "$work/out" &&
+  grep -q '},{"building":2,' "$work/out" ||
+  fail "plan --building all: $(cat "$work/out" "$work/err")"
+# Rooms and the start go to the building that holds them; one in no building is refused.
+"$cli" plan "$work/site.geojson" --building all --rooms "Hall B" --start 500041,5000001 \
+  >"$work/out" 2>"$work/err" && grep -q '"buildings":\[{"building":2,' "$work/out" &&
+  ! grep -q '"building":1' "$work/out" || fail "--building all --rooms: $(cat "$work/out" "$work/err")"
+"$cli" plan "$work/site.geojson" --building all --rooms "Hall C" >/dev/null 2>"$work/err"
+[ $? -eq 2 ] && grep -q 'no building of the site has a room named "Hall C"' "$work/err" ||
+  fail "--building all, unknown room: $(cat "$work/err")"
+"$cli" plan "$work/site.geojson" --building all --start 500030,5000001 >/dev/null 2>"$work/err"
+[ $? -eq 2 ] && grep -q -- '--start lies in no building of the site' "$work/err" ||
+  fail "--building all, start outside: $(cat "$work/err")"
+"$cli" graph "$work/site.geojson" --building all --out "$work/g.json" >/dev/null 2>"$work/err"
+[ $? -eq 2 ] && grep -q "only \`plan\` plans every building" "$work/err" ||
+  fail "graph --building all: $(cat "$work/err")"
 bad "building 3 of 2" "$work/site.geojson" --building 3 --out "$work/x.fcproj"
 "$cli" import "$work/site.geojson" --building 0 --out "$work/x.fcproj" >/dev/null 2>&1
 [ $? -eq 2 ] || fail "--building 0 accepted"

@@ -3,12 +3,15 @@
 #include "EditorFixture.h"
 #include "dialogs/ImportDialog.h"
 
+#include <QApplication>
 #include <QCoreApplication>
 #include <QDialogButtonBox>
+#include <QInputDialog>
 #include <QLabel>
 #include <QPushButton>
 #include <QStandardPaths>
 #include <QTemporaryDir>
+#include <QTimer>
 #include <QUndoStack>
 #include <fstream>
 
@@ -29,6 +32,18 @@ double expectedOfficeArea() {
     return -1;
 }
 
+// A site of two buildings (GeoJSON, one MultiPolygon boundary): 20 x 12 m, and 10 x 8 m with
+// a pillar and a room.
+QString writeSite(const QTemporaryDir& dir) {
+    const QString path = dir.filePath(QStringLiteral("site.geojson"));
+    std::ofstream(path.toStdString()) << R"({"type":"FeatureCollection","features":[
+{"type":"Feature","properties":{"role":"boundary"},"geometry":{"type":"MultiPolygon","coordinates":[
+ [[[0,0],[20,0],[20,12],[0,12],[0,0]]], [[[40,0],[50,0],[50,8],[40,8],[40,0]]]]}},
+{"type":"Feature","properties":{"role":"obstacle"},"geometry":{"type":"Polygon","coordinates":[[[44,3],[46,3],[46,5],[44,5],[44,3]]]}},
+{"type":"Feature","properties":{"role":"room","name":"Hall B"},"geometry":{"type":"Polygon","coordinates":[[[40,0],[50,0],[50,8],[40,8],[40,0]]]}}]})";
+    return path;
+}
+
 } // namespace
 
 class ImportTest : public QObject {
@@ -42,6 +57,8 @@ private slots:
     void importReplacesThePlanAsOneUndoStep();
     void importOpensAsNewDocument();
     void occupancyMapCleaningIsLive();
+    void aSiteOpensTheBuildingChosen();
+    void theImportDialogOffersASitesBuildings();
 };
 
 void ImportTest::initTestCase() {
@@ -165,6 +182,70 @@ void ImportTest::occupancyMapCleaningIsLive() {
     // A DXF drawing offers no map cleaning.
     ImportDialog drawing(kOffice);
     QVERIFY(!drawing.mapOptionsShown());
+}
+
+// File > Open on a site of several buildings asks which one (a plan holds one building);
+// without dialogs it names the buildings, and openFile(path, K) opens building K.
+void ImportTest::aSiteOpensTheBuildingChosen() {
+    QTemporaryDir dir;
+    const QString site = writeSite(dir);
+    auto window = makeWindow();
+    QVERIFY(!window->openFile(site));
+    QVERIFY2(window->lastError().contains(QStringLiteral("2 buildings")),
+             qPrintable(window->lastError()));
+
+    QVERIFY(window->openFile(site, 2));
+    const fc::Plan& annex = window->document()->plan();
+    QCOMPARE(fc::ringArea(annex.boundary), 80.0);
+    QCOMPARE(annex.obstacles.size(), size_t(1));
+    QCOMPARE(annex.rooms.size(), size_t(1));
+    QCOMPARE(QString::fromStdString(annex.name), QStringLiteral("site-building-2"));
+
+    // With dialogs on, the user picks from the buildings, largest first.
+    window->setDialogsEnabled(true);
+    QStringList offered;
+    auto answer = [&](bool accept) {
+        QTimer::singleShot(0, [&, accept] {
+            auto* dialog = qobject_cast<QInputDialog*>(QApplication::activeModalWidget());
+            QVERIFY(dialog);
+            offered = dialog->comboBoxItems();
+            if (accept) {
+                dialog->setTextValue(offered.value(0));
+                dialog->accept();
+            } else {
+                dialog->reject();
+            }
+        });
+    };
+    answer(true);
+    QVERIFY(window->openFile(site));
+    QCOMPARE(offered.size(), 2);
+    QVERIFY2(offered[0].contains(QStringLiteral("240")), qPrintable(offered.join(',')));
+    QVERIFY2(offered[1].contains(QStringLiteral("80")), qPrintable(offered.join(',')));
+    QCOMPARE(fc::ringArea(window->document()->plan().boundary), 240.0);
+    // Cancelled: the open document stays, and nothing is reported as an error.
+    answer(false);
+    QVERIFY(!window->openFile(site));
+    QCOMPARE(fc::ringArea(window->document()->plan().boundary), 240.0);
+    window->setDialogsEnabled(false);
+}
+
+// File > Import of a site: the largest building is previewed, the others a choice away.
+void ImportTest::theImportDialogOffersASitesBuildings() {
+    QTemporaryDir dir;
+    ImportDialog dialog(writeSite(dir));
+    QCOMPARE(dialog.building(), 1);
+    QVERIFY2(dialog.result(), qPrintable(dialog.error()));
+    QCOMPARE(fc::ringArea(dialog.result()->project.plan.boundary), 240.0);
+    dialog.setBuilding(2);
+    QVERIFY2(dialog.result(), qPrintable(dialog.error()));
+    QCOMPARE(fc::ringArea(dialog.result()->project.plan.boundary), 80.0);
+    QCOMPARE(dialog.result()->project.plan.rooms.size(), size_t(1));
+    QCOMPARE(dialog.options().building, std::optional<int>(2));
+
+    ImportDialog plain(kOffice); // no site: no choice
+    QCOMPARE(plain.building(), 0);
+    QVERIFY(!plain.options().building);
 }
 
 QTEST_MAIN(ImportTest)

@@ -507,14 +507,20 @@ TEST(PlanIO, SiteOfSeveralBuildingsIsReadOneBuildingAtATime) {
                 R"({"type":"Polygon","coordinates":[)" + square(x0, y0, 10, 8) + "]}") +
         "]}";
     std::string message;
+    std::vector<double> areas;
     try {
         readGeoJsonPlan(site);
-    } catch (const InputError& e) {
+    } catch (const SiteError& e) { // an InputError that carries the areas, for the editor
         message = e.what();
+        areas = e.buildingAreas();
     }
     EXPECT_NE(message.find("3 buildings (boundary polygons of 240, 80, 25 m2"), std::string::npos)
         << message;
     EXPECT_NE(message.find("--building K"), std::string::npos) << message;
+    ASSERT_EQ(areas.size(), 3u);
+    EXPECT_NEAR(areas[0], 240.0, 1e-6);
+    EXPECT_NEAR(areas[1], 80.0, 1e-6);
+    EXPECT_NEAR(areas[2], 25.0, 1e-6);
 
     const Plan largest = readGeoJsonPlan(site, 1);
     EXPECT_NEAR(ringArea(largest.boundary), 240.0, 1e-6);

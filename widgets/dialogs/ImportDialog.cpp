@@ -1,7 +1,9 @@
 #include "dialogs/ImportDialog.h"
 
+#include "dialogs/SiteBuildingChoice.h"
 #include "document/Conversions.h"
 #include "document/PlannerMessages.h"
+#include "formats/PlanIO.h"
 
 #include <QCheckBox>
 #include <QComboBox>
@@ -49,6 +51,7 @@ ImportDialog::ImportDialog(const QString& path, QWidget* parent)
       scene_(new QGraphicsScene(this)), view_(new QGraphicsView(scene_, this)),
       warnings_(new QListWidget(this)), summary_(new QLabel(this)),
       newDocument_(new QCheckBox(tr("Open as a new document"), this)),
+      buildingLabel_(new QLabel(tr("Building:"), this)), building_(new QComboBox(this)),
       buttons_(new QDialogButtonBox(QDialogButtonBox::Ok | QDialogButtonBox::Cancel, this)) {
     setWindowTitle(tr("Import %1").arg(QFileInfo(path).fileName()));
     layerTable_->setHorizontalHeaderLabels({tr("Layer"), tr("Role")});
@@ -79,6 +82,11 @@ ImportDialog::ImportDialog(const QString& path, QWidget* parent)
     auto* form = new QFormLayout;
     form->addRow(tr("Units:"), units_);
     form->addRow(tr("Close gaps up to:"), gap_);
+    form->addRow(buildingLabel_, building_);
+    building_->setToolTip(tr("The file holds several buildings (outer walls); a plan holds one. "
+                             "Largest first."));
+    buildingLabel_->hide();
+    building_->hide();
     auto* left = new QVBoxLayout;
     left->addWidget(layerTable_);
     left->addLayout(form);
@@ -112,7 +120,17 @@ ImportDialog::ImportDialog(const QString& path, QWidget* parent)
     }
     connect(units_, &QDoubleSpinBox::editingFinished, this, &ImportDialog::refresh);
     connect(gap_, &QDoubleSpinBox::editingFinished, this, &ImportDialog::refresh);
+    connect(building_, qOverload<int>(&QComboBox::activated), this, &ImportDialog::refresh);
     refresh();
+}
+
+void ImportDialog::setBuilding(int building) {
+    building_->setCurrentIndex(building - 1);
+    refresh();
+}
+
+int ImportDialog::building() const {
+    return building_->count() > 0 ? building_->currentIndex() + 1 : 0;
 }
 
 QGroupBox* ImportDialog::buildMapGroup() {
@@ -270,6 +288,8 @@ ImportOptions ImportDialog::options() const {
     if (units_->isEnabled())
         options.metresPerUnit = units_->value();
     options.gapTolerance = gap_->value();
+    if (building_->count() > 0)
+        options.building = building_->currentIndex() + 1;
     options.cleaning.enabled = mapGroup_->isChecked();
     options.cleaning.unknownIsFree = unknown_->currentData().toBool();
     options.cleaning.speckleArea = speckle_->value();
@@ -312,6 +332,16 @@ void ImportDialog::refresh() {
         try {
             result_ = importPlanFile(path_.toStdString(), options());
             error_.clear();
+        } catch (const SiteError& e) {
+            // A site: the largest building first, the others a choice away.
+            if (building_->count() == 0 && !e.buildingAreas().empty()) {
+                building_->addItems(siteBuildingNames(e.buildingAreas()));
+                buildingLabel_->show();
+                building_->show();
+                refresh();
+                return;
+            }
+            error_ = plainMessage(fromStd(e.what()));
         } catch (const InputError& e) {
             error_ = plainMessage(fromStd(e.what()));
         }

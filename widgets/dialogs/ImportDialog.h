@@ -38,6 +38,10 @@ public:
     void setMetresPerUnit(double metres);
     void setGapTolerance(double metres);
     void setOpenAsNewDocument(bool newDocument);
+    // A GeoJSON site of several buildings: which one (1 = the largest, the first shown);
+    // 0 while the file is no site.
+    void setBuilding(int building);
+    int building() const;
     // Occupancy maps: the cleaning steps and the room segmentation, each re-imports.
     void setMapCleaning(const MapCleaningOptions& cleaning);
     void setRoomSegmentation(RoomSegmentationMethod method);
@@ -77,6 +81,8 @@ private:
     QListWidget* warnings_;
     QLabel* summary_;
     QCheckBox* newDocument_;
+    QLabel* buildingLabel_;
+    QComboBox* building_;           // shown for a site of several buildings
     QGroupBox* mapGroup_ = nullptr; // occupancy maps only
     QComboBox* unknown_ = nullptr;
     QDoubleSpinBox* speckle_ = nullptr;

@@ -4,6 +4,7 @@
 #include "document/Document.h"
 #include "document/PlannerMessages.h"
 #include "formats/FileIO.h"
+#include "formats/PlanIO.h"
 
 #include <QCoreApplication>
 #include <QDir>
@@ -40,12 +41,41 @@ Project loadResource(const QString& path) {
     }
 }
 
+// The project of `path`, or of one building of a site (see loadDocument). False: the user
+// chose none.
+bool loadProjectOrBuilding(const QString& path, std::optional<int> building,
+                           const BuildingChooser& chooseBuilding, Project& project) {
+    if (path.startsWith(QLatin1Char(':'))) {
+        project = loadResource(path);
+        return true;
+    }
+    try {
+        project = loadProjectFile(path.toStdString(), building);
+    } catch (const SiteError& e) {
+        if (!chooseBuilding)
+            throw;
+        building = chooseBuilding(e.buildingAreas());
+        if (!building)
+            return false;
+        project = loadProjectFile(path.toStdString(), building);
+    }
+    // Saved beside the site under its own name ("site-building-2.fcproj").
+    if (building && !path.endsWith(QLatin1String(".fcproj"), Qt::CaseInsensitive))
+        project.plan.name += "-building-" + std::to_string(*building);
+    return true;
+}
+
 } // namespace
 
-std::unique_ptr<Document> loadDocument(const QString& path, QString* error, QStringList* notes) {
+std::unique_ptr<Document> loadDocument(const QString& path, QString* error, QStringList* notes,
+                                       std::optional<int> building,
+                                       const BuildingChooser& chooseBuilding) {
+    if (error)
+        error->clear();
     try {
-        Project project = path.startsWith(QLatin1Char(':')) ? loadResource(path)
-                                                            : loadProjectFile(path.toStdString());
+        Project project;
+        if (!loadProjectOrBuilding(path, building, chooseBuilding, project))
+            return nullptr;
         if (notes)
             for (const std::string& note : project.notes)
                 notes->append(fromStd(note));

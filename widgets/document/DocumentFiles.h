@@ -3,7 +3,10 @@
 
 #include <QString>
 #include <QStringList>
+#include <functional>
 #include <memory>
+#include <optional>
+#include <vector>
 
 namespace fc::ui {
 
@@ -17,8 +20,14 @@ extern const char* const kSamplePlanPath;
 // needing repair, see Document::needsRepair). On failure returns null
 // and sets *error to a one-line message naming the file. *notes (when given) gets what
 // reading did that the user should hear of (longitude/latitude reprojected to metres).
+// A GeoJSON site of several buildings opens one building: `building` (1 = the largest), or
+// the one `chooseBuilding` picks from their areas (m^2, largest first); when it picks none,
+// nothing opens and *error is left empty. Without either, the site is refused.
+using BuildingChooser = std::function<std::optional<int>(const std::vector<double>& areas)>;
 std::unique_ptr<Document> loadDocument(const QString& path, QString* error,
-                                       QStringList* notes = nullptr);
+                                       QStringList* notes = nullptr,
+                                       std::optional<int> building = std::nullopt,
+                                       const BuildingChooser& chooseBuilding = {});
 
 // Writes the project atomically (temporary file + rename) as .fcproj, then marks the
 // document saved under that name. Returns false and sets *error on failure.

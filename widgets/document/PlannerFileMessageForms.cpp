@@ -105,13 +105,12 @@ std::vector<MessageForm> fileMessageForms() {
                     QT_TRANSLATE_NOOP("PlannerMessages",
                                       "%1 has no name: rooms need one in properties.name.")),
         messageForm(R"re(^(\d+) buildings \(boundary polygons of (.*) m2, largest first\); a )re"
-                    R"re(plan holds one building: choose one with `floorcover-cli import FILE )re"
-                    R"re(--building K --out PLAN\.fcproj`, K = 1\.\.\d+$)re",
+                    R"re(plan holds one building: choose one with --building K, K = 1\.\.\d+ )re"
+                    R"re(\(.*\)$)re",
                     QT_TRANSLATE_NOOP("PlannerMessages",
                                       "The file holds %1 buildings (outer walls of %2 m², "
-                                      "largest first), and a plan holds one: import each "
-                                      "building on its own with the command-line tool's import "
-                                      "command.")),
+                                      "largest first), and a plan holds one: choose one as "
+                                      "you open it.")),
         messageForm(R"re(^{ring} has a hole; free space inside an obstacle is not supported$)re",
                     QT_TRANSLATE_NOOP("PlannerMessages",
                                       "%1 has a hole; floor inside an obstacle is not "

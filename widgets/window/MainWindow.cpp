@@ -5,6 +5,7 @@
 #include "canvas/PlanScene.h"
 #include "dialogs/CompareDialog.h"
 #include "dialogs/PreferencesDialog.h"
+#include "dialogs/SiteBuildingChoice.h"
 #include "docks/LegendDock.h"
 #include "docks/PathPreviewBar.h"
 #include "docks/PlanningDock.h"
@@ -390,12 +391,19 @@ void MainWindow::newDocument() {
     tools_->setActiveTool(tools_->findTool(QStringLiteral("drawBoundary")));
 }
 
-bool MainWindow::openFile(const QString& path) {
+bool MainWindow::openFile(const QString& path, std::optional<int> building) {
     QString error;
     QStringList notes;
-    std::unique_ptr<Document> document = loadDocument(path, &error, &notes);
+    BuildingChooser chooseBuilding;
+    if (dialogsEnabled_) // a site of several buildings: which one (else refused with its list)
+        chooseBuilding = [this, &path](const std::vector<double>& areas) {
+            return askForSiteBuilding(this, QFileInfo(path).fileName(), areas);
+        };
+    std::unique_ptr<Document> document =
+        loadDocument(path, &error, &notes, building, chooseBuilding);
     if (!document) {
-        showError(error);
+        if (!error.isEmpty()) // empty: no building chosen
+            showError(error);
         return false;
     }
     setDocument(std::move(document));

@@ -11,6 +11,7 @@
 #include <QPageSize>
 #include <array>
 #include <memory>
+#include <optional>
 
 class QAction;
 class QLabel;
@@ -61,8 +62,9 @@ public:
     }
 
     // Replaces the document by the file's; on failure shows the message and keeps the
-    // current document.
-    bool openFile(const QString& path);
+    // current document. A GeoJSON site of several buildings opens `building` (1 = the
+    // largest), or the one the user picks when dialogs are on.
+    bool openFile(const QString& path, std::optional<int> building = std::nullopt);
     // File > Import without the dialog: the imported plan replaces the current document's
     // (one undoable edit, robot settings kept) or opens as a new, unsaved document.
     bool applyImport(const QString& path, const ImportResult& imported, bool asNewDocument);
@@ -92,7 +94,8 @@ public:
     // One-page PDF report of the plan, path, metrics and robot profile.
     bool exportReport(const QString& path, const QPageSize& pageSize = QPageSize(QPageSize::A4));
     // Opens PLAN (or the sample), plans, and saves the whole window as a PNG.
-    bool renderScreenshot(const QString& path, const QString& planPath, QString* error);
+    bool renderScreenshot(const QString& path, const QString& planPath, QString* error,
+                          std::optional<int> building = std::nullopt);
 
     // Offers the document of a session that ended without saving (asks first when dialogs
     // are on). Returns true when it was recovered.

@@ -256,14 +256,15 @@ bool MainWindow::exportReport(const QString& path, const QPageSize& pageSize) {
     return true;
 }
 
-bool MainWindow::renderScreenshot(const QString& path, const QString& planPath, QString* error) {
+bool MainWindow::renderScreenshot(const QString& path, const QString& planPath, QString* error,
+                                  std::optional<int> building) {
     setDialogsEnabled(false);
     setAttribute(Qt::WA_DontShowOnScreen); // rendered, never mapped on a real display
     resize(1400, 900);
     show();
     if (planPath.isEmpty())
         openSample();
-    else if (!openFile(planPath)) {
+    else if (!openFile(planPath, building)) {
         *error = lastError_;
         return false;
     }
