@@ -95,9 +95,10 @@ commands:
 PLAN is a GeoJSON floor plan (.geojson) or a FloorCover project (.fcproj). A GeoJSON site
 of several buildings (boundary polygons) is planned one building at a time: --building K,
 1 = the largest (plan, graph, train, compare, tile, export); its obstacles and rooms come
-with it. plan --building all plans every building: a path file each (--out site.csv writes
-site-building-K.csv), one JSON line of the site's totals with each building's metrics under
-"buildings"; --rooms, --start and --end apply to the building that holds them.
+with it. plan without --building (or with --building all) plans every building: a path
+file each (--out site.csv writes site-building-K.csv), one JSON line of the site's totals
+with each building's metrics under "buildings"; --rooms, --start and --end apply to the
+building that holds them.
 Exit codes: 0 success, 2 bad input (one line on stderr), 3 coverage loss with --strict,
 1 internal error.
 )";
@@ -270,7 +271,17 @@ int commandPlan(const Arguments& args) {
     if (args.text("--building") == "all")
         return commandPlanSite(args);
     const std::string& path = planPath(args);
-    const Project project = loadProject(path, args);
+    Project project;
+    try {
+        project = loadProject(path, args);
+    } catch (const SiteError& e) {
+        // A site without --building: every building, each on its own (what a user handing
+        // over the site's file wants), and said so.
+        std::cerr << "floorcover-cli: note: " << path << ": " << e.buildingAreas().size()
+                  << " buildings, each planned on its own (--building K plans one)"
+                  << (args.has("--out") ? "; a path file each, NAME-building-K" : "") << "\n";
+        return commandPlanSite(args);
+    }
     PlanRequest request;
     const PlanResult result = planFromArguments(path, project, args, request);
     if (auto out = args.text("--out"))

@@ -30,7 +30,7 @@ const std::string& planPath(const Arguments& args);
 // loadProjectFile, its notes printed on stderr; --building K picks a building of a site.
 Project loadProject(const std::string& path, const Arguments& args);
 
-// SitePlanCommand.cpp: `plan SITE --building all`, every building of a site in one run.
+// SitePlanCommand.cpp: `plan SITE` (or --building all), every building of a site in one run.
 int commandPlanSite(const Arguments& args);
 int commandTrain(const Arguments& args);
 int commandTile(const Arguments& args);   // TileCommand.cpp: the tiling robot

@@ -1,5 +1,5 @@
-// `floorcover-cli plan SITE --building all`: every building of a GeoJSON site planned in one
-// run, one path file per building ("site-building-2.csv" for --out site.csv) and one JSON
+// `floorcover-cli plan SITE` (or `--building all`): every building of a GeoJSON site planned
+// in one run, one path file per building ("site-building-2.csv" for --out site.csv) and one JSON
 // line: the site's totals, then each building's metrics under "buildings". The robot is
 // carried between buildings, so no transit joins them.
 #include "CliCommon.h"

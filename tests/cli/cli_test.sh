@@ -139,6 +139,12 @@ done
 for name in $(sed -n 's/^| `\([^`]*\)` |.*/\1/p' "$data/README.md"); do
   expect_bad_input "bad input $name" "$data/$name"
 done
+# A site of two buildings: plan plans each, graph needs one (--building K).
+check "plan a site" cli plan "$data/two-boundaries.geojson" --out "$work/site.csv"
+check "a path per building" test -s "$work/site-building-1.csv" -a -s "$work/site-building-2.csv"
+"$cli" graph "$data/two-boundaries.geojson" --out "$work/site-graph.json" >/dev/null 2>"$work/site.err"
+check "graph of a site is bad input" test $? -eq 2
+check "graph of a site names --building" grep -q -- "--building K" "$work/site.err"
 # A plan whose own rings are wrong names the repair in its one line, and the repair it names
 # gives a plan that plans.
 cp "$data/overlapping-holes.geojson" "$work/overlapping.geojson"

@@ -122,8 +122,8 @@ bad "obstacle across the wall" "$work/crossing.wkt" --out "$work/x.geojson"
   grep -q "repaired:" "$work/err" && "$cli" plan "$work/repaired.geojson" >/dev/null 2>&1 ||
   fail "--repair: $(cat "$work/err")"
 
-# A site of two buildings (a MultiPolygon boundary at UTM coordinates): plan refuses it and
-# names the buildings; import and plan take one at a time with its own obstacles and rooms.
+# A site of two buildings (a MultiPolygon boundary at UTM coordinates): graph refuses it and
+# names the buildings, plan plans each; import and plan take one at a time with --building K.
 cat >"$work/site.geojson" <<'JSON'
 {"type":"FeatureCollection","features":[
 {"type":"Feature","properties":{"role":"boundary"},"geometry":{"type":"MultiPolygon","coordinates":[
@@ -133,9 +133,15 @@ cat >"$work/site.geojson" <<'JSON'
 {"type":"Feature","properties":{"role":"room","name":"Hall B"},"geometry":{"type":"Polygon","coordinates":[[[500040,5000000],[500050,5000000],[500050,5000008],[500040,5000008],[500040,5000000]]]}}
 ]}
 JSON
-"$cli" plan "$work/site.geojson" >/dev/null 2>"$work/err"
+"$cli" graph "$work/site.geojson" --out "$work/g.json" >/dev/null 2>"$work/err"
 [ $? -eq 2 ] && grep -q "2 buildings (boundary polygons of 240, 80 m2" "$work/err" ||
-  fail "site planned as one plan: $(cat "$work/err")"
+  fail "site graphed as one plan: $(cat "$work/err")"
+# plan without --building plans each building on its own, and says so.
+"$cli" plan "$work/site.geojson" --out "$work/whole.geojson" >"$work/out" 2>"$work/err" &&
+  grep -q "2 buildings, each planned on its own" "$work/err" &&
+  [ -s "$work/whole-building-1.geojson" ] && [ -s "$work/whole-building-2.geojson" ] &&
+  grep -q '"buildings":\[{"building":1,' "$work/out" ||
+  fail "plan of a site: $(cat "$work/out" "$work/err")"
 "$cli" import "$work/site.geojson" --building 2 --out "$work/b2.fcproj" >"$work/out" 2>/dev/null &&
   grep -q '"free_area":76.000,"obstacles":1,"rooms":1' "$work/out" &&
   "$cli" plan "$work/b2.fcproj" >"$work/out" 2>/dev/null && grep -q '"coverage":1.0' "$work/out" ||
