@@ -268,9 +268,16 @@ constexpr int kExitCoverageLoss = 3;
 
 int commandPlan(const Arguments& args) {
     args.allowOnly(kPlanOptions);
-    if (args.text("--building") == "all")
-        return commandPlanSite(args);
     const std::string& path = planPath(args);
+    if (args.text("--building") == "all") {
+        int count = 1; // a plan of one building is a site of one
+        try {
+            loadProjectFile(path);
+        } catch (const SiteError& e) {
+            count = static_cast<int>(e.buildingAreas().size());
+        }
+        return commandPlanSite(args.with("--building", std::nullopt), count);
+    }
     Project project;
     try {
         project = loadProject(path, args);
@@ -280,7 +287,7 @@ int commandPlan(const Arguments& args) {
         std::cerr << "floorcover-cli: note: " << path << ": " << e.buildingAreas().size()
                   << " buildings, each planned on its own (--building K plans one)"
                   << (args.has("--out") ? "; a path file each, NAME-building-K" : "") << "\n";
-        return commandPlanSite(args);
+        return commandPlanSite(args, static_cast<int>(e.buildingAreas().size()));
     }
     PlanRequest request;
     const PlanResult result = planFromArguments(path, project, args, request);

@@ -14,16 +14,6 @@ namespace fc::cli {
 
 namespace {
 
-// How many buildings the file holds (1 for a plan of one, or a project).
-int buildingCount(const std::string& path) {
-    try {
-        loadProjectFile(path);
-        return 1;
-    } catch (const SiteError& e) {
-        return static_cast<int>(e.buildingAreas().size());
-    }
-}
-
 // "site.csv" -> "site-building-2.csv".
 std::string buildingFile(const std::string& out, int building) {
     const std::filesystem::path p(out);
@@ -59,16 +49,16 @@ Metrics siteTotals(const std::vector<Metrics>& parts) {
 
 } // namespace
 
-int commandPlanSite(const Arguments& args) {
+int commandPlanSite(const Arguments& args, int count) {
     const std::string& path = planPath(args);
-    const int count = buildingCount(path);
     std::vector<Project> buildings;
-    for (int k = 1; k <= count; ++k)
+    for (int k = 1; k <= count; ++k) {
         buildings.push_back(
-            k == 1 ? loadProject(path,
-                                 args.with("--building", count > 1 ? std::optional<std::string>("1")
-                                                                   : std::nullopt))
-                   : loadProjectFile(path, k)); // the notes once
+            loadProjectFile(path, count > 1 ? std::optional<int>(k) : std::nullopt));
+        if (k == 1) // the same notes for every building: said once
+            for (const std::string& note : buildings.back().notes)
+                std::cerr << "floorcover-cli: note: " << path << ": " << note << "\n";
+    }
     // Rooms, start and end go to the building that holds them; each must be in one.
     const std::vector<std::string> asked = args.list("--rooms");
     for (const std::string& name : asked)
