@@ -4,7 +4,6 @@
 #include <cstdint>
 #include <limits>
 #include <queue>
-#include <unordered_set>
 
 namespace fc {
 namespace {
@@ -75,30 +74,64 @@ public:
     explicit BlockedPairs(int n) : n_(n) {
         if (n_ <= kDenseLimit)
             bits_.assign((static_cast<std::size_t>(n_) * n_ + 63) / 64, 0);
+        else
+            slots_.assign(std::size_t{1} << 12, kEmpty);
     }
     bool has(int i, int j) const {
         const std::uint64_t k = key(i, j);
         if (n_ <= kDenseLimit)
             return (bits_[k >> 6] >> (k & 63)) & 1u;
-        return sparse_.count(k) != 0;
+        for (std::size_t s = slotOf(k);; s = (s + 1) & (slots_.size() - 1)) {
+            if (slots_[s] == k)
+                return true;
+            if (slots_[s] == kEmpty)
+                return false;
+        }
     }
     void add(int i, int j) {
         const std::uint64_t k = key(i, j);
-        if (n_ <= kDenseLimit)
+        if (n_ <= kDenseLimit) {
             bits_[k >> 6] |= std::uint64_t{1} << (k & 63);
-        else
-            sparse_.insert(k);
+            return;
+        }
+        if (2 * (count_ + 1) > slots_.size())
+            grow();
+        insert(k);
     }
 
 private:
     static constexpr int kDenseLimit = 4096; // 2 MB of bits at most
+    // Above it an open-addressing set (linear probing, at most half full): a node-based
+    // std::unordered_set spent more time in its lookups than the segment tests they saved.
+    static constexpr std::uint64_t kEmpty = ~std::uint64_t{0};
     std::uint64_t key(int i, int j) const {
         return static_cast<std::uint64_t>(std::min(i, j)) * static_cast<std::uint64_t>(n_) +
                static_cast<std::uint64_t>(std::max(i, j));
     }
+    std::size_t slotOf(std::uint64_t k) const {
+        return static_cast<std::size_t>((k * 0x9e3779b97f4a7c15ull) >> 20) & (slots_.size() - 1);
+    }
+    void insert(std::uint64_t k) {
+        std::size_t s = slotOf(k);
+        while (slots_[s] != kEmpty && slots_[s] != k)
+            s = (s + 1) & (slots_.size() - 1);
+        if (slots_[s] == kEmpty) {
+            slots_[s] = k;
+            ++count_;
+        }
+    }
+    void grow() {
+        std::vector<std::uint64_t> old(slots_.size() * 2, kEmpty);
+        old.swap(slots_);
+        count_ = 0;
+        for (const std::uint64_t k : old)
+            if (k != kEmpty)
+                insert(k);
+    }
     int n_;
     std::vector<std::uint64_t> bits_;
-    std::unordered_set<std::uint64_t> sparse_;
+    std::vector<std::uint64_t> slots_;
+    std::size_t count_ = 0;
 };
 
 } // namespace
@@ -156,6 +189,60 @@ void ClearanceField::buildCornerPoints() const {
             addGapMiddle(p, bis);
         }
     }
+    bucketCornerPoints();
+}
+
+void ClearanceField::bucketCornerPoints() const {
+    const double width = std::max(extent_.maxX - extent_.minX, 1e-9);
+    const double height = std::max(extent_.maxY - extent_.minY, 1e-9);
+    // Buckets of 2 r at least (a search window is 8 r across or more), 128 a side at most.
+    bucketSize_ = std::max({2 * radius_, width / 128, height / 128});
+    bucketColumns_ = static_cast<int>(width / bucketSize_) + 1;
+    bucketRows_ = static_cast<int>(height / bucketSize_) + 1;
+    cornerBuckets_.assign(static_cast<std::size_t>(bucketColumns_) * bucketRows_, {});
+    for (std::size_t i = 0; i < cornerPoints_.size(); ++i) {
+        const Vec2 c = cornerPoints_[i];
+        const int col =
+            std::clamp(static_cast<int>((c.x - extent_.minX) / bucketSize_), 0, bucketColumns_ - 1);
+        const int row =
+            std::clamp(static_cast<int>((c.y - extent_.minY) / bucketSize_), 0, bucketRows_ - 1);
+        cornerBuckets_[static_cast<std::size_t>(row) * bucketColumns_ + col].push_back(
+            static_cast<int>(i));
+    }
+}
+
+template <class Visit>
+void ClearanceField::forBucketsIn(const BoundingBox& window, Visit&& visit) const {
+    cornerPoints();
+    auto index = [&](double v, double origin, int count) {
+        return std::clamp(static_cast<int>(std::floor((v - origin) / bucketSize_)), 0, count - 1);
+    };
+    const int c0 = index(window.minX, extent_.minX, bucketColumns_);
+    const int c1 = index(window.maxX, extent_.minX, bucketColumns_);
+    const int r0 = index(window.minY, extent_.minY, bucketRows_);
+    const int r1 = index(window.maxY, extent_.minY, bucketRows_);
+    for (int row = r0; row <= r1; ++row)
+        for (int col = c0; col <= c1; ++col) {
+            // Edge buckets also hold the points clamped into them from outside the extent.
+            const bool inside = col > c0 && col < c1 && row > r0 && row < r1 && col > 0 &&
+                                col < bucketColumns_ - 1 && row > 0 && row < bucketRows_ - 1;
+            visit(cornerBuckets_[static_cast<std::size_t>(row) * bucketColumns_ + col], inside);
+        }
+}
+
+std::vector<int> ClearanceField::cornerIndicesIn(const BoundingBox& window) const {
+    std::vector<int> found;
+    forBucketsIn(window, [&](const std::vector<int>& bucket, bool inside) {
+        for (const int i : bucket) {
+            const Vec2 c = cornerPoints_[static_cast<std::size_t>(i)];
+            if (inside || (c.x >= window.minX && c.x <= window.maxX && c.y >= window.minY &&
+                           c.y <= window.maxY))
+                found.push_back(i);
+        }
+    });
+    // The order of a scan over all points, so that searches break ties as before.
+    std::sort(found.begin(), found.end());
+    return found;
 }
 
 // A gap across from corner p barely wider than the robot (a traced doorway of 2r to 2.05r):
@@ -363,8 +450,17 @@ int ClearanceField::openRegionOf(Vec2 p) const {
 
 std::size_t ClearanceField::cornersIn(const BoundingBox& window) const {
     std::size_t n = 0;
-    for (const Vec2& c : cornerPoints())
-        n += c.x >= window.minX && c.x <= window.maxX && c.y >= window.minY && c.y <= window.maxY;
+    forBucketsIn(window, [&](const std::vector<int>& bucket, bool inside) {
+        if (inside) {
+            n += bucket.size();
+            return;
+        }
+        for (const int i : bucket) {
+            const Vec2 c = cornerPoints_[static_cast<std::size_t>(i)];
+            n += c.x >= window.minX && c.x <= window.maxX && c.y >= window.minY &&
+                 c.y <= window.maxY;
+        }
+    });
     return n;
 }
 
@@ -375,9 +471,8 @@ Polyline ClearanceField::searchWindow(Vec2 a, Vec2 b, const BoundingBox& window,
     for (const Vec2& h : hints)
         if (isClear(h))
             pts.push_back(h);
-    for (const Vec2& c : cornerPoints())
-        if (c.x >= window.minX && c.x <= window.maxX && c.y >= window.minY && c.y <= window.maxY)
-            pts.push_back(c);
+    for (const int i : cornerIndicesIn(window))
+        pts.push_back(cornerPoints_[static_cast<std::size_t>(i)]);
     const int n = static_cast<int>(pts.size());
     // Lazy A*: an entry (v reached from u) is pushed unchecked and its segment tested
     // only when it is popped, so most of the n^2 visibility tests never run. Only an entry

@@ -77,6 +77,15 @@ private:
     std::vector<Ring> rings_;
     mutable std::once_flag cornersBuilt_;
     mutable std::vector<Vec2> cornerPoints_; // clear points hugging wall corners
+    // cornerPoints_ by square bucket (indices ascending): a window's points without a scan
+    // of all of them (an uncleaned map has thousands, and every search round asks).
+    mutable std::vector<std::vector<int>> cornerBuckets_;
+    mutable int bucketColumns_ = 0, bucketRows_ = 0;
+    mutable double bucketSize_ = 1;
+    void bucketCornerPoints() const; // part of buildCornerPoints
+    // Calls visit(bucket, fullyInside) for every bucket the window meets.
+    template <class Visit> void forBucketsIn(const BoundingBox& window, Visit&& visit) const;
+    std::vector<int> cornerIndicesIn(const BoundingBox& window) const; // ascending
     BoundingBox extent_;
     mutable std::once_flag regionsBuilt_;
     mutable std::unique_ptr<OpenRegions> regions_;

@@ -246,6 +246,37 @@ TEST(Geometry, GridRouteAmongThousandsOfSpecksIsClearAndNearlyShortest) {
     EXPECT_TRUE(field.findPath({4.0, 17.0}, {17.5, 17.5}).empty());
 }
 
+// Among thousands of speck corners with the long wall's only opening a doorway barely wider
+// than the robot: the grid has no route through it, so the visibility search runs over the
+// window's thousands of corner points (the bucketed corner lookup and the large-window set of
+// blocked pairs). Its path goes through the doorway and keeps clear of every wall.
+TEST(Geometry, FindPathAmongThousandsOfSpecksThroughATightDoorway) {
+    std::mt19937 rng(29);
+    std::vector<Ring> rings = speckledFloor(rng);
+    const double r = 0.2, h = 1.01 * r, door = 10.0;
+    rings[1] = {{9.8, -0.5}, {10.2, -0.5}, {10.2, door - h}, {9.8, door - h}};
+    rings.push_back({{9.8, door + h}, {10.2, door + h}, {10.2, 20.5}, {9.8, 20.5}});
+    const ClearanceField field(rings, r);
+    const BoundingBox extent = extentOf(rings);
+    const OpenRegions regions(field.walls(), extent, r - field.acceptance());
+    // Nearly in line with the doorway (an unbounded search that must turn far away from
+    // the straight line runs for minutes among the specks: the planner bounds its searches).
+    const Vec2 a{6.5, 9.3}, b{13.7, 10.9};
+    ASSERT_TRUE(field.isClear(a) && field.isClear(b));
+    EXPECT_TRUE(
+        regions.clearRoute(a, b, extent, [&](Vec2 p, Vec2 q) { return field.segmentIsClear(p, q); })
+            .empty());
+    const Polyline path = field.findPath(a, b);
+    ASSERT_GE(path.size(), 3u);
+    EXPECT_TRUE(keepsClearOfEveryWall(field, path));
+    const Vec2 gap{10.0, door};
+    const double through = distance(a, gap) + distance(gap, b);
+    EXPECT_GE(polylineLength(path), through - 0.05);
+    EXPECT_LE(polylineLength(path), through * 1.10);
+    // The same question asked the other way round finds a path as short.
+    EXPECT_NEAR(polylineLength(field.findPath(b, a)), polylineLength(path), 0.05 * through);
+}
+
 // Searches are remembered by all their arguments: a search whose window is too small to go
 // round the wall fails, the unbounded one then succeeds, and the small one still fails.
 TEST(Geometry, RememberedSearchesAnswerOnlyTheSameQuestion) {
