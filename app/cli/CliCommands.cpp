@@ -98,7 +98,8 @@ of several buildings (boundary polygons) is planned one building at a time: --bu
 with it. plan without --building (or with --building all) plans every building: a path
 file each (--out site.csv writes site-building-K.csv), one JSON line of the site's totals
 with each building's metrics under "buildings"; --rooms, --start and --end apply to the
-building that holds them.
+building that holds them. A building that cannot be planned is left out with a warning
+and a "skipped" entry (with --strict: exit 3).
 Exit codes: 0 success, 2 bad input (one line on stderr), 3 coverage loss with --strict,
 1 internal error.
 )";
@@ -270,13 +271,13 @@ int commandPlan(const Arguments& args) {
     args.allowOnly(kPlanOptions);
     const std::string& path = planPath(args);
     if (args.text("--building") == "all") {
-        int count = 1; // a plan of one building is a site of one
+        std::vector<double> areas; // none: a plan of one building is a site of one
         try {
             loadProjectFile(path);
         } catch (const SiteError& e) {
-            count = static_cast<int>(e.buildingAreas().size());
+            areas = e.buildingAreas();
         }
-        return commandPlanSite(args.with("--building", std::nullopt), count);
+        return commandPlanSite(args.with("--building", std::nullopt), areas);
     }
     Project project;
     try {
@@ -287,7 +288,7 @@ int commandPlan(const Arguments& args) {
         std::cerr << "floorcover-cli: note: " << path << ": " << e.buildingAreas().size()
                   << " buildings, each planned on its own (--building K plans one)"
                   << (args.has("--out") ? "; a path file each, NAME-building-K" : "") << "\n";
-        return commandPlanSite(args, static_cast<int>(e.buildingAreas().size()));
+        return commandPlanSite(args, e.buildingAreas());
     }
     PlanRequest request;
     const PlanResult result = planFromArguments(path, project, args, request);

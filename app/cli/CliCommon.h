@@ -31,8 +31,9 @@ const std::string& planPath(const Arguments& args);
 Project loadProject(const std::string& path, const Arguments& args);
 
 // SitePlanCommand.cpp: `plan SITE` (or --building all), every building of a site in one run.
-// count: the site's buildings (1: a plan of one building, planned as such a site).
-int commandPlanSite(const Arguments& args, int count);
+// areas: the site's buildings' outline areas, largest first (SiteError::buildingAreas; empty:
+// a plan of one building, planned as such a site).
+int commandPlanSite(const Arguments& args, const std::vector<double>& areas);
 int commandTrain(const Arguments& args);
 int commandTile(const Arguments& args);   // TileCommand.cpp: the tiling robot
 int commandImport(const Arguments& args); // ImportCommand.cpp: DXF, ROS maps, WKT to a plan

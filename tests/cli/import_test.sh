@@ -177,6 +177,32 @@ JSON
 "$cli" plan "$work/site.geojson" --building all --start 500030,5000001 >/dev/null 2>"$work/err"
 [ $? -eq 2 ] && grep -q -- '--start lies in no building of the site' "$work/err" ||
   fail "--building all, start outside: $(cat "$work/err")"
+# A building that cannot be planned (a shed smaller than the robot, a self-crossing outline)
+# is left out loudly, and the rest of the site is planned; --strict fails on it, and a start
+# inside it is refused with its reason.
+cat >"$work/shed.geojson" <<'JSON'
+{"type":"FeatureCollection","features":[
+{"type":"Feature","properties":{"role":"boundary"},"geometry":{"type":"Polygon","coordinates":[[[0,0],[20,0],[20,12],[0,12],[0,0]]]}},
+{"type":"Feature","properties":{"role":"boundary"},"geometry":{"type":"Polygon","coordinates":[[[30,0],[30.4,0],[30.4,0.4],[30,0.4],[30,0]]]}},
+{"type":"Feature","properties":{"role":"boundary"},"geometry":{"type":"Polygon","coordinates":[[[40,0],[50,0],[50,8],[40,8],[40,0]]]}},
+{"type":"Feature","properties":{"role":"boundary"},"geometry":{"type":"Polygon","coordinates":[[[60,0],[66,6],[66,0],[60,6],[60,0]]]}}
+]}
+JSON
+"$cli" plan "$work/shed.geojson" --out "$work/shed.csv" >"$work/out" 2>"$work/err" &&
+  [ -s "$work/shed-building-1.csv" ] && [ -s "$work/shed-building-2.csv" ] &&
+  [ ! -e "$work/shed-building-3.csv" ] && grep -q '"ideal":320.0,' "$work/out" &&
+  grep -q '"skipped_buildings":2,' "$work/out" &&
+  grep -q '{"building":3,"skipped":"free area 0.16 m^2' "$work/out" &&
+  grep -q '{"building":4,"skipped":"boundary intersects itself' "$work/out" &&
+  grep -q "building 3 (an outline of 0.16 m^2) not planned, left out" "$work/err" &&
+  grep -q "building 4 not planned, left out" "$work/err" ||
+  fail "site with an unplannable building: $(cat "$work/out" "$work/err")"
+"$cli" plan "$work/shed.geojson" --strict >/dev/null 2>"$work/err"
+[ $? -eq 3 ] && grep -q "a building was not planned (--strict)" "$work/err" ||
+  fail "--strict on a skipped building: $(cat "$work/err")"
+"$cli" plan "$work/shed.geojson" --start 30.2,0.2 >/dev/null 2>"$work/err"
+[ $? -eq 2 ] && grep -q "(building 3): the robot (0.60 m across) does not fit" "$work/err" ||
+  fail "start in a shed smaller than the robot: $(cat "$work/err")"
 "$cli" graph "$work/site.geojson" --building all --out "$work/g.json" >/dev/null 2>"$work/err"
 [ $? -eq 2 ] && grep -q "only \`plan\` plans every building" "$work/err" ||
   fail "graph --building all: $(cat "$work/err")"
