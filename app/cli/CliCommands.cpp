@@ -10,6 +10,7 @@
 #include "pipeline/Comparison.h"
 #include "pipeline/Planner.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -176,7 +177,9 @@ void placeEndpoint(const std::string& path, const PlanRequest& request, std::opt
                                                               : request.robot.coverageWidth;
     const RobotPlacement placed = placeRobot(request.plan, *point, diameter);
     char at[96], size[32];
-    std::snprintf(at, sizeof at, "(%.3f, %.3f)", point->x, point->y);
+    // Millimetres for any plan's coordinates (UTM included); absurd ones in short form.
+    const bool absurd = std::max(std::abs(point->x), std::abs(point->y)) >= 1e9;
+    std::snprintf(at, sizeof at, absurd ? "(%.6g, %.6g)" : "(%.3f, %.3f)", point->x, point->y);
     std::snprintf(size, sizeof size, "%.2f m", diameter);
     switch (placed.problem) {
     case PlacementProblem::OutsideFloor:

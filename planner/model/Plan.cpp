@@ -15,10 +15,11 @@ double freeAreaOf(const Plan& plan) {
 void RobotProfile::validate() const {
     auto finitePositive = [](double v) { return std::isfinite(v) && v > 0.0; };
     std::ostringstream msg;
-    if (!finitePositive(robotDiameter))
-        msg << "robot diameter L must be a positive number (got " << robotDiameter << ")";
-    else if (!finitePositive(coverageWidth))
+    // W first: a width of 0 also lowers L to it, and the message should name what was given.
+    if (!finitePositive(coverageWidth))
         msg << "coverage width W must be a positive number (got " << coverageWidth << ")";
+    else if (!finitePositive(robotDiameter))
+        msg << "robot diameter L must be a positive number (got " << robotDiameter << ")";
     else if (!finitePositive(cleaningDiameter))
         msg << "cleaning diameter D must be a positive number (got " << cleaningDiameter << ")";
     else if (!finitePositive(speed))

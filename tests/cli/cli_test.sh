@@ -182,6 +182,20 @@ check "lon/lat path names epsg" grep -q 32632 "$work/lonlat-path.geojson"
 expect_bad_input "missing file" "$work/does-not-exist.geojson"
 expect_bad_input "robot wider than W" "$plans/simple.geojson" --robot-diameter 2 --width 1
 expect_bad_input "negative width" "$plans/simple.geojson" --width -1
+# A width of 0 also lowers L to it: the message names W, the option given.
+expect_bad_input "zero width" "$plans/simple.geojson" --width 0
+if grep -q "coverage width W must be a positive number (got 0)" "$work/err"; then
+  passed=$((passed + 1))
+else
+  failed=$((failed + 1)); echo "FAIL: --width 0 names W: $(cat "$work/err")"
+fi
+# An absurd start is named in short form, not in 300 digits.
+expect_bad_input "absurd start" "$plans/simple.geojson" --start 1e300,1e300
+if grep -q "start point (1e+300, 1e+300) lies outside the floor" "$work/err"; then
+  passed=$((passed + 1))
+else
+  failed=$((failed + 1)); echo "FAIL: absurd start in short form: $(cat "$work/err")"
+fi
 expect_bad_input "unknown room" "$plans/office.geojson" --rooms Kitchen
 expect_bad_input "unknown solver" "$plans/simple.geojson" --solver nonsense
 expect_bad_input "exact above its limit" "$plans/ward.geojson" --solver exact
