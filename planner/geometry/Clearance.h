@@ -76,7 +76,8 @@ private:
     void addGapMiddle(Vec2 corner, Vec2 away) const; // part of buildCornerPoints
     std::vector<Ring> rings_;
     mutable std::once_flag cornersBuilt_;
-    mutable std::vector<Vec2> cornerPoints_; // clear points hugging wall corners
+    mutable std::vector<Vec2> cornerPoints_;           // clear points hugging wall corners
+    mutable std::vector<OpenRegions::Portal> portals_; // tight gaps, for the grid's routes
     // cornerPoints_ by square bucket (indices ascending): a window's points without a scan
     // of all of them (an uncleaned map has thousands, and every search round asks).
     mutable std::vector<std::vector<int>> cornerBuckets_;

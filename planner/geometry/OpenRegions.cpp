@@ -4,6 +4,8 @@
 #include <cmath>
 #include <cstdlib>
 #include <limits>
+#include <map>
+#include <optional>
 #include <queue>
 
 namespace fc {
@@ -91,7 +93,7 @@ std::vector<int> labelComponents(const std::vector<char>& marked, int nx, int ny
 
 OpenRegions::OpenRegions(const SegmentIndex& walls, BoundingBox extent, double r,
                          Classification classification)
-    : box_(extent) {
+    : box_(extent), r_(r) {
     box_.minX -= r, box_.minY -= r, box_.maxX += r, box_.maxY += r;
     h_ = std::max(r / 6, std::sqrt(box_.width() * box_.height() / kMaxGridCells));
     nx_ = static_cast<int>(std::ceil(box_.width() / h_)) + 1;
@@ -170,6 +172,33 @@ bool OpenRegions::mayJoinWithin(Vec2 a, Vec2 b, const BoundingBox& window) const
     return false;
 }
 
+void OpenRegions::addPortals(const std::vector<Portal>& portals,
+                             const std::function<bool(Vec2, Vec2)>& sees) {
+    // Far enough to leave a traced channel a metre long. The way out runs straight along the
+    // gap to a point beside a surely clear node (the hop onto it is clear: every point within
+    // h sqrt(2)/2 of such a node is); the node's own row may lie a little off the gap's line
+    // and its far jamb hide it from the middle.
+    const int steps = static_cast<int>(std::ceil(6 * r_ / h_));
+    auto exit = [&](const Portal& portal, double side) -> std::optional<std::pair<size_t, Vec2>> {
+        for (int s = 1; s <= steps; ++s) {
+            const Vec2 q = portal.middle + portal.along * (side * s * h_);
+            const int i = static_cast<int>(std::lround((q.x - box_.minX) / h_));
+            const int j = static_cast<int>(std::lround((q.y - box_.minY) / h_));
+            if (i < 0 || j < 0 || i >= nx_ || j >= ny_)
+                return std::nullopt;
+            if (surelyClear_[index(i, j)])
+                return sees(portal.middle, q) ? std::optional(std::pair{index(i, j), q})
+                                              : std::nullopt;
+        }
+        return std::nullopt;
+    };
+    for (const Portal& portal : portals) {
+        const auto from = exit(portal, 1.0), to = exit(portal, -1.0);
+        if (from && to && clearLabel_[from->first] != clearLabel_[to->first])
+            bridges_.push_back({from->first, to->first, {from->second, portal.middle, to->second}});
+    }
+}
+
 Polyline OpenRegions::clearRoute(Vec2 a, Vec2 b, const BoundingBox& window,
                                  const std::function<bool(Vec2, Vec2)>& sees) const {
     const int i0 = std::max(0, static_cast<int>(std::ceil((window.minX - box_.minX) / h_)));
@@ -209,10 +238,32 @@ Polyline OpenRegions::clearRoute(Vec2 a, Vec2 b, const BoundingBox& window,
     if (starts.empty())
         return {};
     const auto ends = gates(b);
-    // Gates in different components of the surely clear nodes: no route anywhere, and the
-    // search below would explore the whole window to find that out.
+    auto localOf = [&](size_t global) -> std::optional<size_t> {
+        const int i = static_cast<int>(global % nx_), j = static_cast<int>(global / nx_);
+        if (i < i0 || i > i1 || j < j0 || j > j1)
+            return std::nullopt;
+        return static_cast<size_t>(j - j0) * w + (i - i0);
+    };
+    // The portals inside the window, by the local node on either side.
+    std::vector<std::pair<size_t, size_t>> crossings; // (local node, bridge), sorted
+    std::map<int, int> joinedTo;                      // component -> its representative
+    std::function<int(int)> find = [&](int c) {
+        const auto it = joinedTo.find(c);
+        return it == joinedTo.end() || it->second == c ? c : it->second = find(it->second);
+    };
+    for (size_t k = 0; k < bridges_.size(); ++k) {
+        const auto from = localOf(bridges_[k].from), to = localOf(bridges_[k].to);
+        if (!from || !to)
+            continue;
+        crossings.push_back({*from, k});
+        crossings.push_back({*to, k});
+        joinedTo[find(clearLabel_[bridges_[k].from])] = find(clearLabel_[bridges_[k].to]);
+    }
+    std::sort(crossings.begin(), crossings.end());
+    // Gates in different components of the surely clear nodes (joined by no portal): no route
+    // anywhere, and the search below would explore the whole window to find that out.
     auto componentOf = [&](size_t k) {
-        return clearLabel_[index(i0 + static_cast<int>(k % w), j0 + static_cast<int>(k / w))];
+        return find(clearLabel_[index(i0 + static_cast<int>(k % w), j0 + static_cast<int>(k / w))]);
     };
     const bool joined = std::any_of(starts.begin(), starts.end(), [&](const auto& s) {
         return std::any_of(ends.begin(), ends.end(), [&](const auto& e) {
@@ -223,8 +274,8 @@ Polyline OpenRegions::clearRoute(Vec2 a, Vec2 b, const BoundingBox& window,
         return {};
     constexpr size_t kNone = std::numeric_limits<size_t>::max();
     std::vector<float> g(count, INFINITY);
-    std::vector<size_t> parent(count, kNone);
-    std::vector<float> toEnd(count, INFINITY); // cost from an end gate on to b
+    std::vector<size_t> parent(count, kNone), via(count, kNone); // via: the bridge taken
+    std::vector<float> toEnd(count, INFINITY);                   // cost from an end gate on to b
     for (const auto& [d, k] : ends)
         toEnd[k] = static_cast<float>(d);
     struct Entry {
@@ -240,6 +291,14 @@ Polyline OpenRegions::clearRoute(Vec2 a, Vec2 b, const BoundingBox& window,
     float best = INFINITY;
     size_t bestEnd = kNone;
     const float diagonal = static_cast<float>(h_ * std::sqrt(2.0));
+    auto relax = [&](size_t k, size_t n, float step, size_t bridge) {
+        if (g[k] + step < g[n]) {
+            g[n] = g[k] + step;
+            parent[n] = k;
+            via[n] = bridge;
+            open.push({g[n] + static_cast<float>(distance(nodeAt(n), b)), g[n], n});
+        }
+    };
     while (!open.empty()) {
         const Entry top = open.top();
         open.pop();
@@ -257,20 +316,37 @@ Polyline OpenRegions::clearRoute(Vec2 a, Vec2 b, const BoundingBox& window,
                 if ((di == 0 && dj == 0) || x < 0 || y < 0 || x >= w || y > j1 - j0 ||
                     !surelyClear_[index(i0 + x, j0 + y)])
                     continue;
-                const size_t n = static_cast<size_t>(y) * w + x;
-                const float step = di != 0 && dj != 0 ? diagonal : static_cast<float>(h_);
-                if (g[k] + step < g[n]) {
-                    g[n] = g[k] + step;
-                    parent[n] = k;
-                    open.push({g[n] + static_cast<float>(distance(nodeAt(n), b)), g[n], n});
-                }
+                relax(k, static_cast<size_t>(y) * w + x,
+                      di != 0 && dj != 0 ? diagonal : static_cast<float>(h_), kNone);
             }
+        for (auto it =
+                 std::lower_bound(crossings.begin(), crossings.end(), std::pair{k, size_t{0}});
+             it != crossings.end() && it->first == k; ++it) {
+            const Bridge& bridge = bridges_[it->second];
+            const size_t n = *localOf(localOf(bridge.from) == k ? bridge.to : bridge.from);
+            const bool forward = localOf(bridge.from) == k; // way runs from `from` to `to`
+            const Vec2 in = forward ? bridge.way.front() : bridge.way.back();
+            const Vec2 out = forward ? bridge.way.back() : bridge.way.front();
+            relax(k, n,
+                  static_cast<float>(distance(nodeAt(k), in) + polylineLength(bridge.way) +
+                                     distance(out, nodeAt(n))),
+                  it->second);
+        }
     }
     if (bestEnd == kNone)
         return {};
     Polyline chain{b};
-    for (size_t k = bestEnd; k != kNone; k = parent[k])
+    for (size_t k = bestEnd; k != kNone; k = parent[k]) {
         chain.push_back(nodeAt(k));
+        if (via[k] == kNone)
+            continue;
+        // The bridge's way, from the node before it (parent) to this one.
+        const Bridge& bridge = bridges_[via[k]];
+        Polyline way = bridge.way;
+        if (localOf(bridge.from) == k)
+            std::reverse(way.begin(), way.end()); // way runs from `from` to `to`
+        chain.insert(chain.end(), way.rbegin(), way.rend());
+    }
     chain.push_back(a);
     std::reverse(chain.begin(), chain.end());
     // Pulled tight: from each kept point, on to the last point of the chain it still sees.

@@ -45,6 +45,17 @@ public:
     // The grid's labels, row by row (-1: closed), for comparisons.
     const std::vector<int>& labels() const { return label_; }
 
+    // A clear point in a gap too tight for surely clear nodes (a traced doorway a little
+    // wider than the robot), and the unit direction through it.
+    struct Portal {
+        Vec2 middle, along;
+    };
+    // Lets clearRoute pass through the portals that join surely clear nodes of different
+    // components: on each side, the first such node along the gap within a few radii that
+    // the middle sees (`sees`, as in clearRoute). Call once, before any clearRoute.
+    void addPortals(const std::vector<Portal>& portals,
+                    const std::function<bool(Vec2, Vec2)>& sees);
+
 private:
     size_t index(int i, int j) const { return static_cast<size_t>(j) * nx_ + i; }
     BoundingBox box_;
@@ -53,6 +64,18 @@ private:
     std::vector<int> label_;
     std::vector<char> surelyClear_;
     std::vector<int> clearLabel_; // components of the surely clear nodes
+    double r_ = 0;
+    // Portals that join two surely clear nodes of different components: the nodes and the
+    // way between them (beside `from`, the gap's middle, beside `to`).
+    struct Bridge {
+        size_t from, to;
+        Polyline way;
+    };
+    std::vector<Bridge> bridges_;
+    Vec2 nodePosition(size_t k) const {
+        return {box_.minX + static_cast<double>(k % nx_) * h_,
+                box_.minY + static_cast<double>(k / nx_) * h_};
+    }
 };
 
 } // namespace fc
