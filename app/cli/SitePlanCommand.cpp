@@ -15,6 +15,7 @@
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <set>
+#include <utility>
 
 namespace fc::cli {
 
@@ -92,6 +93,7 @@ int commandPlanSite(const Arguments& args, const std::vector<double>& areas) {
     std::vector<std::optional<Project>> buildings;
     std::vector<std::optional<Skipped>> skipped(static_cast<size_t>(count));
     std::optional<InputError> firstError;
+    bool notesSaid = false; // the same notes for every building: said once
     for (int k = 1; k <= count; ++k) {
         try {
             buildings.push_back(
@@ -104,8 +106,7 @@ int commandPlanSite(const Arguments& args, const std::vector<double>& areas) {
             skipped[k - 1] = Skipped{reasonOf(e.what(), path), areaOf(k)};
             continue;
         }
-        if (std::count_if(buildings.begin(), buildings.end(), [](const auto& b) { return b; }) ==
-            1) // the same notes for every building: said once
+        if (!std::exchange(notesSaid, true))
             for (const std::string& note : buildings.back()->notes)
                 std::cerr << "floorcover-cli: note: " << path << ": " << note << "\n";
     }

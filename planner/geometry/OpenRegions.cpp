@@ -323,8 +323,8 @@ Polyline OpenRegions::clearRoute(Vec2 a, Vec2 b, const BoundingBox& window,
                  std::lower_bound(crossings.begin(), crossings.end(), std::pair{k, size_t{0}});
              it != crossings.end() && it->first == k; ++it) {
             const Bridge& bridge = bridges_[it->second];
-            const size_t n = *localOf(localOf(bridge.from) == k ? bridge.to : bridge.from);
             const bool forward = localOf(bridge.from) == k; // way runs from `from` to `to`
+            const size_t n = *localOf(forward ? bridge.to : bridge.from);
             const Vec2 in = forward ? bridge.way.front() : bridge.way.back();
             const Vec2 out = forward ? bridge.way.back() : bridge.way.front();
             relax(k, n,
