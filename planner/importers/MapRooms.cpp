@@ -12,6 +12,9 @@ namespace {
 
 constexpr double kMinCells = 4.0;      // overlaps smaller than this are tracing noise
 constexpr double kMinPieceArea = 0.25; // m^2: a room piece smaller than this is a sliver
+// A border between two rooms up to this wide (m) and this deep across the wall is a doorway.
+constexpr double kMaxDoorWidth = 3.0;
+constexpr double kMaxDoorDepth = 0.6;
 
 double areaOf(const OGRGeometry* g) {
     return OGR_G_Area(OGRGeometry::ToHandle(const_cast<OGRGeometry*>(g)));
@@ -151,9 +154,9 @@ std::vector<Ring> splitAtPinches(Ring ring, double tolerance) {
 std::vector<Room> roomsFromLabels(const std::vector<std::int32_t>& labels,
                                   const std::vector<unsigned char>& free, int width, int height,
                                   const OGRGeometry& kept, double tolerance, const RosMapInfo& info,
-                                  bool straightWalls) {
+                                  std::optional<double> wallAngleDeg) {
     std::vector<GeometryPtr> regions; // each room's largest simplified part, with its holes
-    if (straightWalls) {
+    if (wallAngleDeg) {
         // The floor's walls were straightened on their own: each room is its territory (the
         // map's cells nearest to it, walls included) cut by the floor, so it ends exactly on
         // the floor's walls and leaves no sliver outside every room (each
@@ -172,6 +175,8 @@ std::vector<Room> roomsFromLabels(const std::vector<std::int32_t>& labels,
                 part && areaOf(part) >= kMinCells)
                 regions.emplace_back(part->clone());
         }
+        straightenDoorwayBorders(regions, kept, *wallAngleDeg, kMaxDoorWidth / info.resolution,
+                                 kMaxDoorDepth / info.resolution);
     } else {
         // Asked once per segment: prepared (indexed) once, as an uncleaned map's floor has
         // thousands of holes and each plain test rebuilt its index.

@@ -8,6 +8,7 @@
 
 #include <cstdint>
 #include <map>
+#include <optional>
 
 namespace fc::importing {
 
@@ -48,11 +49,21 @@ void toMapFrame(std::vector<Polygon2>& polygons, int imageHeight, const RosMapIn
 // Rooms "Room 1".."Room n" from a segmentation's labels, numbered top to bottom, left to
 // right, as disjoint simple outlines inside `kept` (pixel units): obstacles inside a room are
 // part of its outline, a room that encloses another is cut in two, a room outside `kept` (a
-// dropped separate part) is left out. With `straightWalls` (the floor's walls were
-// straightened), each room is its territory cut by `kept`, so that it ends on those walls.
+// dropped separate part) is left out. With `wallAngleDeg` (the floor's walls were
+// straightened along it, pixel frame), each room is its territory cut by `kept`, so that it
+// ends on those walls, and its doorway borders follow them (straightenDoorwayBorders).
 std::vector<Room> roomsFromLabels(const std::vector<std::int32_t>& labels,
                                   const std::vector<unsigned char>& free, int width, int height,
                                   const OGRGeometry& kept, double tolerance, const RosMapInfo& info,
-                                  bool straightWalls = false);
+                                  std::optional<double> wallAngleDeg = std::nullopt);
+
+// Moves each doorway border between two of `rooms` (pixel units; pieces of `floor` that meet
+// only in doorways) onto the wall line of the room with fewer doorways (the smaller on a
+// tie), within a rectangle around the border, so that room keeps a straight wall and the
+// other owns the passage. Borders wider than maxWidth or deeper than maxDepth across the wall
+// (pixels) are not doorways; a door whose move would split a room keeps its border. Returns the
+// number of borders moved.
+int straightenDoorwayBorders(std::vector<GeometryPtr>& rooms, const OGRGeometry& floor,
+                             double wallAngleDeg, double maxWidth, double maxDepth);
 
 } // namespace fc::importing

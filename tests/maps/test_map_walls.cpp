@@ -228,6 +228,48 @@ TEST(WallStraightening, AMapOfATurnedBuildingFindsItsAngle) {
     }
 }
 
+// A map of a building turned by 30 degrees: the rooms' territories met across each doorway
+// along the pixel rows, diagonally through the wall, and gave each ward a jog 0.13 m into the
+// corridor and the corridor a triangle of the passage (each a cell with its own stripe). Now
+// each ward ends on its own wall and the corridor, with more doorways, owns the passages.
+TEST(RoomSegmentation, DoorwayBordersOfATurnedMapFollowTheWalls) {
+    const Plan drawing = turned(samplePlan("ward"), 30.0);
+    test::NoisyMapOptions options;
+    options.seed = 3;
+    const auto dir = std::filesystem::temp_directory_path() / "fc-doorway-borders";
+    std::filesystem::create_directories(dir);
+    const Plan map =
+        importPlanFile(test::renderNoisyMap(drawing, options).write(dir.string(), "ward-30"))
+            .project.plan;
+    ASSERT_EQ(map.rooms.size(), drawing.rooms.size());
+    auto byArea = [](const Room& a, const Room& b) {
+        return areaOf(a.outline) < areaOf(b.outline);
+    };
+    const Room& corridor = *std::max_element(drawing.rooms.begin(), drawing.rooms.end(), byArea);
+    const Room& found = *std::max_element(map.rooms.begin(), map.rooms.end(), byArea);
+    double furthest = 0; // of a ward's corners from the drawn wards' outlines
+    for (const Room& room : map.rooms) {
+        if (&room == &found)
+            continue;
+        for (const Vec2& p : room.outline) {
+            double nearest = INFINITY;
+            for (const Room& drawn : drawing.rooms) {
+                if (&drawn == &corridor)
+                    continue;
+                const Ring& r = drawn.outline;
+                for (size_t i = 0; i < r.size(); ++i)
+                    nearest =
+                        std::min(nearest, pointSegmentDistance(p, r[i], r[(i + 1) % r.size()]));
+            }
+            furthest = std::max(furthest, nearest);
+        }
+    }
+    // 0.34 m with the diagonal borders; 0.17 m now, at a notch the tracing left in a wall.
+    EXPECT_LT(furthest, 0.2);
+    // The corridor holds its passages (0.2 m walls, 16 doors of 0.9 m): 3 m^2 more.
+    EXPECT_NEAR(areaOf(found.outline), areaOf(corridor.outline) + 16 * 0.9 * 0.2, 1.5);
+}
+
 // Generated office floors (offices of several sizes off wing corridors joined by a spine,
 // 1.2 m doors, furniture), upright and turned: each office is found, and the corridors,
 // which meet without doors, are one room.
