@@ -93,12 +93,96 @@ Vec2 centroid(const OGRGeometry* g) {
     return {c.getX(), c.getY()};
 }
 
+// Pieces up to this many cells that a move cuts off a room (slivers between two rooms
+// simplified apart) are dropped; they stay floor outside every room.
+constexpr double kCrumbCells = 2.0;
+// Border ends this close (cells) to a corner of the floor are moved onto it.
+constexpr double kCornerSnap = 0.25;
+
+// Whether g is one polygon, or one beside crumbs (then g becomes that polygon).
+bool singlePolygon(GeometryPtr& g) {
+    if (!g)
+        return false;
+    if (wkbFlatten(g->getGeometryType()) == wkbPolygon)
+        return true;
+    auto* parts = dynamic_cast<OGRGeometryCollection*>(g.get());
+    if (!parts)
+        return false;
+    const OGRGeometry* largest = nullptr;
+    double rest = 0;
+    for (int i = 0; i < parts->getNumGeometries(); ++i) {
+        const OGRGeometry* part = parts->getGeometryRef(i);
+        const double area = areaOf(part);
+        if (wkbFlatten(part->getGeometryType()) == wkbPolygon &&
+            (!largest || area > areaOf(largest))) {
+            rest += largest ? areaOf(largest) : 0.0;
+            largest = part;
+        } else {
+            rest += area;
+        }
+    }
+    if (!largest || rest > kCrumbCells)
+        return false;
+    g.reset(largest->clone());
+    return true;
+}
+
 struct Door {
     size_t first, second;
     std::vector<Segment> border;
 };
 
 } // namespace
+
+FloorCorners::FloorCorners(const OGRGeometry& floor, double tolerance) : tolerance_(tolerance) {
+    const GeometryPtr walls = owned(floor.Boundary());
+    std::vector<Segment> edges;
+    collectSegments(walls.get(), edges);
+    for (const Segment& e : edges)
+        cells_[{std::llround(e.a.x / tolerance_), std::llround(e.a.y / tolerance_)}].push_back(e.a);
+}
+
+const Vec2* FloorCorners::nearest(Vec2 p) const {
+    const long long cx = std::llround(p.x / tolerance_), cy = std::llround(p.y / tolerance_);
+    const Vec2* best = nullptr;
+    for (long long dx = -1; dx <= 1; ++dx)
+        for (long long dy = -1; dy <= 1; ++dy) {
+            const auto it = cells_.find({cx + dx, cy + dy});
+            if (it != cells_.end())
+                for (const Vec2& c : it->second)
+                    if (distance(c, p) <= tolerance_ &&
+                        (!best || distance(c, p) < distance(*best, p)))
+                        best = &c;
+        }
+    return best;
+}
+
+void FloorCorners::snap(Ring& ring) const {
+    for (Vec2& p : ring)
+        if (const Vec2* c = nearest(p))
+            p = *c;
+}
+
+void FloorCorners::snap(OGRPolygon& polygon) const {
+    for (int k = 0; k <= polygon.getNumInteriorRings(); ++k) {
+        OGRLinearRing* ring = k == 0 ? polygon.getExteriorRing() : polygon.getInteriorRing(k - 1);
+        const int n = ring ? ring->getNumPoints() : 0;
+        for (int i = 0; i + 1 < n; ++i) { // the closing point follows the first
+            const Vec2 p{ring->getX(i), ring->getY(i)};
+            const Vec2* c = nearest(p);
+            if (!c || distance(*c, p) == 0)
+                continue;
+            auto place = [&](Vec2 q) {
+                ring->setPoint(i, q.x, q.y);
+                if (i == 0)
+                    ring->setPoint(n - 1, q.x, q.y);
+            };
+            place(*c);
+            if (!polygon.IsValid())
+                place(p);
+        }
+    }
+}
 
 int straightenDoorwayBorders(std::vector<GeometryPtr>& rooms, const OGRGeometry& floor,
                              double wallAngleDeg, double maxWidth, double maxDepth) {
@@ -108,6 +192,7 @@ int straightenDoorwayBorders(std::vector<GeometryPtr>& rooms, const OGRGeometry&
     // coincide: a door is a piece of a room's outline off the floor's walls, shared with
     // the room that overlaps most a rectangle around it.
     const GeometryPtr walls = owned(floor.Boundary());
+    const FloorCorners corners(floor, kCornerSnap);
     std::vector<OGREnvelope> boxes(rooms.size());
     for (size_t i = 0; i < rooms.size(); ++i)
         rooms[i]->getEnvelope(&boxes[i]);
@@ -196,8 +281,10 @@ int straightenDoorwayBorders(std::vector<GeometryPtr>& rooms, const OGRGeometry&
             if (norm(d) >= 2.0 && std::abs(f.n(d)) <= 0.05 * norm(d))
                 line = std::min(line, s * 0.5 * (f.n(face.a) + f.n(face.b)));
         }
-        const double t = s * line;
-        if (!std::isfinite(line) || t < lo[1] - 1.0 || t > hi[1] + 1.0)
+        // The wall line may lie a little beyond the border's ends (a border that stops a
+        // pixel short of the jamb's corner).
+        const double t = s * line, reach = std::max(2.0, 0.5 * depth);
+        if (!std::isfinite(line) || t < lo[1] - reach || t > hi[1] + reach)
             continue; // no wall beside the door, or one far from the border
         const double n0 = std::min(lo[1], t) - 1.0, n1 = std::max(hi[1], t) + 1.0;
         const auto keepHalf = s > 0 ? rectangle(f, lo[0] - 1, hi[0] + 1, t, n1)
@@ -213,10 +300,12 @@ int straightenDoorwayBorders(std::vector<GeometryPtr>& rooms, const OGRGeometry&
         GeometryPtr newKeep = owned(keepLeft && takes ? keepLeft->Union(takes.get()) : nullptr);
         GeometryPtr newOther = owned(otherLeft && gives ? otherLeft->Union(gives.get()) : nullptr);
         const double before = areaOf(rooms[keep].get()) + areaOf(rooms[other].get());
-        if (!newKeep || !newOther || wkbFlatten(newKeep->getGeometryType()) != wkbPolygon ||
-            wkbFlatten(newOther->getGeometryType()) != wkbPolygon ||
-            std::abs(areaOf(newKeep.get()) + areaOf(newOther.get()) - before) > 1e-6 * before + 1)
+        if (!singlePolygon(newKeep) || !singlePolygon(newOther) ||
+            std::abs(areaOf(newKeep.get()) + areaOf(newOther.get()) - before) >
+                1e-6 * before + 2 * kCrumbCells + 1)
             continue; // a piece would come loose: leave this door as it is
+        corners.snap(static_cast<OGRPolygon&>(*newKeep));
+        corners.snap(static_cast<OGRPolygon&>(*newOther));
         rooms[keep] = std::move(newKeep);
         rooms[other] = std::move(newOther);
         ++moved;

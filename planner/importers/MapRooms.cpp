@@ -15,6 +15,7 @@ constexpr double kMinPieceArea = 0.25; // m^2: a room piece smaller than this is
 // A border between two rooms up to this wide (m) and this deep across the wall is a doorway.
 constexpr double kMaxDoorWidth = 3.0;
 constexpr double kMaxDoorDepth = 0.6;
+constexpr double kFinalCornerSnap = 1e-3; // cells
 
 double areaOf(const OGRGeometry* g) {
     return OGR_G_Area(OGRGeometry::ToHandle(const_cast<OGRGeometry*>(g)));
@@ -232,6 +233,8 @@ std::vector<Room> roomsFromLabels(const std::vector<std::int32_t>& labels,
         }
         filled.push_back(std::move(outline));
     }
+    // Overlays round a border through a floor's corner by micrometres: put back on it.
+    const FloorCorners corners(kept, kFinalCornerSnap);
     // Disjoint (the staircases were simplified one room at a time), then without holes.
     GeometryPtr taken = std::make_unique<OGRMultiPolygon>();
     std::vector<std::pair<Vec2, Ring>> outlines;
@@ -256,6 +259,8 @@ std::vector<Room> roomsFromLabels(const std::vector<std::int32_t>& labels,
             for (Ring& loop : splitAtPinches(std::move(room[0].shell), 0.01)) {
                 if (ringArea(loop) < minArea)
                     continue; // a sliver pinched off: free space outside every room
+                if (wallAngleDeg)
+                    corners.snap(loop);
                 std::vector<Polygon2> part{{std::move(loop), {}}};
                 toMapFrame(part, height, info);
                 Ring& shell = part[0].shell;

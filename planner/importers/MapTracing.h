@@ -63,6 +63,21 @@ std::vector<Room> roomsFromLabels(const std::vector<std::int32_t>& labels,
 // other owns the passage. Borders wider than maxWidth or deeper than maxDepth across the wall
 // (pixels) are not doorways; a door whose move would split a room keeps its border. Returns the
 // number of borders moved.
+// The corners of a floor (pixel units), to move points within `tolerance` of one onto it
+// exactly: rooms cut through a jamb's corner meet it up to rounding, and a room missing the
+// floor's corner by a hair starts cells at the sliver between them.
+class FloorCorners {
+public:
+    FloorCorners(const OGRGeometry& floor, double tolerance);
+    void snap(Ring& ring) const;
+    void snap(OGRPolygon& polygon) const; // point by point, where the polygon stays valid
+
+private:
+    const Vec2* nearest(Vec2 p) const;
+    double tolerance_;
+    std::map<std::pair<long long, long long>, std::vector<Vec2>> cells_;
+};
+
 int straightenDoorwayBorders(std::vector<GeometryPtr>& rooms, const OGRGeometry& floor,
                              double wallAngleDeg, double maxWidth, double maxDepth);
 
