@@ -1676,6 +1676,13 @@
         <source>The file holds several buildings (outer walls); a plan holds one. Largest first.</source>
         <translation>Die Datei enthält mehrere Gebäude (Außenwände); ein Plan enthält eines. Das größte zuerst.</translation>
     </message>
+    <message numerus="yes">
+        <source>Doorway borders between rooms laid along the walls: %n.</source>
+        <translation>
+            <numerusform>Türdurchgangsgrenzen zwischen Räumen an die Wände gelegt: %n.</numerusform>
+            <numerusform>Türdurchgangsgrenzen zwischen Räumen an die Wände gelegt: %n.</numerusform>
+        </translation>
+    </message>
 </context>
 <context>
     <name>fc::ui::LegendDock</name>

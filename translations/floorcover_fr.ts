@@ -1676,6 +1676,13 @@
         <source>The file holds several buildings (outer walls); a plan holds one. Largest first.</source>
         <translation>Le fichier contient plusieurs bâtiments (murs extérieurs) ; un plan en contient un. Le plus grand d’abord.</translation>
     </message>
+    <message numerus="yes">
+        <source>Doorway borders between rooms laid along the walls: %n.</source>
+        <translation>
+            <numerusform>Limites de porte entre pièces alignées sur les murs : %n.</numerusform>
+            <numerusform>Limites de porte entre pièces alignées sur les murs : %n.</numerusform>
+        </translation>
+    </message>
 </context>
 <context>
     <name>fc::ui::LegendDock</name>

@@ -29,13 +29,14 @@ std::string summaryLine(const std::string& format, const ImportResult& r) {
         line << "null";
     if (r.cleaning) {
         const MapCleaningReport& c = *r.cleaning;
-        char walls[160] = "";
+        char walls[200] = "";
         if (c.wallAngle)
             std::snprintf(walls, sizeof walls,
                           ",\"wall_angle\":%.3f,\"walls_straightened\":%d,\"notches_filled\":%d,"
-                          "\"straightened_added\":%.3f,\"straightened_removed\":%.3f",
+                          "\"straightened_added\":%.3f,\"straightened_removed\":%.3f,"
+                          "\"doorways_aligned\":%d",
                           *c.wallAngle, c.wallsStraightened, c.notchesFilled, c.straightenedAdded,
-                          c.straightenedRemoved);
+                          c.straightenedRemoved, c.doorwaysAligned);
         char cleaning[768];
         std::snprintf(cleaning, sizeof cleaning,
                       ",\"cleaning\":{\"cells\":[%d,%d],\"resolution\":%g,\"unknown_cells\":%lld,"

@@ -230,6 +230,7 @@ int straightenDoorwayBorders(std::vector<GeometryPtr>& rooms, const OGRGeometry&
         }
     }
     int moved = 0;
+    std::vector<std::pair<std::pair<size_t, size_t>, Vec2>> movedDoors;
     for (const Door& door : doors) {
         // The border's extent along the wall directions; the longer one is the wall's.
         Frame2 f{u, v};
@@ -308,7 +309,16 @@ int straightenDoorwayBorders(std::vector<GeometryPtr>& rooms, const OGRGeometry&
         corners.snap(static_cast<OGRPolygon&>(*newOther));
         rooms[keep] = std::move(newKeep);
         rooms[other] = std::move(newOther);
-        ++moved;
+        // A door is met from both rooms' outlines; counted once.
+        const Vec2 centre = f.at(0.5 * (lo[0] + hi[0]), 0.5 * (lo[1] + hi[1]));
+        const std::pair<size_t, size_t> pair{std::min(door.first, door.second),
+                                             std::max(door.first, door.second)};
+        if (std::none_of(movedDoors.begin(), movedDoors.end(), [&](const auto& m) {
+                return m.first == pair && distance(m.second, centre) <= maxWidth;
+            })) {
+            movedDoors.emplace_back(pair, centre);
+            ++moved;
+        }
     }
     return moved;
 }

@@ -83,6 +83,7 @@ struct MapCleaningReport {
     int notchesFilled = 0;
     double straightenedAdded = 0, straightenedRemoved = 0; // m^2 of floor
     int rooms = 0;
+    int doorwaysAligned = 0; // rooms' borders in doorways moved onto a wall line
 };
 
 struct ImportOptions {

@@ -155,7 +155,7 @@ std::vector<Ring> splitAtPinches(Ring ring, double tolerance) {
 std::vector<Room> roomsFromLabels(const std::vector<std::int32_t>& labels,
                                   const std::vector<unsigned char>& free, int width, int height,
                                   const OGRGeometry& kept, double tolerance, const RosMapInfo& info,
-                                  std::optional<double> wallAngleDeg) {
+                                  std::optional<double> wallAngleDeg, int* doorwaysAligned) {
     std::vector<GeometryPtr> regions; // each room's largest simplified part, with its holes
     if (wallAngleDeg) {
         // The floor's walls were straightened on their own: each room is its territory (the
@@ -176,8 +176,11 @@ std::vector<Room> roomsFromLabels(const std::vector<std::int32_t>& labels,
                 part && areaOf(part) >= kMinCells)
                 regions.emplace_back(part->clone());
         }
-        straightenDoorwayBorders(regions, kept, *wallAngleDeg, kMaxDoorWidth / info.resolution,
-                                 kMaxDoorDepth / info.resolution);
+        const int aligned =
+            straightenDoorwayBorders(regions, kept, *wallAngleDeg, kMaxDoorWidth / info.resolution,
+                                     kMaxDoorDepth / info.resolution);
+        if (doorwaysAligned)
+            *doorwaysAligned = aligned;
     } else {
         // Asked once per segment: prepared (indexed) once, as an uncleaned map's floor has
         // thousands of holes and each plain test rebuilt its index.

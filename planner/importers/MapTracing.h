@@ -51,18 +51,14 @@ void toMapFrame(std::vector<Polygon2>& polygons, int imageHeight, const RosMapIn
 // part of its outline, a room that encloses another is cut in two, a room outside `kept` (a
 // dropped separate part) is left out. With `wallAngleDeg` (the floor's walls were
 // straightened along it, pixel frame), each room is its territory cut by `kept`, so that it
-// ends on those walls, and its doorway borders follow them (straightenDoorwayBorders).
+// ends on those walls, and its doorway borders follow them (straightenDoorwayBorders; their
+// number in `doorwaysAligned`).
 std::vector<Room> roomsFromLabels(const std::vector<std::int32_t>& labels,
                                   const std::vector<unsigned char>& free, int width, int height,
                                   const OGRGeometry& kept, double tolerance, const RosMapInfo& info,
-                                  std::optional<double> wallAngleDeg = std::nullopt);
+                                  std::optional<double> wallAngleDeg = std::nullopt,
+                                  int* doorwaysAligned = nullptr);
 
-// Moves each doorway border between two of `rooms` (pixel units; pieces of `floor` that meet
-// only in doorways) onto the wall line of the room with fewer doorways (the smaller on a
-// tie), within a rectangle around the border, so that room keeps a straight wall and the
-// other owns the passage. Borders wider than maxWidth or deeper than maxDepth across the wall
-// (pixels) are not doorways; a door whose move would split a room keeps its border. Returns the
-// number of borders moved.
 // The corners of a floor (pixel units), to move points within `tolerance` of one onto it
 // exactly: rooms cut through a jamb's corner meet it up to rounding, and a room missing the
 // floor's corner by a hair starts cells at the sliver between them.
@@ -78,6 +74,12 @@ private:
     std::map<std::pair<long long, long long>, std::vector<Vec2>> cells_;
 };
 
+// Moves each doorway border between two of `rooms` (pixel units; pieces of `floor` that meet
+// only in doorways) onto the wall line of the room with fewer doorways (the smaller on a
+// tie), within a rectangle around the border, so that room keeps a straight wall and the
+// other owns the passage. Borders wider than maxWidth or deeper than maxDepth across the wall
+// (pixels) are not doorways; a door whose move would split a room keeps its border. Returns the
+// number of doorways whose border moved.
 int straightenDoorwayBorders(std::vector<GeometryPtr>& rooms, const OGRGeometry& floor,
                              double wallAngleDeg, double maxWidth, double maxDepth);
 

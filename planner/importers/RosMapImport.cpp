@@ -147,9 +147,10 @@ ImportResult importRosMap(const std::string& yamlPath, const ImportOptions& opti
     const std::vector<std::int32_t> labels = segmentRooms(
         free, image.width, image.height, info.resolution, options.roomSegmentation, labelCount);
     if (labelCount > 1)
-        result.project.plan.rooms = roomsFromLabels(
-            labels, free, image.width, image.height, kept, tolerance, info,
-            straighten ? std::optional<double>(straighten->angleDeg) : std::nullopt);
+        result.project.plan.rooms =
+            roomsFromLabels(labels, free, image.width, image.height, kept, tolerance, info,
+                            straighten ? std::optional<double>(straighten->angleDeg) : std::nullopt,
+                            &report.doorwaysAligned);
     report.rooms = static_cast<int>(result.project.plan.rooms.size());
     result.robotStartPose = info.start;
     result.cleaning = report;

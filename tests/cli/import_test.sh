@@ -79,6 +79,10 @@ ref = json.load(open(sys.argv[1]))["free_area"]; got = json.load(open(sys.argv[2
 print(sys.argv[3] + " map: free area %.2f m2 against the plan'"'"'s %.2f m2" % (got, ref))
 sys.exit(0 if abs(got - ref) <= 0.01 * ref else 1)' "$work/$name-reference" "$work/out" "$name" ||
     fail "gdal map free area: $(cat "$work/out")"
+  # The summary says how many doorway borders were laid along the walls.
+  python3 -c 'import json, sys; c = json.load(open(sys.argv[1]))["cleaning"]
+sys.exit(0 if isinstance(c.get("doorways_aligned"), int) and c["doorways_aligned"] >= 0 else 1)' \
+    "$work/out" || fail "no doorways_aligned in the map summary: $(cat "$work/out")"
   "$cli" plan "$work/$name-map.geojson" >/dev/null 2>&1 || fail "the $name map's plan does not plan"
 done
 else

@@ -153,6 +153,12 @@ void ImportTest::occupancyMapCleaningIsLive() {
     for (const QLabel* label : dialog.findChildren<QLabel*>())
         joinedShown = joinedShown || label->text().contains(QStringLiteral("joined"));
     QVERIFY(joinedShown);
+    // So does the doorway between its two rooms, laid along the walls.
+    QVERIFY(dialog.result()->cleaning->doorwaysAligned > 0);
+    bool doorwaysShown = false;
+    for (const QLabel* label : dialog.findChildren<QLabel*>())
+        doorwaysShown = doorwaysShown || label->text().contains(QStringLiteral("Doorway borders"));
+    QVERIFY(doorwaysShown);
     if (const QByteArray dir = qgetenv("FC_SCREENSHOT_DIR"); !dir.isEmpty()) {
         dialog.resize(1100, 760);
         dialog.show();

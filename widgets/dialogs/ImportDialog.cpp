@@ -382,6 +382,10 @@ void ImportDialog::refresh() {
                                   .arg(c->straightenedRemoved, 0, 'f', 2)
                                   .arg(c->notchesFilled)
                                   .arg(c->gapsFilled));
+        if (const auto& c = result_->cleaning; c && c->doorwaysAligned > 0)
+            summary_->setText(summary_->text() + QLatin1Char(' ') +
+                              tr("Doorway borders between rooms laid along the walls: %n.", nullptr,
+                                 c->doorwaysAligned));
     } else {
         summary_->setText(error_);
     }
