@@ -69,9 +69,11 @@ double averageWallPiece(const Plan& plan);
 bool wantsWallLoop(const PlanRequest& request);
 
 // Plans the loop from request.start (without one, from the loop's point farthest from the
-// floor's centre) and the rest, to request.end (else back to the start). The rest is toured
-// from the loop's end, or from a point on the loop where that is estimated to be shorter
-// (kEdgeSplitMinGainInWidths), back to that point, and the loop then finishes. `estimate` is
+// floor's centre) and the rest, to request.end (else back to the start). Each piece of the
+// rest is swept as an excursion from the loop where it passes nearest the piece, back to that
+// point. Where the path ends away from where the loop closes, the rest toured from one point
+// of the loop (the loop's end, or a point where that is estimated shorter,
+// kEdgeSplitMinGainInWidths) is drafted too, and the faster kept. `estimate` is
 // set as soon as the loop is known (the estimated length, see kEdgeEstimateGain; infinity
 // where the robot fits nowhere) so that the caller may cancel the rest through `control`.
 // Throws InputError where it cannot be planned, SolverError when cancelled.
