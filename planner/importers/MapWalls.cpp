@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <deque>
+#include <optional>
 #include <vector>
 
 namespace fc::importing {
@@ -14,7 +15,8 @@ namespace fc::importing {
 namespace {
 
 constexpr double kMinShare = 1.0 / 3.0;
-constexpr int kMaxExcursion = 16; // elements between two runs joined as one wall
+constexpr int kMaxExcursion = 16;       // elements between two runs joined as one wall
+constexpr size_t kMaxChamferPoints = 4; // traced points of a corner squared (squaredCorners)
 
 double signedAreaOf(const Ring& r) {
     double a = 0.0;
@@ -254,13 +256,59 @@ private:
         const Vec2& other = at(atEnd ? p.first : p.last);
         if (p.line && p.family != l.family) {
             const Vec2 x = l.family == 0 ? Vec2{p.c, l.c} : Vec2{l.c, p.c};
-            if (distance(x, own) <= options_.cornerShift &&
-                distance(x, other) <= options_.cornerShift)
+            const double shift = cornerShiftBetween(l, p);
+            if (distance(x, own) <= shift && distance(x, other) <= shift)
                 return x;
         } else if (p.line) { // a step between two parallel walls, halfway between their ends
             return onLine(l, 0.5 * (along(own, l.family) + along(other, l.family)));
         }
         return onLine(l, along(own, l.family));
+    }
+
+    // Whether both walls are long enough for a cut corner between them to be squared.
+    bool longWalls(const Element& a, const Element& b) const {
+        return spanLength(a.first, a.last, a.family) >= options_.chamferMinWall &&
+               spanLength(b.first, b.last, b.family) >= options_.chamferMinWall;
+    }
+    double cornerShiftBetween(const Element& a, const Element& b) const {
+        return longWalls(a, b) ? std::max(options_.cornerShift, options_.chamferShift)
+                               : options_.cornerShift;
+    }
+
+    // Corners the tracing cut or rounded: a few points between long walls of the two
+    // families, put back at the walls' intersection where that lies within chamferShift of
+    // both walls' ends (the skipped points, and the corner, per element).
+    struct Corners {
+        std::vector<char> skipped;
+        std::vector<std::optional<Vec2>> start, end;
+    };
+    Corners squaredCorners(const std::vector<Element>& el) const {
+        const size_t m = el.size();
+        Corners corners{std::vector<char>(m, 0), std::vector<std::optional<Vec2>>(m),
+                        std::vector<std::optional<Vec2>>(m)};
+        for (size_t i = 0; i < m; ++i) {
+            const Element& e = el[i];
+            if (!e.line || corners.skipped[i])
+                continue;
+            size_t k = 1;
+            while (k <= kMaxChamferPoints && k < m && !el[(i + k) % m].line)
+                ++k;
+            if (k == 1 || k > kMaxChamferPoints || k >= m)
+                continue;
+            const size_t q = (i + k) % m;
+            const Element& next = el[q];
+            if (next.family == e.family)
+                continue;
+            const Vec2 x = e.family == 0 ? Vec2{next.c, e.c} : Vec2{e.c, next.c};
+            if (!longWalls(e, next) || distance(x, at(e.last)) > options_.chamferShift ||
+                distance(x, at(next.first)) > options_.chamferShift)
+                continue;
+            corners.end[i] = x;
+            corners.start[q] = x;
+            for (size_t j = 1; j < k; ++j)
+                corners.skipped[(i + j) % m] = 1;
+        }
+        return corners;
     }
 
     Ring rebuild(const std::vector<Element>& el) const {
@@ -270,14 +318,17 @@ private:
                 out.push_back(p);
         };
         const size_t m = el.size();
+        const Corners corners = squaredCorners(el);
         for (size_t i = 0; i < m; ++i) {
             const Element& e = el[i];
+            if (corners.skipped[i])
+                continue;
             if (!e.line) {
                 emit(at(e.first));
                 continue;
             }
-            emit(joint(e, el[(i + m - 1) % m], false));
-            emit(joint(e, el[(i + 1) % m], true));
+            emit(corners.start[i] ? *corners.start[i] : joint(e, el[(i + m - 1) % m], false));
+            emit(corners.end[i] ? *corners.end[i] : joint(e, el[(i + 1) % m], true));
         }
         if (out.size() > 1 && distance(out.front(), out.back()) <= 1e-9)
             out.pop_back();

@@ -6,6 +6,7 @@
 
 #include "importers/OgrSupport.h"
 
+#include <cmath>
 #include <optional>
 
 namespace fc::importing {
@@ -24,6 +25,10 @@ struct StraightenOptions {
     double minRun = 4.0;    // shortest wall fitted as a line
     double notchDepth = 0;  // notches into a wall this shallow are filled (floor lost)
     double cornerShift = 3; // a corner moves at most this far to meet two fitted walls
+    // ... and this far between walls at least chamferMinWall long, also across a few traced
+    // points between them (a corner the tracing cut or the opening rounded)
+    double chamferShift = 3;
+    double chamferMinWall = INFINITY;
 };
 
 struct StraightenStats {

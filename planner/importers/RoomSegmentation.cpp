@@ -21,6 +21,11 @@ namespace {
 // gaps beside them are not doorways, so the rooms are found as if they were floor.
 constexpr double kFurnitureArea = 10.0;
 
+// A doorway spans at most this share of the floor beside it, on one side at least, measured
+// along it these distances (m) into each side.
+constexpr double kDoorwayShareOfSide = 0.6;
+constexpr double kDoorwaySideDepths[] = {0.5, 0.8, 1.1, 1.4, 1.7, 2.0};
+
 // `free` with the obstacle islands of at most `maxCells` cells (not touching the map's edge)
 // made free.
 cv::Mat withoutFurniture(const cv::Mat& free, int maxCells) {
@@ -185,18 +190,84 @@ void growCores(cv::Mat& markers, const cv::Mat& free, const cv::Mat& dist) {
     }
 }
 
+// How far the free space reaches from (r, c) along (dr, dc) and against it, in cells (at most
+// `cap` each way).
+double reachAcross(const cv::Mat& free, double r, double c, double dr, double dc, double cap) {
+    double total = 0.0;
+    for (const double sign : {1.0, -1.0}) {
+        double t = 0.0;
+        while (t < cap) {
+            const int rr = static_cast<int>(std::lround(r + sign * (t + 0.5) * dr)),
+                      cc = static_cast<int>(std::lround(c + sign * (t + 0.5) * dc));
+            if (rr < 0 || cc < 0 || rr >= free.rows || cc >= free.cols ||
+                !free.at<unsigned char>(rr, cc))
+                break;
+            t += 0.5;
+        }
+        total += t;
+    }
+    return total;
+}
+
+// Whether a border no wider than a door is one: a doorway is much narrower than the floor on
+// at least one side of it (a room's width, a corridor's length), measured along the border a
+// little way into each side. A corridor that clutter narrows to a door's width is not: the
+// border spans most of the corridor's width on both sides (the office map whose corridor a
+// speck blob narrowed from 2 m to 1.6 m was cut in two there).
+bool bordersLikeADoorway(const std::vector<std::pair<int, int>>& cells, int span, int a, int b,
+                         const std::vector<std::int32_t>& labels, const cv::Mat& free,
+                         double resolution) {
+    double mr = 0, mc = 0;
+    for (const auto& [r, c] : cells)
+        mr += r, mc += c;
+    mr /= cells.size(), mc /= cells.size();
+    double srr = 0, scc = 0, src = 0;
+    for (const auto& [r, c] : cells)
+        srr += (r - mr) * (r - mr), scc += (c - mc) * (c - mc), src += (r - mr) * (c - mc);
+    // The border's direction: the principal axis of its cells.
+    const double angle = 0.5 * std::atan2(2 * src, srr - scc);
+    const double ur = std::cos(angle), uc = std::sin(angle);
+    const double cap = 3.0 * span;
+    // Each room's width beside the border: the least at the depths that lie in it (a line
+    // that escapes through a door, or two doors facing each other across a corridor, does not
+    // make the side wide); a room with no such depth counts as wide.
+    double sideA = INFINITY, sideB = INFINITY;
+    for (const double sign : {1.0, -1.0})
+        for (const double depth : kDoorwaySideDepths) {
+            const double d = sign * depth / resolution;
+            const int r = static_cast<int>(std::lround(mr - d * uc)),
+                      c = static_cast<int>(std::lround(mc + d * ur));
+            if (r < 0 || c < 0 || r >= free.rows || c >= free.cols)
+                continue;
+            const int label = labels[static_cast<size_t>(r) * free.cols + c];
+            if (label != a && label != b)
+                continue;
+            double& side = label == a ? sideA : sideB;
+            side = std::min(side, reachAcross(free, r, c, ur, uc, cap));
+        }
+    const double widest = std::max(sideA, sideB);
+    return span <= kDoorwayShareOfSide * widest;
+}
+
 // Rooms that meet along more than a doorway's width are one room cut at a wide place (a
-// hall around a pillar, a corridor's bend): merged, and the labels renumbered 1..n.
-int mergeAcrossWideBorders(std::vector<std::int32_t>& labels, int width, int height, int rooms,
-                           double maxDoorCells) {
+// hall around a pillar, a corridor's bend), and so are rooms whose border spans most of the
+// floor on both sides (bordersLikeADoorway): merged, and the labels renumbered 1..n.
+int mergeAcrossWideBorders(std::vector<std::int32_t>& labels, const cv::Mat& free, int rooms,
+                           double maxDoorCells, double resolution) {
+    const int width = free.cols, height = free.rows;
     // Where two rooms touch, as the span of those cells: a door's border spans the door, a
     // room cut at a wide place spans that place (a jagged border counts as its span, not as
     // its staircase's length).
-    struct Extent {
+    struct Border {
         int r0 = INT_MAX, r1 = INT_MIN, c0 = INT_MAX, c1 = INT_MIN;
+        std::vector<std::pair<int, int>> cells;
         int span() const { return std::max(r1 - r0, c1 - c0) + 1; }
+        void add(int r, int c) {
+            r0 = std::min(r0, r), r1 = std::max(r1, r), c0 = std::min(c0, c), c1 = std::max(c1, c);
+            cells.emplace_back(r, c);
+        }
     };
-    std::map<std::pair<int, int>, Extent> border;
+    std::map<std::pair<int, int>, Border> border;
     for (int r = 0; r < height; ++r)
         for (int c = 0; c < width; ++c) {
             const int a = labels[static_cast<size_t>(r) * width + c];
@@ -207,9 +278,9 @@ int mergeAcrossWideBorders(std::vector<std::int32_t>& labels, int width, int hei
                     continue;
                 const int b = labels[static_cast<size_t>(r + dr) * width + c + dc];
                 if (b > 0 && b != a) {
-                    Extent& e = border[{std::min(a, b), std::max(a, b)}];
-                    e.r0 = std::min(e.r0, r), e.r1 = std::max(e.r1, r + dr);
-                    e.c0 = std::min(e.c0, c), e.c1 = std::max(e.c1, c + dc);
+                    Border& e = border[{std::min(a, b), std::max(a, b)}];
+                    e.add(r, c);
+                    e.add(r + dr, c + dc);
                 }
             }
         }
@@ -220,8 +291,9 @@ int mergeAcrossWideBorders(std::vector<std::int32_t>& labels, int width, int hei
             x = parent[x] = parent[parent[x]];
         return x;
     };
-    for (const auto& [pair, extent] : border)
-        if (extent.span() > maxDoorCells)
+    for (const auto& [pair, b] : border)
+        if (b.span() > maxDoorCells || !bordersLikeADoorway(b.cells, b.span(), pair.first,
+                                                            pair.second, labels, free, resolution))
             parent[find(pair.first)] = find(pair.second);
     std::vector<int> renumber(rooms + 1, 0);
     int merged = 0;
@@ -285,7 +357,7 @@ std::vector<std::int32_t> segmentRooms(const std::vector<unsigned char>& freeCel
     }
     if (options.maxDoorWidth > 0)
         rooms =
-            mergeAcrossWideBorders(out, width, height, rooms, options.maxDoorWidth / resolution);
+            mergeAcrossWideBorders(out, free, rooms, options.maxDoorWidth / resolution, resolution);
     return out;
 }
 

@@ -49,12 +49,19 @@ OccupancyGrid gridOf(const GreyImage& image, const RosMapInfo& info) {
     return grid;
 }
 
+constexpr double kChamferMinWall = 1.0; // m
+
+double openingRadiusOf(const ImportOptions& options) {
+    return options.cleaning.openingRadius >= 0 ? options.cleaning.openingRadius
+                                               : options.robotDiameter / 2.0;
+}
+
 // The straightening of this map's walls (pixel units), or none when the map has no dominant
 // wall direction (a round or irregular building).
 std::optional<StraightenOptions> straightenOptions(const OGRGeometry& traced,
                                                    const OGRGeometry& fine,
                                                    const MapCleaningOptions& cleaning,
-                                                   double resolution) {
+                                                   double openingRadius, double resolution) {
     const std::optional<double> angle =
         dominantWallDirection(traced, &fine, std::max(cleaning.wallBand, 0.0));
     if (!angle)
@@ -65,6 +72,12 @@ std::optional<StraightenOptions> straightenOptions(const OGRGeometry& traced,
     o.notchDepth = std::max(cleaning.notchDepth / resolution, o.band);
     o.minRun = std::max(4.0, 2.0 * o.band + 2.0);
     o.cornerShift = 3.0 * std::max(o.band, 0.5);
+    // The opening rounds a corner within its radius of it; between walls of a metre or more
+    // the walls' intersection is the corner as built (an obstacle's corners cut by 0.2 m
+    // cost the room-obstacle map 1.2 m of path and 3 turns). Not between shorter ones:
+    // squared, the clutter of the real maps planned longer (the faculty 1,726 -> 1,749 m).
+    o.chamferShift = openingRadius / resolution;
+    o.chamferMinWall = kChamferMinWall / resolution;
     return o;
 }
 
@@ -103,7 +116,8 @@ ImportResult importRosMap(const std::string& yamlPath, const ImportOptions& opti
         throw InputError("the free space is thinner than a pixel everywhere");
     std::optional<StraightenOptions> straighten =
         options.cleaning.enabled && options.cleaning.straightenWalls
-            ? straightenOptions(*traced[1], *simple, options.cleaning, info.resolution)
+            ? straightenOptions(*traced[1], *simple, options.cleaning, openingRadiusOf(options),
+                                info.resolution)
             : std::nullopt;
     if (straighten) {
         StraightenResult straight = straightenOutlines(*simple, *straighten);
@@ -118,8 +132,7 @@ ImportResult importRosMap(const std::string& yamlPath, const ImportOptions& opti
         report.straightenedRemoved = straight.floorRemoved * cellArea;
     }
     if (options.cleaning.enabled) {
-        const double opening = options.cleaning.openingRadius >= 0 ? options.cleaning.openingRadius
-                                                                   : options.robotDiameter / 2.0;
+        const double opening = openingRadiusOf(options);
         // Half a cell less, so that a passage the raster opening kept (at least 2 radii wide,
         // to the cell) stays open.
         const double radius = opening / info.resolution - 0.5;

@@ -40,6 +40,12 @@ struct FloorField {
     ClearanceField field;
 };
 
+// The segment tests one transit between the loop and a piece may spend before the open
+// regions' grid routes it instead: on the faculty map at half its cell size with its clutter's
+// corners squared, the transits to a pocket behind a closed gap, which the regions did not
+// prove apart, searched for 70 s.
+constexpr std::size_t kEdgeTransitChecks = 200'000;
+
 // Appends a collision-free transit from the path's last point to `to` (nothing when there);
 // false, and the path unchanged, where there is none.
 bool tryAppendTransit(const FloorField& floor, CoveragePath& path, Vec2 to) {
@@ -52,7 +58,7 @@ bool tryAppendTransit(const FloorField& floor, CoveragePath& path, Vec2 to) {
     const int regionA = floor.field.openRegionOf(a), regionB = floor.field.openRegionOf(b);
     if (regionA >= 0 && regionB >= 0 && regionA != regionB)
         return false;
-    const Polyline local = floor.field.findPath(a, b);
+    const Polyline local = floor.field.findPath(a, b, {}, INFINITY, kEdgeTransitChecks);
     if (local.size() < 2)
         return false;
     const Polyline world = floor.frame.toWorld(local);
