@@ -56,6 +56,9 @@ struct RoomSegmentationOptions {
     RoomSegmentationMethod method = RoomSegmentationMethod::Distance;
     double minRoomArea = 1.0;  // m^2: smaller room cores (alcoves, door recesses) join a room
     double maxDoorWidth = 1.6; // m: rooms meeting along more than this are one room (0: off)
+    // Rooms whose border spans most of the floor on both sides are one room too. The
+    // importer turns it off on maps it did not clean: speckle shortens the widths measured.
+    bool mergeAcrossNarrowings = true;
 };
 
 // What cleaning removed, for the import report.

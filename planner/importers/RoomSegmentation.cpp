@@ -251,9 +251,10 @@ bool bordersLikeADoorway(const std::vector<std::pair<int, int>>& cells, int span
 
 // Rooms that meet along more than a doorway's width are one room cut at a wide place (a
 // hall around a pillar, a corridor's bend), and so are rooms whose border spans most of the
-// floor on both sides (bordersLikeADoorway): merged, and the labels renumbered 1..n.
+// floor on both sides (bordersLikeADoorway; with `acrossNarrowings`): merged, and the labels
+// renumbered 1..n.
 int mergeAcrossWideBorders(std::vector<std::int32_t>& labels, const cv::Mat& free, int rooms,
-                           double maxDoorCells, double resolution) {
+                           double maxDoorCells, bool acrossNarrowings, double resolution) {
     const int width = free.cols, height = free.rows;
     // Where two rooms touch, as the span of those cells: a door's border spans the door, a
     // room cut at a wide place spans that place (a jagged border counts as its span, not as
@@ -292,8 +293,9 @@ int mergeAcrossWideBorders(std::vector<std::int32_t>& labels, const cv::Mat& fre
         return x;
     };
     for (const auto& [pair, b] : border)
-        if (b.span() > maxDoorCells || !bordersLikeADoorway(b.cells, b.span(), pair.first,
-                                                            pair.second, labels, free, resolution))
+        if (b.span() > maxDoorCells ||
+            (acrossNarrowings && !bordersLikeADoorway(b.cells, b.span(), pair.first, pair.second,
+                                                      labels, free, resolution)))
             parent[find(pair.first)] = find(pair.second);
     std::vector<int> renumber(rooms + 1, 0);
     int merged = 0;
@@ -356,8 +358,8 @@ std::vector<std::int32_t> segmentRooms(const std::vector<unsigned char>& freeCel
                 out[i] = nearest[i];
     }
     if (options.maxDoorWidth > 0)
-        rooms =
-            mergeAcrossWideBorders(out, free, rooms, options.maxDoorWidth / resolution, resolution);
+        rooms = mergeAcrossWideBorders(out, free, rooms, options.maxDoorWidth / resolution,
+                                       options.mergeAcrossNarrowings, resolution);
     return out;
 }
 

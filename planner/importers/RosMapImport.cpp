@@ -157,8 +157,11 @@ ImportResult importRosMap(const std::string& yamlPath, const ImportOptions& opti
     ImportResult result;
     result.project.plan = planFromPolygons(std::move(polygons), "free space", result.warnings);
     int labelCount = 0;
-    const std::vector<std::int32_t> labels = segmentRooms(
-        free, image.width, image.height, info.resolution, options.roomSegmentation, labelCount);
+    RoomSegmentationOptions segmentation = options.roomSegmentation;
+    segmentation.mergeAcrossNarrowings =
+        segmentation.mergeAcrossNarrowings && options.cleaning.enabled;
+    const std::vector<std::int32_t> labels =
+        segmentRooms(free, image.width, image.height, info.resolution, segmentation, labelCount);
     if (labelCount > 1)
         result.project.plan.rooms =
             roomsFromLabels(labels, free, image.width, image.height, kept, tolerance, info,
