@@ -277,7 +277,7 @@ private:
 
     // Corners the tracing cut or rounded: a few points between long walls of the two
     // families, put back at the walls' intersection where that lies within chamferShift of
-    // both walls' ends (the skipped points, and the corner, per element).
+    // both walls' ends, as joint() allows (the skipped points, and the corner, per element).
     struct Corners {
         std::vector<char> skipped;
         std::vector<std::optional<Vec2>> start, end;
@@ -300,8 +300,9 @@ private:
             if (next.family == e.family)
                 continue;
             const Vec2 x = e.family == 0 ? Vec2{next.c, e.c} : Vec2{e.c, next.c};
-            if (!longWalls(e, next) || distance(x, at(e.last)) > options_.chamferShift ||
-                distance(x, at(next.first)) > options_.chamferShift)
+            const double shift = cornerShiftBetween(e, next);
+            if (!longWalls(e, next) || distance(x, at(e.last)) > shift ||
+                distance(x, at(next.first)) > shift)
                 continue;
             corners.end[i] = x;
             corners.start[q] = x;
