@@ -77,7 +77,8 @@ commands:
                 one JSON line (areas, obstacles, rooms, warnings, start) on stdout;
                 occupancy maps are cleaned (what was removed under "cleaning"):
                 [--unknown wall|free] [--unknown-gap M2 (0.15): smaller unknown patches inside
-                the map are floor] [--speckle M2 (0.15)] [--smooth on|off] [--fragment M2 (0.5)]
+                the map are floor, and up to 4 times that where no laser returns border them]
+                [--speckle M2 (0.15)] [--smooth on|off] [--fragment M2 (0.5)]
                 [--opening M (robot diameter / 2)] [--closing M (0)] [--robot-diameter L]
                 [--straighten on|off: walls fitted as lines along the map's two dominant
                 directions] [--wall-band CELLS (1): how far a wall may move] [--notch M (0.1):

@@ -25,9 +25,9 @@ struct Map {
         };
         fill(3, 3, 203, 123, kFree);                        // 200 x 120 px = 10 x 6 m
         fill(50, 40, 70, 50, kOccupied);                    // pillar 1 x 0.5 m
-        fill(150, 80, 160, 90, kUnknown);                   // unknown 0.5 x 0.5 m
+        fill(150, 75, 170, 95, kUnknown);                   // unknown 1 x 1 m
         pixels[static_cast<size_t>(1 * width + 1)] = kFree; // noise in the wall
-        freeArea = 10 * 6 - 0.5 - 0.25;
+        freeArea = 10 * 6 - 0.5 - 1.0;
     }
     std::string pgm(bool binary) const {
         std::ostringstream out;
@@ -58,7 +58,7 @@ TEST(RosMap, BinaryPgmGivesTheFreeAreaInMapCoordinates) {
         test::writeText(dir / "room.yaml", yaml("room.pgm", "start_pose: [1.0, 2.5, 0.3]\n"));
     const ImportResult r = importPlanFile(path);
     EXPECT_NEAR(test::freeArea(r.project.plan), map.freeArea, 0.01 * map.freeArea);
-    EXPECT_EQ(r.project.plan.obstacles.size(), 2u); // pillar and unknown patch
+    EXPECT_EQ(r.project.plan.obstacles.size(), 2u); // pillar and unknown patch (over 0.6 m^2)
     // Origin (-2, 1.5) is the lower-left pixel corner; the room starts 3 pixels in.
     const BoundingBox box = r.project.plan.bounds();
     EXPECT_NEAR(box.minX, -2.0 + 0.15, 0.03);

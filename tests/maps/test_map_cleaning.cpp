@@ -224,6 +224,51 @@ TEST(MapImages, EveryBitDepthImportsTheSameRoom) {
     }
 }
 
+// An unknown patch inside the floor bigger than --unknown-gap (0.15 m^2) is floor when no
+// laser return borders it (blind spots run together, the rays passed on every side), up to
+// four times that; with a line of returns on its edge (a box seen on two sides, 0.06 m^2 of
+// returns: speckle by area) it is a thing's inside and stays an obstacle. A lone return on
+// its edge does not count.
+TEST(MapImages, UnknownPatchesWithoutReturnsAreFloor) {
+    const auto dir = scratch("gaps");
+    // A 6 x 4 m room (5 cm cells, walls two cells thick); a patch of 12 x 12 cells (0.36 m^2)
+    // in its middle, `edge` on the patch's border.
+    auto map = [&](const std::string& name, int side, const std::string& edge) {
+        const int w = 124, h = 84, x0 = 62 - side / 2, y0 = 42 - side / 2;
+        std::string pixels(static_cast<size_t>(w * h), static_cast<char>(254));
+        for (int y = 0; y < h; ++y)
+            for (int x = 0; x < w; ++x) {
+                char& p = pixels[static_cast<size_t>(y * w + x)];
+                if (x < 2 || y < 2 || x >= w - 2 || y >= h - 2)
+                    p = 0;
+                const bool inPatch = x >= x0 && x < x0 + side && y >= y0 && y < y0 + side;
+                if (inPatch)
+                    p = static_cast<char>(205);
+                const bool onEdge = inPatch && (x == x0 || y == y0);
+                if (onEdge && edge == "returns")
+                    p = 0; // two sides of the patch seen by the laser
+                if (onEdge && edge == "speck" && x == x0 && y == y0)
+                    p = 0;
+            }
+        std::ofstream(dir / name, std::ios::binary) << "P5\n"
+                                                    << w << " " << h << "\n255\n"
+                                                    << pixels;
+        return importPlanFile(yamlFor(dir, name));
+    };
+    const ImportResult blind = map("blind.pgm", 12, "none");
+    EXPECT_TRUE(blind.project.plan.obstacles.empty());
+    EXPECT_EQ(blind.cleaning->gapsFilled, 1);
+    EXPECT_NEAR(blind.cleaning->gapArea, 0.36, 1e-9);
+    const ImportResult speck = map("speck.pgm", 12, "speck");
+    EXPECT_TRUE(speck.project.plan.obstacles.empty());
+    const ImportResult thing = map("thing.pgm", 12, "returns");
+    ASSERT_EQ(thing.project.plan.obstacles.size(), 1u);
+    EXPECT_NEAR(std::abs(ringArea(thing.project.plan.obstacles[0])), 0.36, 0.1);
+    // Beyond four times the gap area (0.6 m^2): unknown floor is not planned over.
+    const ImportResult large = map("large.pgm", 18, "none");
+    EXPECT_EQ(large.project.plan.obstacles.size(), 1u);
+}
+
 TEST(MapImages, BrokenMapsGiveOneClearLine) {
     const auto dir = scratch("broken");
     {
