@@ -25,9 +25,6 @@ constexpr double kSnapTolerance = 2e-4;
 constexpr std::size_t kHandOffMaxCells = 60;
 // The share of the stripes' length the dense lattice must save to be offered.
 constexpr double kDenseMinSaving = 0.1;
-// LatticeMode::Auto lays out the dense lattice at once where it saves this share: on the
-// faculty map 39% (at 7 degrees), the lab 31% (0 degrees), drawn plans nothing.
-constexpr double kDenseAutoSaving = 0.25;
 // Headland bands follow walls at most this steep across the sweep (tan 10 degrees): along a
 // steeper wall the band's single pass would run closer than L/2 to it.
 constexpr double kHeadlandMaxSlope = 0.176;

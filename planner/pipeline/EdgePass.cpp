@@ -7,6 +7,7 @@
 #include "pipeline/LayoutOffers.h"
 #include "pipeline/PerRoomSweep.h"
 #include "pipeline/PreparedPlans.h"
+#include "pipeline/RestPieces.h"
 
 #include <algorithm>
 #include <cmath>
@@ -84,108 +85,6 @@ void append(CoveragePath& path, const CoveragePath& more) {
 void throwIfStopped(const SolveControl& control) {
     if (control.cancelled && control.cancelled())
         throw SolverError("wall loop: cancelled");
-}
-
-// The stripe angle the user fixed for a piece of the rest: the whole floor's (`--angle DEG`,
-// the editor's fixed sweep angle) or that of the piece's room (the editor's per-room "Fixed");
-// none where the angle is the planner's to choose.
-std::optional<double> fixedAngleOfPiece(const PlanRequest& request, int room) {
-    const SweepOptions& sweep = request.sweep;
-    if (sweep.automatic)
-        return std::nullopt;
-    if (!sweep.perRoom)
-        return sweep.angleDeg;
-    const std::string name =
-        room >= 0 ? request.plan.rooms[static_cast<size_t>(room)].name
-                  : (request.plan.rooms.empty() ? std::string("Floor") : std::string());
-    if (auto it = sweep.roomAngles.find(name); !name.empty() && it != sweep.roomAngles.end())
-        return it->second;
-    return std::nullopt;
-}
-
-// What planning a piece of the rest needs whatever its start and end: the piece as a floor
-// of its own and its plans prepared per angle, built once and shared by both drafts (each
-// then only runs the solver; the second draft had cost the faculty map 1.2 -> 1.5 s).
-struct PreparedPiece {
-    PlanRequest request; // without start and end
-    IslandDetours islands;
-    std::unique_ptr<PreparedPlans> open; // the islands left out (where there are any)
-    std::unique_ptr<PreparedPlans> full;
-};
-
-std::vector<PreparedPiece> preparedPieces(const PlanRequest& request, const WallLoop& walls) {
-    const double width = request.robot.coverageWidth, radius = 0.5 * request.robot.robotDiameter;
-    std::vector<PreparedPiece> pieces(walls.rest.size());
-    for (size_t index = 0; index < walls.rest.size(); ++index) {
-        PreparedPiece& prepared = pieces[index];
-        PlanRequest& piece = prepared.request;
-        piece.plan.boundary = walls.rest[index];
-        piece.plan.obstacles = walls.restHoles[index];
-        prepared.islands = islandDetours(piece.plan.boundary, piece.plan.obstacles, radius,
-                                         kEdgeIslandInWidths2 * width * width);
-        piece.plan.name = request.plan.name;
-        piece.robot = request.robot;
-        piece.sweep = request.sweep;
-        piece.sweep.roomAngles.clear();
-        piece.solver = request.solver;
-        piece.seed = request.seed;
-        piece.modelPath = request.modelPath;
-        piece.transitionCells = request.transitionCells;
-        piece.wallLoop = false;
-        if (!prepared.islands.zones.empty()) {
-            Plan open = piece.plan;
-            open.obstacles = prepared.islands.keptHoles;
-            prepared.open =
-                std::make_unique<PreparedPlans>(open, piece.robot, piece.transitionCells);
-        }
-        prepared.full =
-            std::make_unique<PreparedPlans>(piece.plan, piece.robot, piece.transitionCells);
-    }
-    return pieces;
-}
-
-// Plans one piece of the rest as a floor of its own, from the point of it nearest `from`
-// to the point nearest `towards`. Empty where the robot fits nowhere in it.
-std::optional<PlanResult> planPiece(const PlanRequest& request, const WallLoop& walls,
-                                    const PreparedPiece& prepared, size_t index, Vec2 from,
-                                    Vec2 towards, const SolveControl& control) {
-    PlanRequest piece = prepared.request;
-    const double radius = 0.5 * request.robot.robotDiameter;
-    piece.start = clearPointNear(piece.plan.boundary, piece.plan.obstacles, radius, from);
-    piece.end = clearPointNear(piece.plan.boundary, piece.plan.obstacles, radius, towards);
-    if (!piece.start || !piece.end)
-        return std::nullopt;
-    const std::optional<double> fixed = fixedAngleOfPiece(request, walls.restRoom[index]);
-    auto plan = [&](const PlanRequest& floor, const PreparedPlans& plans) {
-        return fixed ? planOneAngle(floor, *fixed, control, &plans)
-                     : planPerRoom(floor, control, &plans);
-    };
-    try {
-        // Small islands (traced furniture) out of the way of the stripes, which then drive
-        // round them; where that cannot be (a path that would start beside one), the piece
-        // is planned with every hole.
-        if (prepared.open) {
-            PlanRequest open = piece;
-            open.plan.obstacles = prepared.islands.keptHoles;
-            PlanResult planned = plan(open, *prepared.open);
-            std::optional<CoveragePath> round = detouredPath(planned.path, prepared.islands.zones);
-            if (round && !round->empty()) {
-                planned.path = std::move(*round);
-                return planned;
-            }
-        }
-        PlanResult planned = plan(piece, *prepared.full);
-        if (planned.path.empty())
-            return std::nullopt;
-        return planned;
-    } catch (const InputError&) {
-        // Smaller than a coverage square, or a pocket the robot cannot turn in: left to the
-        // touch-ups, and measured with the whole path.
-        return std::nullopt;
-    } catch (const SolverError&) {
-        throwIfStopped(control);
-        return std::nullopt;
-    }
 }
 
 // Straight-line distance from p to the nearest corner of the rest's pieces.
