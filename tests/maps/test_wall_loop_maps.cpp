@@ -125,8 +125,12 @@ Plan furnishedHall(std::uint64_t seed) {
 }
 
 Plan traced(const Plan& plan, const std::string& name, std::uint64_t seed, bool rooms = true) {
+    // One folder per test: ctest -j runs tests side by side, and two of them trace the same
+    // hall (one removed the other's map while it was read).
     const auto dir = std::filesystem::temp_directory_path() /
-                     ("fc-wall-loop-" + name + "-" + std::to_string(seed));
+                     ("fc-wall-loop-" +
+                      std::string(testing::UnitTest::GetInstance()->current_test_info()->name()) +
+                      "-" + name + "-" + std::to_string(seed));
     std::filesystem::remove_all(dir);
     std::filesystem::create_directories(dir);
     test::NoisyMapOptions options;
