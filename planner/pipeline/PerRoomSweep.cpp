@@ -11,6 +11,7 @@
 #include <exception>
 #include <future>
 #include <limits>
+#include <memory>
 #include <sstream>
 
 namespace fc {
@@ -206,19 +207,29 @@ PlanResult planWithRoomAngles(const PlanRequest& request,
 
     // Each group decomposes the whole floor at its angle (other rooms' cells carry its
     // transits) and requires only its own rooms.
+    // They are prepared side by side: on a large floor each takes seconds (a laser map
+    // imported without cleaning: 2.6 and 3.0 s for its two angles, one after the other).
+    const bool classic = solverNeedsClassicStages(request.solver);
+    std::vector<std::future<std::shared_ptr<const PreparedPlan>>> preparing;
+    for (size_t i = 1; i < distinct.size(); ++i)
+        preparing.push_back(
+            std::async(std::launch::async, [&prepared, classic, &control, a = distinct[i]] {
+                throwIfCancelled(control);
+                return prepared.shared(PreparedPlans::roundedAngle(a), classic);
+            }));
     std::vector<Group> groups;
-    for (double angle : distinct) {
+    for (size_t i = 0; i < distinct.size(); ++i) {
         Group group;
-        group.angle = PreparedPlans::roundedAngle(angle);
+        group.angle = PreparedPlans::roundedAngle(distinct[i]);
         throwIfCancelled(control); // each decomposition takes a while on large floors
-        group.prepared = prepared.at(group.angle, solverNeedsClassicStages(request.solver));
+        group.prepared = i == 0 ? prepared.at(group.angle, classic) : *preparing[i - 1].get();
         double area = 0.0;
         Vec2 weighted;
         for (const std::string& name : group.prepared.decomposition.roomNames) {
             const bool selected =
                 request.rooms.empty() ||
                 std::find(request.rooms.begin(), request.rooms.end(), name) != request.rooms.end();
-            if (!selected || angleDistance(sweepAngleOfRoom(angles, name), angle) >= 0.5)
+            if (!selected || angleDistance(sweepAngleOfRoom(angles, name), distinct[i]) >= 0.5)
                 continue;
             group.rooms.push_back(name);
             for (const Room& room : request.plan.rooms)
