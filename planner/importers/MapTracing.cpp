@@ -295,12 +295,7 @@ GeometryPtr simplifiedCells(const OGRGeometry& staircase, double tolerance) {
     GeometryPtr g(traced->SimplifyPreserveTopology(std::max(tolerance, 1e-6)));
     if (!g)
         throw InputError("simplifying the free space failed");
-    GeometryPtr opened(g->Buffer(-kOpening, 1));
-    if (opened)
-        opened.reset(opened->Buffer(kOpening, 1));
-    if (!opened)
-        throw InputError("smoothing the free space failed");
-    return opened;
+    return openedPolygons(*g, kOpening);
 }
 
 GeometryPtr openedMitred(const OGRGeometry& g, double radius, int quadSegments, bool roundErosion,

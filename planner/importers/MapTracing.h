@@ -22,6 +22,12 @@ std::map<std::int32_t, GeometryPtr> traceCells(const std::vector<std::int32_t>& 
 // pixel so that a hole touching the outline at a pixel corner joins it.
 GeometryPtr simplifiedCells(const OGRGeometry& traced, double tolerance);
 
+// `g`'s polygons opened by `radius` (pixels; GEOS buffers, one segment per quarter circle).
+// A polygon of many holes is opened in parts (SubpixelOpening.cpp): one buffer over all of an
+// uncleaned laser map's speckle holes placed each hole against an index rebuilt for it (2 of
+// a 3 s import).
+GeometryPtr openedPolygons(const OGRGeometry& g, double radius);
+
 // The free space without its passages narrower than 2 `radius` (pixels) between two walls:
 // obstacles the robot cannot pass between become one, or part of the wall (a diagonal line of
 // one-cell specks, traced through the cells' edge midpoints as a dotted line of diamonds,
