@@ -25,6 +25,10 @@ namespace {
 
 // The most stripe length (free area / W) a plan may need, km: a 10 km^2 site at W = 1 m.
 constexpr double kMaxStripeKm = 10000.0;
+// The most coverage squares (free area / W^2), the same 10 km^2 at W = 1 m: the stripes'
+// index, the path's and the coverage raster grow with them, not with the stripes' length
+// (office at W = 5 mm, 114 km of stripes: 23 million squares, 6 GB).
+constexpr double kMaxCoverageSquares = 1e7;
 
 using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
 using Box = CGAL::Box_intersection_d::Box_with_info_d<double, 2, int>;
@@ -270,6 +274,14 @@ void checkFreeArea(const Plan& plan, const RobotProfile& robot) {
                          " at W = " + formatNumber(robot.coverageWidth) +
                          " m, more than the planner's limit of 10000 km: is the plan in "
                          "metres? (a drawing in millimetres is 1,000 times too large)");
+    }
+    if (freeArea / square > kMaxCoverageSquares) {
+        char squares[64];
+        std::snprintf(squares, sizeof squares, "%.1f million", freeArea / square / 1e6);
+        throw InputError("free area " + formatArea(freeArea) + " is " + squares +
+                         " coverage squares W^2 at W = " + formatNumber(robot.coverageWidth) +
+                         " m, more than the planner's limit of 10 million: is W in metres? "
+                         "(W = 0.005 is 5 mm)");
     }
 }
 

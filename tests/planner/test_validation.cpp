@@ -136,6 +136,20 @@ TEST(Validation, APlanInMillimetresIsRefusedNamingTheUnits) {
     EXPECT_NO_THROW(validatePlan(site, RobotProfile{}));
 }
 
+// A coverage width in millimetres: a 573 m^2 office at W = 5 mm is 23 million squares W^2
+// (6 GB); refused at once, naming W. One centimetre still plans.
+TEST(Validation, AWidthOfMillimetresIsRefusedNamingW) {
+    Plan office;
+    office.boundary = rectangle(0, 0, 30, 20);
+    RobotProfile robot;
+    robot.coverageWidth = robot.robotDiameter = robot.cleaningDiameter = 0.005;
+    const std::string message = validationError(office, robot);
+    expectOneLineMessage(message);
+    expectKeywords(message, {"24.0 million coverage squares", "W = 0.005", "in metres?"});
+    robot.coverageWidth = robot.robotDiameter = robot.cleaningDiameter = 0.01;
+    EXPECT_NO_THROW(validatePlan(office, robot));
+}
+
 TEST(Validation, NonFiniteCoordinatesNameTheRing) {
     Plan plan;
     plan.boundary = rectangle(0, 0, 10, 10);
