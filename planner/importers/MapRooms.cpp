@@ -3,8 +3,10 @@
 #include "importers/MapTracing.h"
 
 #include <algorithm>
+#include <cmath>
 #include <ogr_api.h>
 #include <ogr_geometry.h>
+#include <unordered_map>
 
 namespace fc::importing {
 
@@ -117,6 +119,49 @@ void dropSpikes(Ring& ring) {
     }
 }
 
+// A ring's edges by grid cell, each in the cells it passes through (walked a cell at a
+// time), to find the edges near a vertex without testing them all: a room traced from an
+// uncleaned map has thousands of vertices, and every pair cost half a second.
+class EdgeGrid {
+public:
+    EdgeGrid(const Ring& ring, double cell) : cell_(cell) {
+        const size_t n = ring.size();
+        for (size_t j = 0; j < n; ++j) {
+            const Vec2 a = ring[j], b = ring[(j + 1) % n];
+            const int pieces = std::max(1, static_cast<int>(std::ceil(distance(a, b) / cell)));
+            for (int k = 0; k < pieces; ++k) {
+                const Vec2 p = a + (b - a) * (static_cast<double>(k) / pieces);
+                const Vec2 q = a + (b - a) * (static_cast<double>(k + 1) / pieces);
+                for (long long x = cellOf(std::min(p.x, q.x)); x <= cellOf(std::max(p.x, q.x)); ++x)
+                    for (long long y = cellOf(std::min(p.y, q.y)); y <= cellOf(std::max(p.y, q.y));
+                         ++y) {
+                        std::vector<size_t>& edges = cells_[key(x, y)];
+                        if (edges.empty() || edges.back() != j)
+                            edges.push_back(j);
+                    }
+            }
+        }
+    }
+
+    // The edges through the 3 x 3 cells around p, ascending: every edge within a cell of p.
+    std::vector<size_t> near(Vec2 p) const {
+        std::vector<size_t> out;
+        for (long long x = cellOf(p.x) - 1; x <= cellOf(p.x) + 1; ++x)
+            for (long long y = cellOf(p.y) - 1; y <= cellOf(p.y) + 1; ++y)
+                if (const auto it = cells_.find(key(x, y)); it != cells_.end())
+                    out.insert(out.end(), it->second.begin(), it->second.end());
+        std::sort(out.begin(), out.end());
+        out.erase(std::unique(out.begin(), out.end()), out.end());
+        return out;
+    }
+
+private:
+    long long cellOf(double v) const { return static_cast<long long>(std::floor(v / cell_)); }
+    static long long key(long long x, long long y) { return x * 4000037LL + y; }
+    double cell_;
+    std::unordered_map<long long, std::vector<size_t>> cells_;
+};
+
 // A ring that touches itself, as its loops: GEOS keeps a room pinched at a point (where a
 // doorway's border meets a wall's corner) as one ring, which plans refuse.
 std::vector<Ring> splitAtPinches(Ring ring, double tolerance) {
@@ -125,9 +170,13 @@ std::vector<Ring> splitAtPinches(Ring ring, double tolerance) {
         Ring r = std::move(todo.back());
         todo.pop_back();
         const size_t n = r.size();
+        double perimeter = 0.0;
+        for (size_t i = 0; i < n; ++i)
+            perimeter += distance(r[i], r[(i + 1) % n]);
+        const EdgeGrid edges(r, std::max(16.0 * tolerance, perimeter / std::max<size_t>(n, 1)));
         bool split = false;
         for (size_t i = 0; i < n && !split; ++i)
-            for (size_t j = 0; j < n && !split; ++j) {
+            for (size_t j : edges.near(r[i])) {
                 if (j == i || (j + 1) % n == i ||
                     pointSegmentDistance(r[i], r[j], r[(j + 1) % n]) > tolerance)
                     continue;
@@ -143,6 +192,7 @@ std::vector<Ring> splitAtPinches(Ring ring, double tolerance) {
                     if (loop->size() >= 3 && ringArea(*loop) > tolerance * tolerance)
                         todo.push_back(std::move(*loop));
                 split = true;
+                break;
             }
         if (!split)
             loops.push_back(std::move(r));
