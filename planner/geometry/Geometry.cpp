@@ -137,3 +137,86 @@ Polyline Frame::toWorld(const Polyline& line) const {
 }
 
 } // namespace fc
+
+namespace fc {
+
+namespace {
+
+// Distance from p to the nearest edge of the outline or a hole; -1 outside the outline or
+// inside a hole.
+double insideDistance(Vec2 p, const Ring& outline, const std::vector<const Ring*>& holes) {
+    if (!pointInRing(outline, p))
+        return -1.0;
+    for (const Ring* hole : holes)
+        if (pointInRing(*hole, p))
+            return -1.0;
+    double nearest = INFINITY;
+    auto edges = [&](const Ring& ring) {
+        for (size_t i = 0; i < ring.size(); ++i)
+            nearest =
+                std::min(nearest, pointSegmentDistance(p, ring[i], ring[(i + 1) % ring.size()]));
+    };
+    edges(outline);
+    for (const Ring* hole : holes)
+        edges(*hole);
+    return nearest;
+}
+
+} // namespace
+
+Vec2 interiorLabelPoint(const Ring& outline, const std::vector<Ring>& holes) {
+    if (outline.size() < 3)
+        return outline.empty() ? Vec2{} : outline.front();
+    const BoundingBox box = boundsOf(outline);
+    std::vector<const Ring*> near;
+    for (const Ring& hole : holes) {
+        const BoundingBox b = boundsOf(hole);
+        if (b.maxX >= box.minX && b.minX <= box.maxX && b.maxY >= box.minY && b.minY <= box.maxY)
+            near.push_back(&hole);
+    }
+    // The area centroid, about the first vertex (UTM-sized coordinates keep their precision).
+    const Vec2 o = outline.front();
+    double a = 0.0, cx = 0.0, cy = 0.0;
+    for (size_t i = 0; i < outline.size(); ++i) {
+        const Vec2 p = outline[i] - o, q = outline[(i + 1) % outline.size()] - o;
+        const double c = cross(p, q);
+        a += c;
+        cx += (p.x + q.x) * c;
+        cy += (p.y + q.y) * c;
+    }
+    const Vec2 centroid = std::abs(a) > 1e-12
+                              ? o + Vec2{cx / (3 * a), cy / (3 * a)}
+                              : Vec2{0.5 * (box.minX + box.maxX), 0.5 * (box.minY + box.maxY)};
+    const double side = std::min(box.width(), box.height());
+    const double atCentroid = insideDistance(centroid, outline, near);
+    if (atCentroid >= 0.2 * side) // a convex or nearly convex room: where it always was
+        return centroid;
+    // Far from every edge: a grid over the box, the sample nearest the centroid among those
+    // at least 80% as far from the edges as the farthest (a corridor's whole centre line is
+    // as far: its name goes to the middle, not to one end).
+    const int n = 24;
+    const Vec2 step{box.width() / n, box.height() / n};
+    std::vector<std::pair<Vec2, double>> samples;
+    double farthest = 0.0;
+    for (int i = 0; i < n; ++i)
+        for (int j = 0; j < n; ++j) {
+            const Vec2 p{box.minX + (i + 0.5) * step.x, box.minY + (j + 0.5) * step.y};
+            const double d = insideDistance(p, outline, near);
+            if (d > 0.0)
+                samples.push_back({p, d});
+            farthest = std::max(farthest, d);
+        }
+    Vec2 best = centroid;
+    double bestDistance = atCentroid;
+    for (const auto& [p, d] : samples)
+        if (d >= 0.8 * farthest &&
+            (bestDistance < 0.8 * farthest || distance(p, centroid) < distance(best, centroid))) {
+            best = p;
+            bestDistance = d;
+        }
+    if (bestDistance > 0.0)
+        return best;
+    return centroid; // a sliver the grid missed
+}
+
+} // namespace fc

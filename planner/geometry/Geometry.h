@@ -72,6 +72,11 @@ BoundingBox boundsOf(const Ring& ring);
 bool pointInRing(const Ring& ring, Vec2 p); // even-odd, boundary undefined
 double pointSegmentDistance(Vec2 p, Vec2 a, Vec2 b);
 double segmentSegmentDistance(Vec2 a, Vec2 b, Vec2 c, Vec2 d);
+// Where to write a name inside `outline` and outside `holes`: its area centroid where that
+// is at least a fifth of the way to the best from every edge, else the point farthest from
+// every edge that a grid search finds (an L-shaped room's centroid lies outside it, a room
+// drawn round a pillar has it in the pillar). Holes are ignored beyond the outline's box.
+Vec2 interiorLabelPoint(const Ring& outline, const std::vector<Ring>& holes = {});
 
 // A rigid transform used to work in the "sweep frame": the plan is shifted to a
 // local origin (so UTM-sized coordinates keep full precision) and rotated so that

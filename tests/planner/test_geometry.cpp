@@ -328,3 +328,43 @@ TEST(Geometry, FindPathThroughAGapBarelyWiderThanTheRobot) {
         EXPECT_LT(polylineLength(path), shortest + 0.3) << width;
     }
 }
+
+// Room names are written where a person looks for them: inside the room, clear of its
+// walls and of the obstacles in it, also far from the origin (UTM coordinates).
+TEST(Geometry, LabelPointsLieWellInsideTheRoom) {
+    for (const Vec2 offset : {Vec2{0, 0}, Vec2{512345.0, 5412345.0}}) {
+        auto at = [&](std::initializer_list<Vec2> points) {
+            Ring ring;
+            for (Vec2 p : points)
+                ring.push_back(p + offset);
+            return ring;
+        };
+        // A rectangle keeps its centroid.
+        const Ring hall = at({{0, 0}, {10, 0}, {10, 4}, {0, 4}});
+        const Vec2 c = interiorLabelPoint(hall) - offset;
+        EXPECT_NEAR(c.x, 5.0, 1e-6);
+        EXPECT_NEAR(c.y, 2.0, 1e-6);
+        // An L whose centroid lies outside it (arms 1 m wide): inside, at least 0.4 m from
+        // every wall.
+        const Ring ell = at({{0, 0}, {10, 0}, {10, 1}, {1, 1}, {1, 10}, {0, 10}});
+        const Vec2 inL = interiorLabelPoint(ell);
+        EXPECT_TRUE(pointInRing(ell, inL));
+        for (size_t i = 0; i < ell.size(); ++i)
+            EXPECT_GT(pointSegmentDistance(inL, ell[i], ell[(i + 1) % ell.size()]), 0.4);
+        // A room drawn round a pillar at its centre: beside the pillar, not on it.
+        const Ring pillar = at({{4, 1}, {6, 1}, {6, 3}, {4, 3}});
+        const Vec2 beside = interiorLabelPoint(hall, {pillar});
+        EXPECT_TRUE(pointInRing(hall, beside));
+        EXPECT_FALSE(pointInRing(pillar, beside));
+        for (size_t i = 0; i < pillar.size(); ++i)
+            EXPECT_GT(pointSegmentDistance(beside, pillar[i], pillar[(i + 1) % pillar.size()]),
+                      0.5);
+        // A corridor with a desk at its middle: beside the desk, not at either end.
+        const Ring corridor = at({{0, 0}, {40, 0}, {40, 2.5}, {0, 2.5}});
+        const Ring desk = at({{16, 0.5}, {24, 0.5}, {24, 2}, {16, 2}});
+        const Vec2 name = interiorLabelPoint(corridor, {desk}) - offset;
+        EXPECT_GT(std::abs(name.x - 20.0), 4.0); // beside the desk, on either side
+        EXPECT_LT(std::abs(name.x - 20.0), 8.0);
+        EXPECT_NEAR(name.y, 1.25, 0.3);
+    }
+}

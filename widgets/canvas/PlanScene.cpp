@@ -183,7 +183,7 @@ void PlanScene::rebuildPolygons() {
         item->setToolTip(selected ? tr("%1 (planned)").arg(name)
                                   : tr("%1 (not planned)").arg(name));
         // Room names before cell ids, bigger rooms first when names compete for space.
-        style::addLabel(roomLabels_, name, toQt(style::labelPoint(room.outline)),
+        style::addLabel(roomLabels_, name, toQt(interiorLabelPoint(room.outline, plan.obstacles)),
                         style::roomOutline(palette), true,
                         1e6 + std::abs(signedArea(room.outline)));
     }

@@ -49,28 +49,6 @@ QColor roomHue(int room, int alpha) {
     return QColor::fromHsv(hue, 110, 235, alpha);
 }
 
-Vec2 labelPoint(const Ring& ring) {
-    if (ring.empty())
-        return {};
-    double a = 0, cx = 0, cy = 0;
-    for (size_t i = 0; i < ring.size(); ++i) {
-        const Vec2 p = ring[i], q = ring[(i + 1) % ring.size()];
-        const double c = cross(p, q);
-        a += c;
-        cx += (p.x + q.x) * c;
-        cy += (p.y + q.y) * c;
-    }
-    if (std::abs(a) > 1e-12) {
-        const Vec2 centroid(cx / (3 * a), cy / (3 * a));
-        if (pointInRing(ring, centroid))
-            return centroid;
-    }
-    // Concave ring: the midpoint between a vertex and its neighbours' midpoint is a decent
-    // fallback that lies inside for convex corners.
-    const Vec2 v = ring[0], mid = (ring[1] + ring.back()) * 0.5;
-    return (v + mid) * 0.5;
-}
-
 namespace {
 
 // Text on a rounded plate: names stay legible where they cross the path or a hatch.

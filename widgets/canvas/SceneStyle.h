@@ -23,9 +23,6 @@ QColor obstacleFill(const QPalette& palette);
 // A distinct, stable colour per room index for the cell overlay.
 QColor roomHue(int room, int alpha);
 
-// A point inside the ring for its label: the area centroid when inside, else a vertex
-// average nudged inside.
-Vec2 labelPoint(const Ring& ring);
 // Item data keys of the labels and markers that PlanScene::layoutLabels places.
 constexpr int kLabelPriorityKey = 1; // double: higher is placed first
 constexpr int kFixedLabelKey = 2;    // bool: markers, never moved or hidden
