@@ -101,7 +101,9 @@ with it. plan without --building (or with --building all) plans every building: 
 file each (--out site.csv writes site-building-K.csv), one JSON line of the site's totals
 with each building's metrics under "buildings"; --rooms, --start and --end apply to the
 building that holds them. A building that cannot be planned is left out with a warning
-and a "skipped" entry (with --strict: exit 3).
+and a "skipped" entry (with --strict: exit 3). export without --building (or with
+--building all) writes every building the same way, a file each (one VDA 5050 order
+each), and one JSON line listing them.
 Exit codes: 0 success, 2 bad input (one line on stderr), 3 coverage loss with --strict,
 1 internal error.
 )";

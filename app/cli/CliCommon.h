@@ -34,6 +34,8 @@ Project loadProject(const std::string& path, const Arguments& args);
 // areas: the site's buildings' outline areas, largest first (SiteError::buildingAreas; empty:
 // a plan of one building, planned as such a site).
 int commandPlanSite(const Arguments& args, const std::vector<double>& areas);
+// A building's file of a site's: "site.csv" -> "site-building-2.csv".
+std::string buildingFile(const std::string& out, int building);
 int commandTrain(const Arguments& args);
 int commandTile(const Arguments& args);   // TileCommand.cpp: the tiling robot
 int commandImport(const Arguments& args); // ImportCommand.cpp: DXF, ROS maps, WKT to a plan

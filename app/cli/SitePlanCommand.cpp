@@ -19,15 +19,14 @@
 
 namespace fc::cli {
 
-namespace {
-
-// "site.csv" -> "site-building-2.csv".
 std::string buildingFile(const std::string& out, int building) {
     const std::filesystem::path p(out);
     return (p.parent_path() /
             (p.stem().string() + "-building-" + std::to_string(building) + p.extension().string()))
         .string();
 }
+
+namespace {
 
 // The site's metrics: sums, and the coverage of the summed areas.
 Metrics siteTotals(const std::vector<Metrics>& parts) {

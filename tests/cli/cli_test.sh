@@ -145,6 +145,18 @@ check "a path per building" test -s "$work/site-building-1.csv" -a -s "$work/sit
 "$cli" graph "$data/two-boundaries.geojson" --out "$work/site-graph.json" >/dev/null 2>"$work/site.err"
 check "graph of a site is bad input" test $? -eq 2
 check "graph of a site names --building" grep -q -- "--building K" "$work/site.err"
+# export writes every building of a site, a file each, as plan does; --building K one.
+check "export a site" cli export "$data/two-boundaries.geojson" --out "$work/site.json"
+check "an export per building" test -s "$work/site-building-1.json" -a \
+  -s "$work/site-building-2.json"
+"$cli" export "$data/two-boundaries.geojson" --format vda5050 --out "$work/site.yaml" \
+  >"$work/site.out" 2>/dev/null
+check "the site's export lists its buildings" grep -q '"files":2,"buildings":\[{"building":1,' \
+  "$work/site.out"
+check "a VDA 5050 order per building" grep -q '"two-boundaries-building-2-coverage"' \
+  "$work/site-building-2.yaml"
+check "export one building of a site" cli export "$data/two-boundaries.geojson" --building 2 \
+  --out "$work/b2.csv"
 # A plan whose own rings are wrong names the repair in its one line, and the repair it names
 # gives a plan that plans.
 cp "$data/overlapping-holes.geojson" "$work/overlapping.geojson"
