@@ -388,6 +388,21 @@ double transitLength(const CoveragePath& path) {
     return length;
 }
 
+// The corridor map with its end at the corridor's far end (the robot parked there): the
+// rest's pieces are toured in an order by cheapest insertion, the room the corridor passes on
+// the way included. Taking the nearest piece next swept the middle to the far end, drove 37 m
+// back to that room and 42 m to the end again: 415 m with 108 m of transits (now 337 m, 40 m).
+TEST(WallLoopMaps, APathEndedAtTheFarEndSweepsThePassedRoomOnTheWay) {
+    const Plan corridor =
+        importPlanFile(std::string(FC_REAL_MAPS_DIR) + "/localization-demo.yaml").project.plan;
+    PlanRequest request = fcgen::defaultRequest(corridor);
+    request.end = Vec2{-30.5, -12.0};
+    const PlanResult open = planCoverage(request);
+    EXPECT_GE(open.metrics.coverage, 0.99);
+    EXPECT_LT(transitLength(open.path), 60.0);
+    EXPECT_LT(open.metrics.length, 370.0);
+}
+
 // Two traced halls (8 x 8 m) at the ends of a corridor 1.6 m wide and 20 m long, the start in
 // a far corner of one: each hall's middle is swept where the loop passes it, as an excursion
 // from the loop and back, not toured from one point of the loop, which crossed the corridor
