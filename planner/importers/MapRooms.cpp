@@ -1,5 +1,6 @@
 // The rooms of an occupancy map's segmentation as plan rooms: simple, disjoint outlines
 // (GEOS through OGR), since a plan's room is one ring and rooms may not overlap.
+#include "geometry/GridCells.h"
 #include "importers/MapTracing.h"
 
 #include <algorithm>
@@ -127,19 +128,11 @@ public:
     EdgeGrid(const Ring& ring, double cell) : cell_(cell) {
         const size_t n = ring.size();
         for (size_t j = 0; j < n; ++j) {
-            const Vec2 a = ring[j], b = ring[(j + 1) % n];
-            const int pieces = std::max(1, static_cast<int>(std::ceil(distance(a, b) / cell)));
-            for (int k = 0; k < pieces; ++k) {
-                const Vec2 p = a + (b - a) * (static_cast<double>(k) / pieces);
-                const Vec2 q = a + (b - a) * (static_cast<double>(k + 1) / pieces);
-                for (long long x = cellOf(std::min(p.x, q.x)); x <= cellOf(std::max(p.x, q.x)); ++x)
-                    for (long long y = cellOf(std::min(p.y, q.y)); y <= cellOf(std::max(p.y, q.y));
-                         ++y) {
-                        std::vector<size_t>& edges = cells_[key(x, y)];
-                        if (edges.empty() || edges.back() != j)
-                            edges.push_back(j);
-                    }
-            }
+            forEachCellNear(ring[j], ring[(j + 1) % n], cell, 0.0, [&](long long x, long long y) {
+                std::vector<size_t>& edges = cells_[key(x, y)];
+                if (edges.empty() || edges.back() != j) // a segment's pieces share cells
+                    edges.push_back(j);
+            });
         }
     }
 

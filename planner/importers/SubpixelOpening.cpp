@@ -1,6 +1,6 @@
 // Opening traced polygons by a fraction of a pixel (GEOS buffers through OGR), fast on floors
 // with thousands of holes.
-#include "geometry/Geometry.h"
+#include "geometry/GridCells.h"
 #include "importers/MapTracing.h"
 
 #include <algorithm>
@@ -67,23 +67,10 @@ public:
     }
 
 private:
-    // The cells within `reach` of segment ab, walked a cell's length at a time: a long
-    // diagonal wall's box would hold thousands of cells it never comes near.
     template <typename F> void forCells(Vec2 a, Vec2 b, F&& f) const {
-        const int pieces = std::max(1, static_cast<int>(std::ceil(distance(a, b) / cell_)));
-        for (int k = 0; k < pieces; ++k) {
-            const Vec2 p = a + (b - a) * (static_cast<double>(k) / pieces);
-            const Vec2 q = a + (b - a) * (static_cast<double>(k + 1) / pieces);
-            const long long x0 = cellOf(std::min(p.x, q.x) - reach_);
-            const long long x1 = cellOf(std::max(p.x, q.x) + reach_);
-            const long long y0 = cellOf(std::min(p.y, q.y) - reach_);
-            const long long y1 = cellOf(std::max(p.y, q.y) + reach_);
-            for (long long x = x0; x <= x1; ++x)
-                for (long long y = y0; y <= y1; ++y)
-                    f(x * 4000037LL + y); // a cell twice: the same test twice
-        }
+        forEachCellNear(a, b, cell_, reach_,
+                        [&](long long x, long long y) { f(x * 4000037LL + y); });
     }
-    long long cellOf(double v) const { return std::llround(std::floor(v / cell_)); }
 
     const std::vector<std::vector<Vec2>>& rings_;
     double reach_, cell_;

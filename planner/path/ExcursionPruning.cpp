@@ -1,5 +1,7 @@
 #include "path/ExcursionPruning.h"
 
+#include "geometry/GridCells.h"
+
 #include <algorithm>
 #include <cmath>
 #include <unordered_map>
@@ -10,25 +12,15 @@ namespace {
 // Segments bucketed on a W-sized grid for local coverage queries.
 class SegmentGrid {
 public:
-    // Each segment in the cells it passes through, walked a cell at a time: by its box, a
-    // 50 m stripe at W = 5 mm filled 10,000 cells and the path's 12,000 stripes 5 GB, and
-    // a long diagonal transit at W = 1 m thousands of cells it never comes near.
+    // Each segment in the cells it passes through (forEachCellNear).
     SegmentGrid(const Polyline& pts, double cell) : pts_(pts), cell_(cell) {
-        for (int i = 0; i + 1 < static_cast<int>(pts.size()); ++i) {
-            const Vec2 a = pts[i], b = pts[i + 1];
-            const int pieces = std::max(1, static_cast<int>(std::ceil(distance(a, b) / cell)));
-            for (int k = 0; k < pieces; ++k) {
-                BoundingBox box;
-                box.add(a + (b - a) * (static_cast<double>(k) / pieces));
-                box.add(a + (b - a) * (static_cast<double>(k + 1) / pieces));
-                for (long gx = key(box.minX); gx <= key(box.maxX); ++gx)
-                    for (long gy = key(box.minY); gy <= key(box.maxY); ++gy) {
-                        std::vector<int>& bucket = buckets_[hash(gx, gy)];
-                        if (bucket.empty() || bucket.back() != i) // pieces share cells
-                            bucket.push_back(i);
-                    }
-            }
-        }
+        for (int i = 0; i + 1 < static_cast<int>(pts.size()); ++i)
+            forEachCellNear(pts[i], pts[i + 1], cell, 0.0, [&](long long gx, long long gy) {
+                std::vector<int>& bucket =
+                    buckets_[hash(static_cast<long>(gx), static_cast<long>(gy))];
+                if (bucket.empty() || bucket.back() != i) // a segment's pieces share cells
+                    bucket.push_back(i);
+            });
     }
     // Segment indices whose grid cells meet the box grown by one cell.
     void near(const BoundingBox& box, std::vector<int>& out) const {

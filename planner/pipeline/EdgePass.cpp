@@ -199,11 +199,11 @@ WallLoopDraft excursionDraft(const LoopContext& context, Vec2 start, Vec2 end) {
     return draft;
 }
 
-// An order of the rest's pieces from `from` to `to` by cheapest insertion, where its
-// straight-line estimate saves kEdgeSplitMinGainInWidths W over taking the nearest piece
-// next; else empty (the nearest next, as it always was). The nearest next ignores where the
-// path must end: on a corridor map ended at its far end it swept the middle to that end,
-// then drove 37 m back to the one room it had passed and 42 m to the end again.
+// An order of the rest's pieces (their indices) from `from` to `to` by cheapest insertion, where
+// its straight-line estimate saves kEdgeSplitMinGainInWidths W over taking the nearest piece next;
+// else empty (the nearest next, as it always was). The nearest next ignores where the path must
+// end: on a corridor map ended at its far end it swept the middle to that end, then drove 37 m back
+// to the one room it had passed and 42 m to the end again.
 std::vector<size_t> insertionOrder(const WallLoop& walls, Vec2 from, Vec2 to, double width) {
     const size_t count = walls.rest.size();
     std::vector<std::vector<Vec2>> points(count); // each piece's outline, 64 points at most
@@ -264,15 +264,18 @@ std::vector<size_t> insertionOrder(const WallLoop& walls, Vec2 from, Vec2 to, do
     }
     if (!(cost(inserted) < cost(nearestNext) - kEdgeSplitMinGainInWidths * width))
         return {};
-    return std::vector<size_t>(inserted.begin() + 1, inserted.end() - 1);
+    std::vector<size_t> pieces; // stop i is piece i - 1
+    for (size_t k = 1; k + 1 < inserted.size(); ++k)
+        pieces.push_back(inserted[k] - 1);
+    return pieces;
 }
 
 // The whole rest toured from one point of the loop (loopSplit), piece by piece, the nearest
-// next, or in `order` (stops numbered from 1, as insertionOrder gives them); each ends where
+// next, or in `order` (piece indices, as insertionOrder gives them); each ends where
 // the piece after it is nearest (the last one where the tour rejoins the loop, or where the
 // path ends).
 WallLoopDraft tourDraft(const LoopContext& context, Vec2 start, Vec2 end,
-                        const std::vector<size_t>& stops = {}) {
+                        const std::vector<size_t>& order = {}) {
     const WallLoop& walls = context.walls;
     WallLoopDraft draft = draftFrom(context, start);
     CoveragePath& path = draft.path;
@@ -280,9 +283,6 @@ WallLoopDraft tourDraft(const LoopContext& context, Vec2 start, Vec2 end,
     driveLoop(walls, 0, split, path);
     const Vec2 restEnd = split + 1 < walls.loop.size() ? walls.loop[split] : end;
     const size_t count = walls.rest.size();
-    std::vector<size_t> order;
-    for (size_t stop : stops)
-        order.push_back(stop - 1);
     std::vector<char> done(count, 0);
     for (size_t k = 0; k < count; ++k) {
         throwIfStopped(context.control);
