@@ -1,11 +1,15 @@
 // floorcover-property-bench: many random plans of the property generator (tests/checker)
 // through planning and the independent checker; prints the failure rate per family and the
 // worst cases, as Markdown.
-//   floorcover-property-bench [--count N] [--seed S] [--family NAME] [--worst K]
+//   floorcover-property-bench [--count N] [--seed S] [--family NAME] [--worst K] [--write DIR]
+// (--write DIR: each generated plan is also written there as FAMILY-SEED.geojson, to plan it
+// again with floorcover-cli)
 // Plan i (0-based) is family i mod F (F families, or the one named) with seed S + i / F, so
 // a failure is reproduced by property_tests' generator with that family and seed.
 #include "PlanGenerator.h"
 #include "PropertyCheck.h"
+#include "formats/FileIO.h"
+#include "formats/PlanIO.h"
 #include "learning/dqn/DqnSolver.h"
 
 #include <algorithm>
@@ -35,7 +39,7 @@ struct Tally {
 
 void usage() {
     std::fprintf(stderr, "usage: floorcover-property-bench [--count N] [--seed S] "
-                         "[--family NAME] [--worst K] [--solver NAME]\n");
+                         "[--family NAME] [--worst K] [--solver NAME] [--write DIR]\n");
 }
 
 } // namespace
@@ -45,6 +49,7 @@ int main(int argc, char** argv) {
     std::uint64_t seed = 1;
     std::vector<Family> families = allFamilies();
     std::string solver = "heuristic";
+    std::string writeDir;
     fc::registerDqnSolver(); // solver dqn: the built-in generalist model
     for (int i = 1; i < argc; ++i) {
         const std::string arg = argv[i];
@@ -59,6 +64,8 @@ int main(int argc, char** argv) {
             seed = std::strtoull(value.c_str(), nullptr, 10);
         else if (arg == "--solver")
             solver = value;
+        else if (arg == "--write")
+            writeDir = value;
         else if (arg == "--worst")
             worst = std::max(0, std::atoi(value.c_str()));
         else if (arg == "--family") {
@@ -90,6 +97,10 @@ int main(int argc, char** argv) {
             r.plan.seed = caseSeed;
             r.generatorError = e.what();
         }
+        if (r.generatorError.empty() && !writeDir.empty())
+            fc::writeFileAtomically(writeDir + "/" + familyName(family) + "-" +
+                                        std::to_string(caseSeed) + ".geojson",
+                                    fc::writeGeoJsonPlan(r.plan.plan));
         if (r.generatorError.empty()) {
             fc::PlanRequest request = defaultRequest(r.plan.plan);
             request.solver = solver;

@@ -128,6 +128,21 @@ std::vector<PlanResult> planLayoutOffers(const PlanRequest& request, const PlanR
                 angle = std::fmod(angle + 90.0, 180.0);
         variants.push_back(turned);
     }
+    // The building's family swept as one stays on offer where the first plan turned some
+    // rooms off it (a room along its second wall family): the layouts below can make it
+    // the better plan after all (a generated pair of slanted rooms: 372 s chosen with one
+    // room along its second family, where the family on a headland plans 325 s).
+    if (request.sweep.perRoom && !request.sweep.automatic) {
+        const std::map<std::string, double> family = familyAngles(request.plan, request.sweep);
+        const bool offered = std::any_of(variants.begin(), variants.end(), [&](const auto& v) {
+            return std::all_of(v.begin(), v.end(), [&](const auto& entry) {
+                const auto it = family.find(entry.first);
+                return it == family.end() || angleDistance(it->second, entry.second) < 0.5;
+            });
+        });
+        if (!offered)
+            variants.push_back(family);
+    }
     // Each layout's preparations are shared by its variants, which are planned at once.
     std::vector<std::unique_ptr<PreparedPlans>> layouts;
     std::vector<std::future<PlanResult>> pending;

@@ -26,8 +26,12 @@ constexpr size_t kPerRoomSearchMaxRooms = 60;
 // the search, 12.7 s and the same path with the family alone). Cleaned maps have a few
 // dozen, drawings rarely hundreds.
 constexpr size_t kPerRoomSearchMaxObstacles = 500;
-// Screened candidates planned again with the requested solver (besides the family plan).
+// Rooms tried one at a time along their second wall family (roomSecondAngles).
+constexpr size_t kSecondFamilyCandidates = 3;
+// Screened candidates planned again with the requested solver (besides the family plan), and
+// of those along rooms' second families.
 constexpr size_t kPerRoomReplans = 2;
+constexpr size_t kSecondFamilyReplans = 1;
 // Distances closer than this (m) are ties: a rotated plan must choose as the upright one.
 constexpr double kTieTolerance = 1e-6;
 // Screened candidates that miss at most this share of the floor (before touch-ups) rank by
@@ -41,35 +45,6 @@ constexpr double kScreenedLoss = 0.02;
 // and every solve is quick, so all finalists are planned.
 constexpr double kFinalistSlack = 1.15;
 constexpr int kFinalistSlackMinCells = 100;
-
-double normalizedAngle(double deg) {
-    return std::fmod(std::fmod(deg, 180.0) + 180.0, 180.0);
-}
-
-double angleDistance(double a, double b) {
-    const double d = std::abs(normalizedAngle(a) - normalizedAngle(b));
-    return std::min(d, 180.0 - d);
-}
-
-// Stripes along the longer extent of `outline` in the frame of wall family `family`
-// (degrees in [0, 90)): fewer, longer stripes and so fewer turns.
-double alongLongerExtent(const Ring& outline, double family) {
-    const double rad = family * M_PI / 180.0;
-    const Vec2 u{std::cos(rad), std::sin(rad)}, v{-std::sin(rad), std::cos(rad)};
-    double uMin = INFINITY, uMax = -INFINITY, vMin = INFINITY, vMax = -INFINITY;
-    for (const Vec2& p : outline) {
-        uMin = std::min(uMin, dot(p, u)), uMax = std::max(uMax, dot(p, u));
-        vMin = std::min(vMin, dot(p, v)), vMax = std::max(vMax, dot(p, v));
-    }
-    // A near-square room keeps the family's own direction, whichever way it is drawn.
-    const bool alongU = uMax - uMin >= (vMax - vMin) * (1.0 - 1e-6);
-    return normalizedAngle(alongU ? family : family + 90.0);
-}
-
-double angleFromWalls(const Plan& walls, const Ring& outline) {
-    const std::vector<double> families = dominantWallAngles(walls, 1);
-    return alongLongerExtent(outline, families.empty() ? 0.0 : families.front());
-}
 
 // Computed relative to the first vertex: with UTM-sized coordinates the cross products of
 // raw coordinates cancel catastrophically.
@@ -148,32 +123,6 @@ Vec2 entryPoint(const Group& group, Vec2 target, Vec2 away) {
 }
 
 } // namespace
-
-std::map<std::string, double> roomSweepAngles(const Plan& plan, const SweepOptions& sweep) {
-    std::map<std::string, double> out;
-    out[""] = angleFromWalls(plan, plan.boundary);
-    for (const Room& room : plan.rooms) {
-        if (auto it = sweep.roomAngles.find(room.name); it != sweep.roomAngles.end()) {
-            out[room.name] = normalizedAngle(it->second);
-            continue;
-        }
-        Plan walls;
-        walls.boundary = room.outline;
-        for (const Ring& obstacle : plan.obstacles)
-            if (!obstacle.empty() && pointInRing(room.outline, obstacle.front()))
-                walls.obstacles.push_back(obstacle);
-        out[room.name] = angleFromWalls(walls, room.outline);
-    }
-    if (auto it = sweep.roomAngles.find("Floor");
-        it != sweep.roomAngles.end() && plan.rooms.empty())
-        out[""] = normalizedAngle(it->second);
-    return out;
-}
-
-double sweepAngleOfRoom(const std::map<std::string, double>& angles, const std::string& room) {
-    auto it = angles.find(room);
-    return it != angles.end() ? it->second : angles.at("");
-}
 
 namespace {
 
@@ -419,59 +368,6 @@ PlanResult planWithRoomAngles(const PlanRequest& request,
     return result;
 }
 
-namespace {
-
-// The groups of the rooms' own angles, the one with the most rooms first.
-std::vector<std::pair<double, int>> angleGroups(const std::map<std::string, double>& walls) {
-    std::vector<std::pair<double, int>> groups; // angle, rooms
-    for (const auto& entry : walls) {
-        auto it = std::find_if(groups.begin(), groups.end(), [&](const auto& g) {
-            return angleDistance(g.first, entry.second) < 0.5;
-        });
-        if (it == groups.end())
-            groups.push_back({entry.second, 1});
-        else
-            ++it->second;
-    }
-    std::stable_sort(groups.begin(), groups.end(),
-                     [](const auto& a, const auto& b) { return a.second > b.second; });
-    return groups;
-}
-
-} // namespace
-
-std::map<std::string, double> roomAnglesOf(const PlanResult& result, const Plan& plan) {
-    std::map<std::string, double> angles;
-    auto add = [&](const std::string& room, double angle) {
-        const bool named = std::any_of(plan.rooms.begin(), plan.rooms.end(),
-                                       [&](const Room& r) { return r.name == room; });
-        angles[named ? room : std::string()] = angle;
-    };
-    if (result.parts.empty()) {
-        for (const std::string& room : result.prepared.decomposition.roomNames)
-            add(room, result.stripeAngleDeg);
-    }
-    for (const PlanPart& part : result.parts)
-        for (const std::string& room : part.rooms)
-            add(room, part.stripeAngleDeg);
-    return angles;
-}
-
-std::map<std::string, double> familyAngles(const Plan& plan, const SweepOptions& sweep) {
-    const std::map<std::string, double> walls = roomSweepAngles(plan, sweep);
-    const std::vector<std::pair<double, int>> groups = angleGroups(walls);
-    // Every room of the main group's wall family (along or across it) at the main group's
-    // angle: sweeping a family in two passes crosses the building twice (offices, then their
-    // corridors). Fixed angles stay.
-    std::map<std::string, double> family = walls;
-    for (auto& [room, angle] : family) {
-        const double d = angleDistance(angle, groups.front().first);
-        if (sweep.roomAngles.count(room) == 0 && (d < 0.5 || std::abs(d - 90.0) < 0.5))
-            angle = groups.front().first;
-    }
-    return family;
-}
-
 PlanResult planPerRoom(const PlanRequest& request, const SolveControl& control,
                        const PreparedPlans* shared) {
     request.robot.validate();
@@ -507,11 +403,10 @@ PlanResult planPerRoom(const PlanRequest& request, const SolveControl& control,
     struct Screened {
         std::map<std::string, double> angles;
         Metrics metrics;
+        bool secondFamily = false; // a candidate of roomSecondAngles
     };
     std::vector<Screened> screened;
     // Progress: the screening is the first half, the finalists the second.
-    const double candidates =
-        2.0 + static_cast<double>(std::min(groups.size(), kPerRoomSearchLimit));
     auto report = [&control](double fraction) {
         if (control.progress)
             control.progress(fraction);
@@ -538,6 +433,34 @@ PlanResult planPerRoom(const PlanRequest& request, const SolveControl& control,
                 angle = normalizedAngle(angle + 90.0);
         addCandidate(turned);
     }
+    // Rooms whose walls run two ways (a slanted side, a door wall across the long walls)
+    // also along their second family: the largest few one at a time, along and across it,
+    // then all at once.
+    const size_t firstSecondFamily = candidateAngles.size();
+    const std::map<std::string, double> second = roomSecondAngles(request.plan, request.sweep);
+    std::vector<std::pair<double, std::string>> twoWay; // area, room ("": the floor)
+    for (const auto& [name, angle] : second) {
+        const auto room = std::find_if(request.plan.rooms.begin(), request.plan.rooms.end(),
+                                       [&](const Room& r) { return r.name == name; });
+        const Ring& outline =
+            room != request.plan.rooms.end() ? room->outline : request.plan.boundary;
+        twoWay.push_back({ringArea(outline), name});
+    }
+    std::stable_sort(twoWay.begin(), twoWay.end(),
+                     [](const auto& a, const auto& b) { return a.first > b.first; });
+    std::map<std::string, double> allSecond = walls;
+    for (size_t i = 0; i < twoWay.size(); ++i) {
+        const std::string& name = twoWay[i].second;
+        allSecond[name] = second.at(name);
+        if (i < kSecondFamilyCandidates) { // along and across: such rooms are often squat
+            std::map<std::string, double> one = walls;
+            one[name] = second.at(name);
+            addCandidate(one);
+            one[name] = normalizedAngle(second.at(name) + 90.0);
+            addCandidate(one);
+        }
+    }
+    addCandidate(allSecond);
     throwIfCancelled(control);
     std::vector<std::future<std::optional<Metrics>>> screenings;
     SolveControl screeningControl;
@@ -557,12 +480,12 @@ PlanResult planPerRoom(const PlanRequest& request, const SolveControl& control,
     for (size_t i = 0; i < screenings.size(); ++i) {
         try {
             if (std::optional<Metrics> metrics = screenings[i].get())
-                screened.push_back({candidateAngles[i], *metrics});
+                screened.push_back({candidateAngles[i], *metrics, i >= firstSecondFamily});
         } catch (...) { // cancelled: every screening is waited for first
             if (!screeningFailure)
                 screeningFailure = std::current_exception();
         }
-        report(0.5 * static_cast<double>(i + 1) / candidates);
+        report(0.5 * static_cast<double>(i + 1) / static_cast<double>(screenings.size()));
     }
     if (screeningFailure)
         std::rethrow_exception(screeningFailure);
@@ -582,8 +505,15 @@ PlanResult planPerRoom(const PlanRequest& request, const SolveControl& control,
     });
     // The family and the best screened candidates, planned with the requested solver side
     // by side (each plan is independent; only cancellation is shared, and it is atomic).
+    // The rooms' second families compete for a place of their own, so that the places of
+    // the others go as they would without them (a round hall: a second family screened
+    // first took the place of the plan that won).
     std::vector<std::map<std::string, double>> finalists{family};
-    for (size_t i = 0; i < screened.size() && finalists.size() <= kPerRoomReplans; ++i) {
+    size_t others = 0, seconds = 0;
+    for (size_t i = 0; i < screened.size(); ++i) {
+        size_t& taken = screened[i].secondFamily ? seconds : others;
+        if (taken >= (screened[i].secondFamily ? kSecondFamilyReplans : kPerRoomReplans))
+            continue;
         bool isFamily = true;
         for (const auto& [room, angle] : screened[i].angles)
             isFamily = isFamily && angleDistance(angle, family.at(room)) < 0.5;
@@ -592,7 +522,7 @@ PlanResult planPerRoom(const PlanRequest& request, const SolveControl& control,
                               complete(screened[i].metrics) &&
                               screened[i].metrics.time > kFinalistSlack * best.time;
         if (!isFamily && !hopeless)
-            finalists.push_back(screened[i].angles);
+            finalists.push_back(screened[i].angles), ++taken;
     }
     if (request.singleFinalist && !screened.empty()) // beside a wall loop on a large floor
         finalists = {screened.front().angles};

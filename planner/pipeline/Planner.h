@@ -9,6 +9,7 @@
 #include "model/CoveragePath.h"
 #include "model/Plan.h"
 #include "model/Project.h"
+#include "pipeline/WallFamilies.h"
 #include "solvers/Solver.h"
 #include "solvers/SolverRegistry.h"
 
@@ -134,14 +135,6 @@ std::vector<std::string> solverNames();
 // prepares PreparedPlan::classic on a copy when the solver needs it and it is missing.
 Solution runSolver(const std::string& name, const PreparedPlan& prepared, const Query& query,
                    const std::string& modelPath = {}, const SolveControl& control = {});
-
-// The plan's dominant wall directions in [0, 90) degrees, strongest first (walls of the
-// boundary, obstacles and rooms vote with their length; a wall and its normal are one
-// family), at most `families` of them.
-std::vector<double> dominantWallAngles(const Plan& plan, int families);
-
-// Sweep angles tried by "auto": along and across the two dominant wall families, 90, 0.
-std::vector<double> candidateAngles(const Plan& plan);
 
 // Losses above this fraction of the selected floor are reported (CLI stderr, GUI, --strict).
 inline constexpr double kReportedLossFraction = 0.005;
