@@ -437,7 +437,9 @@ PlanResult planPerRoom(const PlanRequest& request, const SolveControl& control,
     // also along their second family: the largest few one at a time, along and across it,
     // then all at once.
     const size_t firstSecondFamily = candidateAngles.size();
-    const std::map<std::string, double> second = roomSecondAngles(request.plan, request.sweep);
+    const std::map<std::string, double> second = request.secondFamilies
+                                                     ? roomSecondAngles(request.plan, request.sweep)
+                                                     : std::map<std::string, double>();
     std::vector<std::pair<double, std::string>> twoWay; // area, room ("": the floor)
     for (const auto& [name, angle] : second) {
         const auto room = std::find_if(request.plan.rooms.begin(), request.plan.rooms.end(),

@@ -86,6 +86,7 @@ std::optional<PlanResult> planPiece(const PlanRequest& request, const WallLoop& 
                                     const PreparedPiece& prepared, size_t index, Vec2 from,
                                     Vec2 towards, const SolveControl& control) {
     PlanRequest piece = prepared.request;
+    piece.secondFamilies = false; // PlanRequest::secondFamilies
     const double radius = 0.5 * request.robot.robotDiameter;
     piece.start = clearPointNear(piece.plan.boundary, piece.plan.obstacles, radius, from);
     piece.end = clearPointNear(piece.plan.boundary, piece.plan.obstacles, radius, towards);
