@@ -2729,10 +2729,6 @@ Abdeckungspfadplanung für Reinigungs- und Desinfektionsroboter.</translation>
         <translation>Festgelegt</translation>
     </message>
     <message>
-        <source>Type an angle in degrees to fix a room&apos;s stripes; clear it to follow the room&apos;s walls again.</source>
-        <translation>Einen Winkel in Grad eingeben, um die Bahnen eines Raums festzulegen; leeren, um wieder den Wänden des Raums zu folgen.</translation>
-    </message>
-    <message>
         <source>Uncovered</source>
         <translation>Nicht abgedeckt</translation>
     </message>
@@ -2791,6 +2787,14 @@ Abdeckungspfadplanung für Reinigungs- und Desinfektionsroboter.</translation>
     <message>
         <source>How the order of the cells is chosen: heuristic is fast and close to the best; exact proves the best order on small floors; greedy is the quickest sketch; dqn uses the model trained in the Training panel, or the built-in generalist model when none is; dqn-search lets that model guide a search for 2 seconds per part of the floor (better than heuristic on large floors).</source>
         <translation>Wie die Reihenfolge der Zellen gewählt wird: heuristic ist schnell und nahe am Besten; exact beweist die beste Reihenfolge auf kleinen Flächen; greedy ist die schnellste Skizze; dqn nutzt das im Bereich Training trainierte Modell oder, wenn keines trainiert ist, das eingebaute allgemeine Modell; dqn-search lässt dieses Modell 2 Sekunden je Teil der Fläche eine Suche leiten (auf großen Flächen besser als heuristic).</translation>
+    </message>
+    <message>
+        <source>Planned</source>
+        <translation>Geplant</translation>
+    </message>
+    <message>
+        <source>Type an angle in degrees to fix a room&apos;s stripes; clear it to follow the room&apos;s walls again. Planned: the angle the last plan swept the room at (the planner may turn a room by 90° or along its other walls where that plans faster).</source>
+        <translation>Einen Winkel in Grad eingeben, um die Bahnen eines Raums festzulegen; leeren, um wieder den Wänden des Raums zu folgen. Geplant: der Winkel, in dem der letzte Plan den Raum gefahren ist (der Planer kann einen Raum um 90° drehen oder an seinen anderen Wänden ausrichten, wo das schneller ist).</translation>
     </message>
 </context>
 <context>

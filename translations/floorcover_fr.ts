@@ -2729,10 +2729,6 @@ Planification de trajets de couverture pour robots de nettoyage et de désinfect
         <translation>Imposé</translation>
     </message>
     <message>
-        <source>Type an angle in degrees to fix a room&apos;s stripes; clear it to follow the room&apos;s walls again.</source>
-        <translation>Saisissez un angle en degrés pour imposer les bandes d’une pièce ; effacez-le pour suivre à nouveau ses murs.</translation>
-    </message>
-    <message>
         <source>Uncovered</source>
         <translation>Non couvert</translation>
     </message>
@@ -2791,6 +2787,14 @@ Planification de trajets de couverture pour robots de nettoyage et de désinfect
     <message>
         <source>How the order of the cells is chosen: heuristic is fast and close to the best; exact proves the best order on small floors; greedy is the quickest sketch; dqn uses the model trained in the Training panel, or the built-in generalist model when none is; dqn-search lets that model guide a search for 2 seconds per part of the floor (better than heuristic on large floors).</source>
         <translation>Comment l’ordre des cellules est choisi : heuristic est rapide et proche du meilleur ; exact prouve le meilleur ordre sur les petits plans ; greedy est l’esquisse la plus rapide ; dqn utilise le modèle entraîné dans le panneau Entraînement, ou le modèle généraliste intégré s’il n’y en a pas ; dqn-search laisse ce modèle guider une recherche pendant 2 secondes par partie du plan (meilleur que heuristic sur les grands plans).</translation>
+    </message>
+    <message>
+        <source>Planned</source>
+        <translation>Planifié</translation>
+    </message>
+    <message>
+        <source>Type an angle in degrees to fix a room&apos;s stripes; clear it to follow the room&apos;s walls again. Planned: the angle the last plan swept the room at (the planner may turn a room by 90° or along its other walls where that plans faster).</source>
+        <translation>Saisir un angle en degrés pour fixer les bandes d&apos;une pièce ; l&apos;effacer pour suivre de nouveau ses murs. Planifié : l&apos;angle auquel le dernier plan a balayé la pièce (le planificateur peut tourner une pièce de 90° ou la caler sur ses autres murs quand c&apos;est plus rapide).</translation>
     </message>
 </context>
 <context>

@@ -1,9 +1,9 @@
 // Window-level behaviour: the sweep modes and per-room angles, recent files, preferences.
 #include "EditorFixture.h"
 #include "canvas/PlanScene.h"
-#include "tasks/PlanningController.h"
-#include "docks/PlanningDock.h"
 #include "dialogs/PreferencesDialog.h"
+#include "docks/PlanningDock.h"
+#include "tasks/PlanningController.h"
 #include "window/Translations.h"
 
 #include <QApplication>
@@ -86,6 +86,11 @@ void WindowTest::perRoomAnglesFollowWallsAndOverridesAreUndoable() {
     for (const fc::PlanPart& part : result->parts)
         at45 |= std::abs(part.stripeAngleDeg - 45.0) < 1e-9;
     QVERIFY(at45);
+    // The angle each room was planned at: the corridor's is the one fixed.
+    QCOMPARE(table->item(corridor, 3)->text(),
+             QStringLiteral("%1°").arg(QLocale().toString(45.0, 'f', 1)));
+    for (int row = 0; row < table->rowCount(); ++row)
+        QVERIFY(table->item(row, 3)->text().endsWith(QStringLiteral("°")));
     window->document()->undoStack()->undo();
     QVERIFY(window->document()->project().sweep.roomAngles.empty());
     QVERIFY(table->item(corridor, 2)->text().isEmpty());

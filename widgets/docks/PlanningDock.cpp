@@ -128,13 +128,16 @@ QWidget* PlanningDock::createSweepGroup() {
            "override it). Auto: tries several angles for the whole floor and keeps the fastest "
            "plan that covers everything the robot can reach. One angle: the stripe angle "
            "below for every room."));
-    roomAngles_ = new QTableWidget(0, 3);
-    roomAngles_->setHorizontalHeaderLabels({tr("Room"), tr("From walls"), tr("Fixed")});
+    roomAngles_ = new QTableWidget(0, 4);
+    roomAngles_->setHorizontalHeaderLabels(
+        {tr("Room"), tr("From walls"), tr("Fixed"), tr("Planned")});
     roomAngles_->horizontalHeader()->setStretchLastSection(true);
     roomAngles_->verticalHeader()->hide();
     roomAngles_->setMaximumHeight(140);
     roomAngles_->setToolTip(tr("Type an angle in degrees to fix a room's stripes; clear it to "
-                               "follow the room's walls again."));
+                               "follow the room's walls again. Planned: the angle the last plan "
+                               "swept the room at (the planner may turn a room by 90° or along "
+                               "its other walls where that plans faster)."));
     solver_ = new QComboBox;
     for (const std::string& name : solverNames())
         solver_->addItem(fromStd(name));
@@ -210,11 +213,14 @@ void PlanningDock::setPlanningController(PlanningController* controller) {
         connect(controller_, &PlanningController::resultChanged, this,
                 &PlanningDock::refreshMetrics);
         connect(controller_, &PlanningController::resultChanged, this,
+                &PlanningDock::refreshRoomAngles);
+        connect(controller_, &PlanningController::resultChanged, this,
                 &PlanningDock::refreshStatus);
         connect(controller_, &PlanningController::errorChanged, this, &PlanningDock::refreshStatus);
         connect(controller_, &PlanningController::busyChanged, this, &PlanningDock::refreshStatus);
     }
     refreshMetrics();
+    refreshRoomAngles();
     refreshStatus();
 }
 
@@ -250,7 +256,7 @@ void PlanningDock::refreshRoomAngles() {
         roomAngles_->setRowCount(0);
         for (size_t i = 0; i < rooms.size(); ++i) {
             roomAngles_->insertRow(static_cast<int>(i));
-            for (int column : {0, 1}) {
+            for (int column : {0, 1, 3}) {
                 auto* readOnly = new QTableWidgetItem;
                 readOnly->setFlags(readOnly->flags() & ~Qt::ItemIsEditable);
                 roomAngles_->setItem(static_cast<int>(i), column, readOnly);
@@ -265,6 +271,9 @@ void PlanningDock::refreshRoomAngles() {
     SweepOptions wallsOnly = project.sweep;
     wallsOnly.roomAngles.clear();
     const std::map<std::string, double> walls = roomSweepAngles(project.plan, wallsOnly);
+    const auto result = controller_ ? controller_->result() : nullptr;
+    const std::map<std::string, double> planned =
+        result ? roomAnglesOf(*result, project.plan) : std::map<std::string, double>();
     const QLocale locale;
     for (size_t i = 0; i < rooms.size(); ++i) {
         const std::string& room = rooms[i].name;
@@ -277,6 +286,10 @@ void PlanningDock::refreshRoomAngles() {
         fixed->setText(it != project.sweep.roomAngles.end() ? locale.toString(it->second, 'f', 1)
                                                             : QString());
         fixed->setData(Qt::UserRole, fromStd(room));
+        const auto swept = planned.find(room);
+        roomAngles_->item(row, 3)->setText(
+            swept != planned.end() ? tr("%1°").arg(locale.toString(swept->second, 'f', 1))
+                                   : QStringLiteral("–"));
     }
 }
 
