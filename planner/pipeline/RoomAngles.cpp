@@ -128,18 +128,18 @@ std::map<std::string, double> familyAngles(const Plan& plan, const SweepOptions&
 
 std::map<std::string, double> roomSecondAngles(const Plan& plan, const SweepOptions& sweep) {
     std::map<std::string, double> out;
-    for (const Room& room : plan.rooms) {
-        if (sweep.roomAngles.count(room.name) != 0)
-            continue;
-        const std::vector<WallFamily> families = wallFamilies(roomWalls(plan, room), 2);
+    // `walls`' second family where it is strong enough, stripes along `outline`'s longer
+    // extent in its frame.
+    auto addSecond = [&out](const std::string& key, const Plan& walls, const Ring& outline) {
+        const std::vector<WallFamily> families = wallFamilies(walls, 2);
         if (families.size() == 2 && families[1].length >= kSecondFamilyShare * families[0].length)
-            out[room.name] = alongLongerExtent(room.outline, families[1].angleDeg);
-    }
-    if (plan.rooms.empty() && sweep.roomAngles.count("Floor") == 0) { // one room, "Floor"
-        const std::vector<WallFamily> families = wallFamilies(plan, 2);
-        if (families.size() == 2 && families[1].length >= kSecondFamilyShare * families[0].length)
-            out[""] = alongLongerExtent(plan.boundary, families[1].angleDeg);
-    }
+            out[key] = alongLongerExtent(outline, families[1].angleDeg);
+    };
+    for (const Room& room : plan.rooms)
+        if (sweep.roomAngles.count(room.name) == 0)
+            addSecond(room.name, roomWalls(plan, room), room.outline);
+    if (plan.rooms.empty() && sweep.roomAngles.count("Floor") == 0) // one room, "Floor"
+        addSecond("", plan, plan.boundary);
     return out;
 }
 
