@@ -8,6 +8,7 @@
 #include "pipeline/PathChoice.h"
 #include "pipeline/PerRoomSweep.h"
 #include "pipeline/PreparedPlans.h"
+#include "pipeline/ShavedTeethOffer.h"
 
 #include <algorithm>
 #include <atomic>
@@ -663,6 +664,10 @@ PlanResult planCoverage(const PlanRequest& request, const SolveControl& control,
             return detail::draftWallLoop(request, loopControl, loopEstimate);
         });
     }
+    // The floor with its wall teeth cut back, planned beside (pipeline/ShavedTeethOffer.h).
+    std::future<std::optional<PlanResult>> flat =
+        std::async(std::launch::async,
+                   [&request, control] { return detail::planShavedTeeth(request, control); });
     struct StopOnExit {
         std::atomic<bool>& stop;
         ~StopOnExit() { stop = true; } // before `loop` waits for the draft
@@ -705,6 +710,10 @@ PlanResult planCoverage(const PlanRequest& request, const SolveControl& control,
             stopLoop = true;
         }
     }
+    if (flat.valid())
+        if (std::optional<PlanResult> shaved = flat.get())
+            if (detail::keepShavedTeethPlan(request, result, *shaved))
+                plans.push_back(std::move(*shaved));
     if (!plans.empty()) {
         plans.insert(plans.begin(), std::move(result)); // the first of equals
         result = std::move(plans[choosePlan(plans)]);

@@ -47,6 +47,10 @@ struct PlanRequest {
     // floor's band, and an uncleaned map's pixel staircases outvote its walls (the faculty map
     // imported without cleaning: 81 m shorter, 1.3% slower by the estimate, 1 s more to plan).
     bool secondFamilies = true;
+    // planCoverage also plans the floor with its wall teeth cut back (a pilaster, a traced
+    // wall's speck; model/WallTeeth.h) and keeps that plan where its path clears the teeth
+    // and is better (pipeline/ShavedTeethOffer.h). Off for that plan itself.
+    bool shaveTeeth = true;
     // The path planned before the last edits (world frame; empty: none): the query's
     // orderHint follows it. The editor gives it to live replanning's quick draft, which then
     // keeps the last plan's order where that is cheaper than greedy's.
@@ -80,6 +84,11 @@ struct PlanResult {
     // Set when rooms were swept at different angles (per-room); empty for one angle.
     std::vector<PlanPart> parts;
     bool touchedUp = false; // applyTouchUps has run (it runs once per plan)
+    // Wall teeth cut back for this plan (pipeline/ShavedTeethOffer.h): its cells are those
+    // of the floor without them; its path keeps L/2 from them and its metrics are the
+    // floor's as drawn. 0: planned on the floor as drawn.
+    int shavedTeeth = 0;
+    double shavedToothDepth = 0.0; // m: how deep a tooth may have been
 };
 
 // Validates (throws InputError) and builds decomposition and graph for one sweep angle

@@ -462,6 +462,10 @@ void PlanningDock::refreshStatus() {
             status_->setText(tr("Planning…"));
         else if (document_ && document_->plan().boundary.empty())
             status_->setText(tr("Draw the boundary of the floor to see cells and plan a path."));
+        else if (const auto result = controller_->result(); result && result->shavedTeeth > 0)
+            status_->setText(tr("Wall teeth cut back to their walls for planning: %n (pilasters, "
+                                "bumps of traced walls); the path keeps clear of them.",
+                                nullptr, result->shavedTeeth));
         else
             status_->clear();
     }
