@@ -588,10 +588,6 @@
         <translation>FloorCover kann keine „.%1“-Dateien importieren.</translation>
     </message>
     <message>
-        <source>The unit must be a positive number of metres: correct Units in the import dialog.</source>
-        <translation>Die Einheit muss eine positive Anzahl Meter sein: Korrigieren Sie Einheit im Importdialog.</translation>
-    </message>
-    <message>
         <source>“Close gaps up to” must be between 0 and 1000 m.</source>
         <translation>„Lücken schließen bis“ muss zwischen 0 und 1000 m liegen.</translation>
     </message>
@@ -852,10 +848,6 @@
         <translation>Die Blockkathete muss eine positive Länge in Metern sein: Ändern Sie sie im Bereich Kachelroboter.</translation>
     </message>
     <message>
-        <source>The block masses must be positive (kg): change them in the Tiling Robot panel.</source>
-        <translation>Die Blockmassen müssen positiv sein (kg): Ändern Sie sie im Bereich Kachelroboter.</translation>
-    </message>
-    <message>
         <source>Waypoints are exported as .csv or .json files, not as “%1”.</source>
         <translation>Wegpunkte werden als .csv- oder .json-Dateien exportiert, nicht als „%1“.</translation>
     </message>
@@ -986,6 +978,54 @@
     <message>
         <source>The map&apos;s rooms could not be separated: choose One room under “Split into rooms”, or another way to split.</source>
         <translation>Die Räume der Karte konnten nicht getrennt werden: Wählen Sie Ein Raum unter „In Räume teilen“ oder eine andere Aufteilung.</translation>
+    </message>
+    <message>
+        <source>A speed of %1 m/s is not plausible for a robot (0.001 to 100 m/s): change it in the Planning panel.</source>
+        <translation>Eine Geschwindigkeit von %1 m/s ist für einen Roboter nicht plausibel (0,001 bis 100 m/s): Ändern Sie sie im Bereich Planung.</translation>
+    </message>
+    <message>
+        <source>A turn time of %1 s is not plausible (at most an hour per turn): change it in the Planning panel.</source>
+        <translation>Eine Wendezeit von %1 s ist nicht plausibel (höchstens eine Stunde pro Wende): Ändern Sie sie im Bereich Planung.</translation>
+    </message>
+    <message>
+        <source>%1: vertex %3 has a coordinate of %2 m, beyond the range of any map projection: is the plan in metres?</source>
+        <translation>%1: Eckpunkt %3 hat eine Koordinate von %2 m, außerhalb des Bereichs jeder Kartenprojektion: Ist der Plan in Metern?</translation>
+    </message>
+    <message>
+        <source>The boundary spans %1 km, more than the %2 km of any site on Earth: is the plan in metres?</source>
+        <translation>Die Außenwand erstreckt sich über %1 km, mehr als die %2 km jedes Geländes auf der Erde: Ist der Plan in Metern?</translation>
+    </message>
+    <message>
+        <source>The unit must be a positive number of metres below 1,000,000 (0.001 for a drawing in millimetres): correct Units in the import dialog.</source>
+        <translation>Die Einheit muss eine positive Anzahl Meter unter 1.000.000 sein (0,001 für eine Zeichnung in Millimetern): Korrigieren Sie Einheit im Importdialog.</translation>
+    </message>
+    <message>
+        <source>The file names EPSG code %1, which is not valid (codes run from 1 to %2).</source>
+        <translation>Die Datei nennt den EPSG-Code %1, der ungültig ist (Codes reichen von 1 bis %2).</translation>
+    </message>
+    <message>
+        <source>The point (%1, %2) in EPSG:%3 is not on the globe: are the coordinates in that system?</source>
+        <translation>Der Punkt (%1, %2) in EPSG:%3 liegt nicht auf der Erdkugel: Sind die Koordinaten in diesem System?</translation>
+    </message>
+    <message>
+        <source>The file is not JSON text (it holds a zero byte at offset %1): is it a binary file?</source>
+        <translation>Die Datei ist kein JSON-Text (sie enthält ein Nullbyte an Position %1): Ist es eine Binärdatei?</translation>
+    </message>
+    <message>
+        <source>“Fill notches up to” must be at most %1 m, not %2 m.</source>
+        <translation>„Nischen füllen bis“ darf höchstens %1 m betragen, nicht %2 m.</translation>
+    </message>
+    <message>
+        <source>“Remove obstacles up to” must be at most %1 m, not %2 m.</source>
+        <translation>„Hindernisse entfernen bis“ darf höchstens %1 m betragen, nicht %2 m.</translation>
+    </message>
+    <message>
+        <source>The floor would need about %1 tiles of a %2 m block leg, more than %3: choose a longer block leg.</source>
+        <translation>Die Fläche bräuchte etwa %1 Kacheln mit %2 m Blockkathete, mehr als %3: Wählen Sie eine längere Blockkathete.</translation>
+    </message>
+    <message>
+        <source>The block masses must be positive, at most 1,000,000 kg: change them in the Tiling Robot panel.</source>
+        <translation>Die Blockmassen müssen positiv sein, höchstens 1.000.000 kg: Ändern Sie sie im Bereich Kachelroboter.</translation>
     </message>
 </context>
 <context>
@@ -2795,6 +2835,13 @@ Abdeckungspfadplanung für Reinigungs- und Desinfektionsroboter.</translation>
     <message>
         <source>Type an angle in degrees to fix a room&apos;s stripes; clear it to follow the room&apos;s walls again. Planned: the angle the last plan swept the room at (the planner may turn a room by 90° or along its other walls where that plans faster).</source>
         <translation>Einen Winkel in Grad eingeben, um die Bahnen eines Raums festzulegen; leeren, um wieder den Wänden des Raums zu folgen. Geplant: der Winkel, in dem der letzte Plan den Raum gefahren ist (der Planer kann einen Raum um 90° drehen oder an seinen anderen Wänden ausrichten, wo das schneller ist).</translation>
+    </message>
+    <message numerus="yes">
+        <source>Wall teeth cut back to their walls for planning: %n (pilasters, bumps of traced walls); the path keeps clear of them.</source>
+        <translation>
+            <numerusform>Für die Planung auf die Wandlinie zurückgenommene Wandvorsprünge: %n (Pilaster, Höcker gescannter Wände); der Pfad hält Abstand davon.</numerusform>
+            <numerusform>Für die Planung auf die Wandlinie zurückgenommene Wandvorsprünge: %n (Pilaster, Höcker gescannter Wände); der Pfad hält Abstand davon.</numerusform>
+        </translation>
     </message>
 </context>
 <context>

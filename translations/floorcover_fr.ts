@@ -588,10 +588,6 @@
         <translation>FloorCover ne peut pas importer les fichiers « .%1 ».</translation>
     </message>
     <message>
-        <source>The unit must be a positive number of metres: correct Units in the import dialog.</source>
-        <translation>L’unité doit être un nombre positif de mètres : corrigez Unité dans la boîte de dialogue d’import.</translation>
-    </message>
-    <message>
         <source>“Close gaps up to” must be between 0 and 1000 m.</source>
         <translation>« Fermer les écarts jusqu’à » doit être compris entre 0 et 1000 m.</translation>
     </message>
@@ -852,10 +848,6 @@
         <translation>Le côté de bloc doit être une longueur positive en mètres : modifiez-le dans le panneau Robot à pavage.</translation>
     </message>
     <message>
-        <source>The block masses must be positive (kg): change them in the Tiling Robot panel.</source>
-        <translation>Les masses des blocs doivent être positives (kg) : modifiez-les dans le panneau Robot à pavage.</translation>
-    </message>
-    <message>
         <source>Waypoints are exported as .csv or .json files, not as “%1”.</source>
         <translation>Les points de passage s’exportent en fichiers .csv ou .json, pas en « %1 ».</translation>
     </message>
@@ -986,6 +978,54 @@
     <message>
         <source>The map&apos;s rooms could not be separated: choose One room under “Split into rooms”, or another way to split.</source>
         <translation>Les pièces de la carte n’ont pas pu être séparées : choisissez Une seule pièce sous « Diviser en pièces », ou une autre division.</translation>
+    </message>
+    <message>
+        <source>A speed of %1 m/s is not plausible for a robot (0.001 to 100 m/s): change it in the Planning panel.</source>
+        <translation>Une vitesse de %1 m/s n’est pas plausible pour un robot (de 0,001 à 100 m/s) : modifiez-la dans le panneau Planification.</translation>
+    </message>
+    <message>
+        <source>A turn time of %1 s is not plausible (at most an hour per turn): change it in the Planning panel.</source>
+        <translation>Un temps de virage de %1 s n’est pas plausible (au plus une heure par virage) : modifiez-le dans le panneau Planification.</translation>
+    </message>
+    <message>
+        <source>%1: vertex %3 has a coordinate of %2 m, beyond the range of any map projection: is the plan in metres?</source>
+        <translation>%1 : le sommet %3 a une coordonnée de %2 m, hors de la portée de toute projection cartographique : le plan est-il en mètres ?</translation>
+    </message>
+    <message>
+        <source>The boundary spans %1 km, more than the %2 km of any site on Earth: is the plan in metres?</source>
+        <translation>Le contour s’étend sur %1 km, plus que les %2 km de tout site sur Terre : le plan est-il en mètres ?</translation>
+    </message>
+    <message>
+        <source>The unit must be a positive number of metres below 1,000,000 (0.001 for a drawing in millimetres): correct Units in the import dialog.</source>
+        <translation>L’unité doit être un nombre positif de mètres inférieur à 1 000 000 (0,001 pour un dessin en millimètres) : corrigez Unité dans la boîte de dialogue d’importation.</translation>
+    </message>
+    <message>
+        <source>The file names EPSG code %1, which is not valid (codes run from 1 to %2).</source>
+        <translation>Le fichier indique le code EPSG %1, qui n’est pas valide (les codes vont de 1 à %2).</translation>
+    </message>
+    <message>
+        <source>The point (%1, %2) in EPSG:%3 is not on the globe: are the coordinates in that system?</source>
+        <translation>Le point (%1, %2) en EPSG:%3 n’est pas sur le globe : les coordonnées sont-elles dans ce système ?</translation>
+    </message>
+    <message>
+        <source>The file is not JSON text (it holds a zero byte at offset %1): is it a binary file?</source>
+        <translation>Le fichier n’est pas du texte JSON (il contient un octet nul à la position %1) : est-ce un fichier binaire ?</translation>
+    </message>
+    <message>
+        <source>“Fill notches up to” must be at most %1 m, not %2 m.</source>
+        <translation>« Combler les encoches jusqu'à » doit valoir au plus %1 m, pas %2 m.</translation>
+    </message>
+    <message>
+        <source>“Remove obstacles up to” must be at most %1 m, not %2 m.</source>
+        <translation>« Supprimer les obstacles jusqu'à » doit valoir au plus %1 m, pas %2 m.</translation>
+    </message>
+    <message>
+        <source>The floor would need about %1 tiles of a %2 m block leg, more than %3: choose a longer block leg.</source>
+        <translation>La surface demanderait environ %1 tuiles pour un côté de bloc de %2 m, plus que %3 : choisissez un côté de bloc plus long.</translation>
+    </message>
+    <message>
+        <source>The block masses must be positive, at most 1,000,000 kg: change them in the Tiling Robot panel.</source>
+        <translation>Les masses des blocs doivent être positives, au plus 1 000 000 kg : modifiez-les dans le panneau Robot à pavage.</translation>
     </message>
 </context>
 <context>
@@ -2795,6 +2835,13 @@ Planification de trajets de couverture pour robots de nettoyage et de désinfect
     <message>
         <source>Type an angle in degrees to fix a room&apos;s stripes; clear it to follow the room&apos;s walls again. Planned: the angle the last plan swept the room at (the planner may turn a room by 90° or along its other walls where that plans faster).</source>
         <translation>Saisir un angle en degrés pour fixer les bandes d&apos;une pièce ; l&apos;effacer pour suivre de nouveau ses murs. Planifié : l&apos;angle auquel le dernier plan a balayé la pièce (le planificateur peut tourner une pièce de 90° ou la caler sur ses autres murs quand c&apos;est plus rapide).</translation>
+    </message>
+    <message numerus="yes">
+        <source>Wall teeth cut back to their walls for planning: %n (pilasters, bumps of traced walls); the path keeps clear of them.</source>
+        <translation>
+            <numerusform>Saillies de mur ramenées à la ligne du mur pour la planification : %n (pilastres, bosses de murs scannés) ; le chemin s’en tient à distance.</numerusform>
+            <numerusform>Saillies de mur ramenées à la ligne du mur pour la planification : %n (pilastres, bosses de murs scannés) ; le chemin s’en tient à distance.</numerusform>
+        </translation>
     </message>
 </context>
 <context>

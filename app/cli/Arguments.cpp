@@ -21,7 +21,10 @@ Arguments::Arguments(int argc, char** argv, int first, const std::vector<std::st
         } else if (i + 1 < argc) {
             values_[arg] = argv[++i];
         } else {
-            throw InputError("option " + arg + " needs a value");
+            // Reported by allowOnly, after an unknown name (a mistyped last option is
+            // unknown, not missing its value).
+            values_[arg] = "";
+            missingValue_ = arg;
         }
     }
 }
@@ -78,6 +81,8 @@ void Arguments::allowOnly(const std::vector<std::string>& allowed) const {
     for (const auto& [name, value] : values_)
         if (std::find(allowed.begin(), allowed.end(), name) == allowed.end())
             throw InputError("unknown option " + name);
+    if (missingValue_)
+        throw InputError("option " + *missingValue_ + " needs a value");
 }
 
 Arguments Arguments::with(const std::string& name, const std::optional<std::string>& value) const {

@@ -23,7 +23,8 @@ public:
     std::optional<long long> integer(const std::string& name) const;
     std::optional<Vec2> point(const std::string& name) const;     // "X,Y"
     std::vector<std::string> list(const std::string& name) const; // "A,B"
-    // Throws InputError for options not in the allowed list.
+    // Throws InputError for options not in the allowed list, then for a last option given
+    // without its value.
     void allowOnly(const std::vector<std::string>& allowed) const;
     // A copy with option `name` set to `value` (nullopt: removed).
     Arguments with(const std::string& name, const std::optional<std::string>& value) const;
@@ -31,6 +32,7 @@ public:
 private:
     std::vector<std::string> positional_;
     std::map<std::string, std::string> values_;
+    std::optional<std::string> missingValue_; // the last option, given without its value
 };
 
 std::vector<std::string> splitList(const std::string& text, char separator = ',');

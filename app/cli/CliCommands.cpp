@@ -229,6 +229,13 @@ PlanResult planFromArguments(const std::string& path, const Project& project, co
     }
     for (const std::string& w : result.warnings)
         std::cerr << "floorcover-cli: warning: " << path << ": " << w << "\n";
+    if (result.shavedTeeth > 0) {
+        char depth[32];
+        std::snprintf(depth, sizeof depth, "%.2f", result.shavedToothDepth);
+        std::cerr << "floorcover-cli: note: " << path << ": planned with " << result.shavedTeeth
+                  << " wall teeth (bumps up to " << depth
+                  << " m deep) cut back to their walls; the path keeps L/2 from them\n";
+    }
     if (request.sweep.automatic)
         std::cerr << "floorcover-cli: note: " << path << ": sweep angle " << result.stripeAngleDeg
                   << " degrees chosen (shortest estimated time among the plans that cover "
@@ -296,6 +303,8 @@ int commandPlan(const Arguments& args) {
                   << (args.has("--out") ? "; a path file each, NAME-building-K" : "") << "\n";
         return commandPlanSite(args, e.buildingAreas());
     }
+    if (auto out = args.text("--out"))
+        requirePathFormat(*out);
     PlanRequest request;
     const PlanResult result = planFromArguments(path, project, args, request);
     if (auto out = args.text("--out"))

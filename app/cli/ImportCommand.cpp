@@ -91,6 +91,10 @@ void mapOptionsFrom(const Arguments& args, ImportOptions& options) {
     c.fragmentArea = nonNegative(args, "--fragment", c.fragmentArea);
     c.openingRadius = nonNegative(args, "--opening", c.openingRadius);
     c.closingRadius = nonNegative(args, "--closing", c.closingRadius);
+    for (const auto& [radius, name] :
+         {std::pair{c.openingRadius, "--opening"}, std::pair{c.closingRadius, "--closing"}})
+        if (radius > MapCleaningOptions::kMaxMorphologyRadius)
+            throw InputError(std::string(name) + " must be at most 5 m (a radius in metres)");
     if (auto diameter = args.number("--robot-diameter")) {
         if (!(*diameter > 0 && *diameter < 100))
             throw InputError("--robot-diameter must be a positive size in metres");
@@ -194,8 +198,14 @@ int commandImport(const Arguments& args) {
         std::cerr << "floorcover-cli: warning: " << path << ": " << w << "\n";
     if (options.keepInvalid && !planProblems(result.project.plan, result.project.robot).empty()) {
         std::vector<std::string> notes;
-        result.project.plan = normalizedPlan(repairPlan(result.project.plan, notes));
-        validatePlan(result.project.plan, result.project.robot); // still broken: refused
+        try {
+            result.project.plan = normalizedPlan(repairPlan(result.project.plan, notes));
+            validatePlan(result.project.plan, result.project.robot); // still broken: refused
+        } catch (const InputError& e) {
+            // Plain InputError: the CLI's advice for a repairable plan is this very command.
+            throw InputError(path + ": --repair could not make the plan valid: " + e.what() +
+                             "; it needs mending by hand");
+        }
         for (const std::string& note : notes)
             std::cerr << "floorcover-cli: repaired: " << path << ": " << note << "\n";
     }

@@ -62,6 +62,9 @@ int commandTrain(const Arguments& args) {
     double seconds = args.number("--seconds").value_or(0.0);
     if (episodes < 0 || seconds < 0.0 || !std::isfinite(seconds))
         throw InputError("--episodes and --seconds must not be negative");
+    // 0 used to read as "not given" and trained for the default 300 s.
+    if ((args.has("--episodes") && episodes == 0) || (args.has("--seconds") && seconds == 0.0))
+        throw InputError("--episodes and --seconds must be positive (leave both out for 300 s)");
     if (episodes == 0 && seconds == 0.0)
         seconds = 300.0;
     const auto seed = static_cast<std::uint64_t>(args.integer("--seed").value_or(1));

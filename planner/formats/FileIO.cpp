@@ -92,6 +92,12 @@ std::string readFile(const std::string& path) {
     return contents.str();
 }
 
+std::string withoutByteOrderMark(std::string text) {
+    if (text.compare(0, 3, "\xEF\xBB\xBF") == 0)
+        text.erase(0, 3);
+    return text;
+}
+
 void writeFileAtomically(const std::string& path, const std::string& contents) {
     std::string temporaryPath;
     const int fd = createTemporaryFile(path, temporaryPath);

@@ -50,6 +50,10 @@ std::string describeNumberOverflow(const std::string& text, const std::string& m
 nlohmann::json parseJsonDocument(const std::string& text) {
     if (text.find_first_not_of(" \t\r\n") == std::string::npos)
         throw InputError("file is empty");
+    // nlohmann's parser stops at a NUL byte and calls the file truncated.
+    if (const size_t nul = text.find('\0'); nul != std::string::npos)
+        throw InputError("not a JSON text file (a NUL byte at offset " + std::to_string(nul) +
+                         "): is it a binary file?");
     try {
         return nlohmann::json::parse(text);
     } catch (const nlohmann::json::parse_error& e) {

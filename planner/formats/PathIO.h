@@ -43,6 +43,9 @@ std::string pathToFields2Cover(const CoveragePath& path, const PathExportInfo& i
 std::string pathToVda5050(const CoveragePath& path, const PathExportInfo& info);
 // The path as a WKT LINESTRING in the plan's frame.
 std::string pathToWkt(const CoveragePath& path);
+// Throws InputError, naming the file, unless its extension is one pathToFormat writes (so a
+// command can refuse it before it plans).
+void requirePathFormat(const std::string& fileName);
 // Chooses the writer from the file extension; throws InputError for an unknown one.
 std::string pathToFormat(const std::string& fileName, const CoveragePath& path,
                          const PathExportInfo& info);

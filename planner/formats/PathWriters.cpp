@@ -175,8 +175,17 @@ std::string pathToFormat(const std::string& fileName, const CoveragePath& path,
         return pathToJson(path, info);
     if (extension == ".yaml" || extension == ".yml")
         return pathToRosYaml(path, info);
+    requirePathFormat(fileName);
+    return {};
+}
+
+void requirePathFormat(const std::string& fileName) {
+    const std::string extension = lowerCaseExtension(fileName);
+    for (const char* known : {".geojson", ".csv", ".json", ".yaml", ".yml"})
+        if (extension == known)
+            return;
     throw InputError(
-        "unsupported path format " +
+        fileName + ": unsupported path format " +
         (extension.empty() ? std::string("(no file extension)") : "\"" + extension + "\"") +
         "; expected .geojson, .csv, .json, .yaml or .yml");
 }

@@ -109,8 +109,20 @@ Plan projectedToUtm(const Plan& plan, int sourceEpsg) {
     if (!transform)
         throw InputError("cannot reproject from " + source + " to " + destination + ": " +
                          projError(context.get()));
+    // Every point on the globe, not only the centre (Web Mercator's square is +-20,037,508 m
+    // each way; beyond it the projection wraps or clamps, and the rings collapse).
+    constexpr double kMercatorExtent = 20037508.35;
+    const bool mercator = isWebMercator(sourceEpsg);
     auto project = [&](Ring& ring) {
         for (Vec2& p : ring) {
+            const bool onGlobe =
+                geographic ? std::abs(p.x) <= 360.0 && std::abs(p.y) <= 90.0
+                : mercator ? std::abs(p.x) <= kMercatorExtent && std::abs(p.y) <= kMercatorExtent
+                           : true;
+            if (!onGlobe)
+                throw InputError("point (" + formats::fixedNumber(p.x, 6) + ", " +
+                                 formats::fixedNumber(p.y, 6) + ") in " + source +
+                                 " is not on the globe");
             const PJ_COORD out = proj_trans(transform.get(), PJ_FWD, proj_coord(p.x, p.y, 0, 0));
             if (!std::isfinite(out.xy.x) || !std::isfinite(out.xy.y))
                 throw InputError("cannot reproject point (" + formats::fixedNumber(p.x, 9) + ", " +

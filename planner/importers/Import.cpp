@@ -51,7 +51,7 @@ ImportResult importByExtension(const std::string& path, const std::string& exten
     if (extension == "yaml" || extension == "yml")
         return importing::importRosMap(path, options);
     if (extension == "wkt")
-        return importing::importWkt(readFile(path), options);
+        return importing::importWkt(withoutByteOrderMark(readFile(path)), options);
     if (extension == "geojson" || extension == "json" || extension == "fcproj") {
         ImportResult result;
         result.project = loadProjectFile(path, options.building);
@@ -92,6 +92,8 @@ std::string guessLayerRole(const std::string& layer) {
     return "";
 }
 
+constexpr int kMaxEpsgCode = 999999;
+
 ImportResult importPlanFile(const std::string& path, const ImportOptions& options) {
     const std::string extension = extensionOf(path);
     try {
@@ -100,7 +102,8 @@ ImportResult importPlanFile(const std::string& path, const ImportOptions& option
         if (std::filesystem::file_size(path) > importing::kMaxSourceBytes)
             throw InputError("file larger than 256 MiB");
         if (options.metresPerUnit && !(*options.metresPerUnit > 0 && *options.metresPerUnit < 1e6))
-            throw InputError("the unit must be a positive number of metres");
+            throw InputError("the unit must be a positive number of metres below 1,000,000 "
+                             "(metres per drawing unit: 0.001 for millimetres)");
         if (!(options.gapTolerance >= 0 && options.gapTolerance < 1e3))
             throw InputError("the gap tolerance must be between 0 and 1000 m");
         ImportResult result = importByExtension(path, extension, options);
@@ -109,6 +112,11 @@ ImportResult importPlanFile(const std::string& path, const ImportOptions& option
             plan.name = std::filesystem::path(path).stem().string();
         if (options.epsg)
             plan.epsg = options.epsg;
+        // A project must load again (ProjectFile refuses what is not a positive code).
+        if (plan.epsg && !(*plan.epsg >= 1 && *plan.epsg <= kMaxEpsgCode))
+            throw InputError("EPSG code " + std::to_string(*plan.epsg) +
+                             " is not valid (codes run from 1 to " + std::to_string(kMaxEpsgCode) +
+                             ")");
         // Degrees or Web Mercator (a WKT's SRID=4326, --epsg 4326): planned in metres.
         if (std::optional<std::string> note = reprojectToMetres(plan, false))
             result.warnings.push_back(*note);

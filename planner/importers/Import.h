@@ -25,19 +25,22 @@ struct LayerMapping {
 // Occupancy maps (issue 15): how the SLAM map is cleaned before it is traced. Defaults suit
 // 2-10 cm cells; every step can be switched off (a radius or area of 0).
 struct MapCleaningOptions {
-    bool enabled = true;           // false: every free cell is traced as it is
-    bool unknownIsFree = false;    // unknown cells (between the thresholds) as floor, not wall
-    double unknownGapArea = 0.15;  // m^2: unknown patches inside the map smaller than this
-                                   // become floor (with unknown as wall)
-    double speckleArea = 0.15;     // m^2: obstacle specks smaller than this become floor
-    bool smoothEdges = true;       // a 3 x 3 majority vote on ragged wall edges (on maps with
-                                   // cells of at most a sixth of the robot's diameter)
-    double fragmentArea = 0.5;     // m^2: free islands smaller than this are dropped
-    double openingRadius = -1;     // m: free slivers and wall notches narrower than twice this
-                                   // are filled; negative: the robot's radius (what its body
-                                   // cannot enter; its swath still reaches W/2 from its centre)
-    double closingRadius = 0;      // m: obstacles thinner than twice this vanish (0: off, as
-                                   // interior walls in laser maps are often a cell or two thick)
+    bool enabled = true;          // false: every free cell is traced as it is
+    bool unknownIsFree = false;   // unknown cells (between the thresholds) as floor, not wall
+    double unknownGapArea = 0.15; // m^2: unknown patches inside the map smaller than this
+                                  // become floor (with unknown as wall)
+    double speckleArea = 0.15;    // m^2: obstacle specks smaller than this become floor
+    bool smoothEdges = true;      // a 3 x 3 majority vote on ragged wall edges (on maps with
+                                  // cells of at most a sixth of the robot's diameter)
+    double fragmentArea = 0.5;    // m^2: free islands smaller than this are dropped
+    double openingRadius = -1;    // m: free slivers and wall notches narrower than twice this
+                                  // are filled; negative: the robot's radius (what its body
+                                  // cannot enter; its swath still reaches W/2 from its centre)
+    double closingRadius = 0;     // m: obstacles thinner than twice this vanish (0: off, as
+                                  // interior walls in laser maps are often a cell or two thick)
+    // The opening and closing radii are at most this (the import dialog's limit): beyond, a
+    // disc of radius r / resolution cells made OpenCV allocate terabytes.
+    static constexpr double kMaxMorphologyRadius = 5.0; // m
     double simplifyCells = 0.45;   // Douglas-Peucker tolerance in cells (below half a cell, so
                                    // that a wall keeps both ends of its traced corners), and
     double simplifyRobotShare = 0; // at least this share of the robot's diameter (0: off;

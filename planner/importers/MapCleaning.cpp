@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <opencv2/imgproc.hpp>
 
 namespace fc::importing {
@@ -121,6 +122,14 @@ int cellsOf(double area, const OccupancyGrid& grid) {
 std::vector<unsigned char> cleanOccupancyGrid(const OccupancyGrid& grid,
                                               const MapCleaningOptions& options,
                                               double robotDiameter, MapCleaningReport& report) {
+    for (const auto& [radius, what] :
+         {std::pair{options.openingRadius, "opening"}, std::pair{options.closingRadius, "closing"}})
+        if (!(radius <= MapCleaningOptions::kMaxMorphologyRadius)) {
+            char text[128];
+            std::snprintf(text, sizeof text, "the %s radius must be at most %g m (got %g m)", what,
+                          MapCleaningOptions::kMaxMorphologyRadius, radius);
+            throw InputError(text);
+        }
     report.width = grid.width;
     report.height = grid.height;
     report.resolution = grid.resolution;

@@ -14,8 +14,12 @@ namespace {
 
 Ring fromOgrRing(const OGRLinearRing& ring) {
     Ring out;
-    for (int i = 0; i + 1 < ring.getNumPoints(); ++i) // the closing point repeats the first
+    for (int i = 0; i < ring.getNumPoints(); ++i)
         out.push_back({ring.getX(i), ring.getY(i)});
+    // The closing point repeats the first; a ring written without it (WKT that GDAL reads as
+    // it stands) keeps its last vertex (it had lost it: half of a rectangle's floor).
+    if (out.size() > 1 && out.front() == out.back())
+        out.pop_back();
     return out;
 }
 

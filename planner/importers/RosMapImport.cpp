@@ -85,7 +85,7 @@ std::optional<StraightenOptions> straightenOptions(const OGRGeometry& traced,
 
 ImportResult importRosMap(const std::string& yamlPath, const ImportOptions& options) {
     ensureGdal();
-    const RosMapInfo info = parseRosMapYaml(readFile(yamlPath));
+    const RosMapInfo info = parseRosMapYaml(withoutByteOrderMark(readFile(yamlPath)));
     const std::filesystem::path imagePath =
         std::filesystem::path(yamlPath).parent_path() / info.image;
     if (!std::filesystem::is_regular_file(imagePath))

@@ -34,6 +34,12 @@ void RobotProfile::validate() const {
             << " m exceeds cleaning diameter D = " << cleaningDiameter << " m (need L <= W <= D)";
     else if (coverageWidth > 1000.0)
         msg << "coverage width W = " << coverageWidth << " m is not a plausible robot size";
+    // Beyond these the estimated time overflows or means nothing ("time": null in the
+    // metrics for a speed of 1e-308 m/s).
+    else if (speed < 1e-3 || speed > 100.0)
+        msg << "speed " << speed << " m/s is not a plausible robot speed (0.001 to 100 m/s)";
+    else if (turnTime > 3600.0)
+        msg << "turn time " << turnTime << " s is not plausible (at most an hour per turn)";
     if (!msg.str().empty())
         throw InputError(msg.str());
 }

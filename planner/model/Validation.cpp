@@ -23,6 +23,8 @@ using validation::formatPoint;
 
 namespace {
 
+// m: the widest a plan may be (Earth is 12,742 km across).
+constexpr double kMaxPlanSpan = 2e7;
 // The most stripe length (free area / W) a plan may need, km: a 10 km^2 site at W = 1 m.
 constexpr double kMaxStripeKm = 10000.0;
 // The most coverage squares (free area / W^2), the same 10 km^2 at W = 1 m: the stripes'
@@ -453,6 +455,20 @@ std::vector<PlanProblem> planProblems(const Plan& plan, const RobotProfile& robo
 
 void validatePlan(const Plan& plan, const RobotProfile& robot) {
     robot.validate();
+    // Before the ring checks, whose tolerances grow with the plan: a 1e10 m long rectangle
+    // was refused for "repeating" its 8 m short side's vertices.
+    if (!plan.boundary.empty()) {
+        const BoundingBox box = plan.bounds();
+        const double span = std::max(box.maxX - box.minX, box.maxY - box.minY);
+        if (std::isfinite(span) && span > kMaxPlanSpan) {
+            char text[160];
+            std::snprintf(text, sizeof text,
+                          "the boundary spans %.3g km, more than the %.0f km of any site on "
+                          "Earth: is the plan in metres?",
+                          span / 1000.0, kMaxPlanSpan / 1000.0);
+            throw InputError(text);
+        }
+    }
     const RingTable table(plan);
     const int ringCount = static_cast<int>(table.rings.size());
     const double tolerance = validation::planTolerance(plan);

@@ -12,6 +12,12 @@ namespace fc {
 
 namespace validation {
 
+namespace {
+// m: a projected coordinate beyond this is no place on Earth, and leaves under 0.2 mm of
+// a double's precision.
+constexpr double kMaxCoordinate = 1e12;
+} // namespace
+
 double planTolerance(const Plan& plan) {
     BoundingBox bounds;
     double largest = 0.0;
@@ -37,6 +43,15 @@ void checkRingShape(const Ring& ring, const std::string& name, double tolerance)
         if (!std::isfinite(ring[i].x) || !std::isfinite(ring[i].y))
             throw InputError(name + " has a non-finite coordinate at vertex " +
                              std::to_string(i + 1));
+        // Beyond this a double keeps no millimetres, and the tolerances below (relative to
+        // the plan's size) merge vertices: the messages would blame the ring's shape.
+        if (std::abs(ring[i].x) > kMaxCoordinate || std::abs(ring[i].y) > kMaxCoordinate) {
+            char text[96];
+            std::snprintf(text, sizeof text, " has a coordinate of %.3g m at vertex %zu",
+                          std::abs(ring[i].x) > kMaxCoordinate ? ring[i].x : ring[i].y, i + 1);
+            throw InputError(name + text +
+                             ", beyond any map projection's range: is the plan in metres?");
+        }
     }
     std::vector<std::pair<double, double>> sorted;
     for (const Vec2& p : ring)

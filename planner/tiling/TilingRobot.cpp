@@ -95,8 +95,8 @@ void TilingRobotProfile::validate() const {
     if (!(blockLeg > 0.0) || !std::isfinite(blockLeg))
         throw InputError("block leg must be a positive length in metres");
     for (double m : blockMass)
-        if (!(m > 0.0) || !std::isfinite(m))
-            throw InputError("block masses must be positive (kg)");
+        if (!(m > 0.0) || !(m <= 1e6))
+            throw InputError("block masses must be positive and at most 1,000,000 kg");
 }
 
 EnergyTerms& EnergyTerms::operator+=(const EnergyTerms& o) {

@@ -305,5 +305,34 @@ done
 "$cli" tile "$work/missing.geojson" >"$work/out" 2>"$work/err"
 check "tile on a missing plan is bad input" test $? -eq 2
 
+# Found by fuzzing (session of 2026-12-07): each is refused in one line naming the problem.
+for bad in "--block-leg 0.004" "--block-masses 1,1,1,1e308"; do
+  # shellcheck disable=SC2086
+  "$cli" tile "$plans/simple.geojson" $bad >"$work/out" 2>"$work/tile-err"
+  rc=$?
+  check "tile refuses $bad" test "$rc" -eq 2 -a "$(wc -l <"$work/tile-err")" -eq 1
+  check "tile names the problem of $bad" grep -q "block leg\|block masses" "$work/tile-err"
+done
+expect_bad_input "speed 1e-308" "$plans/simple.geojson" --speed 1e-308
+expect_bad_input "turn time 1e308" "$plans/simple.geojson" --turn-time 1e308
+"$cli" plan "$plans/simple.geojson" --bogus >"$work/out" 2>"$work/bogus-err"
+check "a last unknown option is unknown" grep -q "unknown option --bogus" "$work/bogus-err"
+"$cli" plan "$plans/simple.geojson" --out "$work/path.txt" >"$work/txt-out" 2>"$work/txt-err"
+check "--out .txt refused before planning, naming the file" grep -q "path.txt: unsupported path format" "$work/txt-err"
+check "--out .txt: no metrics line" test ! -s "$work/txt-out"
+printf '\0{}' >"$work/nul.geojson"
+expect_bad_input "a binary file" "$work/nul.geojson"
+grep -q "NUL byte" "$work/err" || { failed=$((failed + 1)); echo "FAIL: NUL: $(cat "$work/err")"; }
+printf '{"type":"FeatureCollection","features":[{"type":"Feature","properties":{"role":"boundary"},"geometry":{"type":"Polygon","coordinates":[[[0,0],[1e10,0],[1e10,8],[0,8],[0,0]]]}}]}' >"$work/wide.geojson"
+expect_bad_input "a plan 1e10 m long" "$work/wide.geojson"
+grep -q "is the plan in metres" "$work/err" || { failed=$((failed + 1)); echo "FAIL: wide: $(cat "$work/err")"; }
+printf '{"type":"FeatureCollection","features":[{"type":"Feature","properties":{"role":"boundary"},"geometry":{"type":"Polygon","coordinates":[[[1e14,1e14],[100000000000010,1e14],[100000000000010,100000000000008],[1e14,100000000000008],[1e14,1e14]]]}}]}' >"$work/far.geojson"
+expect_bad_input "a plan 1e14 m from its origin" "$work/far.geojson"
+printf '{"type":"FeatureCollection","crs":{"type":"name","properties":{"name":"EPSG:3857"}},"features":[{"type":"Feature","properties":{"role":"boundary"},"geometry":{"type":"Polygon","coordinates":[[[0,6e9],[10,6e9],[10,6000000008],[0,6000000008],[0,6e9]]]}}]}' >"$work/mercator.geojson"
+expect_bad_input "Web Mercator off the globe" "$work/mercator.geojson"
+grep -q "is not on the globe" "$work/err" || { failed=$((failed + 1)); echo "FAIL: mercator: $(cat "$work/err")"; }
+"$cli" train "$plans/simple.geojson" --out "$work/m.fcdqn" --episodes 0 >"$work/out" 2>"$work/err"
+check "train --episodes 0 refused" test $? -eq 2
+
 echo "$passed passed, $failed failed"
 [ "$failed" -eq 0 ]

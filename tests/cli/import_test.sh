@@ -214,5 +214,33 @@ bad "building 3 of 2" "$work/site.geojson" --building 3 --out "$work/x.fcproj"
 "$cli" import "$work/site.geojson" --building 0 --out "$work/x.fcproj" >/dev/null 2>&1
 [ $? -eq 2 ] || fail "--building 0 accepted"
 
+# Found by fuzzing (session of 2026-12-07).
+echo "POLYGON((0 0,10 0,10 8,0 8))" >"$work/unclosed.wkt"
+"$cli" import "$work/unclosed.wkt" --out "$work/unclosed.geojson" >"$work/out" 2>"$work/err" &&
+  grep -q '"boundary_area":80.000' "$work/out" || fail "an unclosed WKT ring keeps its last vertex: $(cat "$work/out" "$work/err")"
+printf '\xEF\xBB\xBFPOLYGON((0 0,10 0,10 8,0 8,0 0))\n' >"$work/bom.wkt"
+"$cli" import "$work/bom.wkt" --out "$work/bom.geojson" >"$work/out" 2>"$work/err" ||
+  fail "WKT with a byte order mark: $(cat "$work/err")"
+echo "SRID=-5;POLYGON((0 0,10 0,10 8,0 8,0 0))" >"$work/srid.wkt"
+bad "negative SRID" "$work/srid.wkt" --out "$work/x.fcproj"
+bad "units 1e9" "$work/unclosed.wkt" --units 1e9 --out "$work/x.fcproj"
+python3 - "$work" <<'PY'
+import sys
+w = sys.argv[1]
+with open(w + "/room.pgm", "wb") as f:
+    f.write(b"P5 40 30 255\n" + bytes([0] * 40 + ([0] + [254] * 38 + [0]) * 28 + [0] * 40))
+open(w + "/room.yaml", "w").write("image: room.pgm\nresolution: 0.05\norigin: [0, 0, 0]\n"
+                                 "negate: 0\noccupied_thresh: 0.65\nfree_thresh: 0.196\n")
+open(w + "/bom.yaml", "wb").write(b"\xef\xbb\xbf" + open(w + "/room.yaml", "rb").read())
+PY
+"$cli" import "$work/bom.yaml" --out "$work/bom.fcproj" >"$work/out" 2>"$work/err" ||
+  fail "map YAML with a byte order mark: $(cat "$work/err")"
+for option in "--opening 1e9" "--closing 1000" "--opening 1e5"; do
+  # shellcheck disable=SC2086
+  "$cli" import "$work/room.yaml" $option --out "$work/x.fcproj" >"$work/out" 2>"$work/err"
+  rc=$?
+  [ "$rc" -eq 2 ] && grep -q "must be at most 5 m" "$work/err" || fail "$option: exit $rc, $(cat "$work/err")"
+done
+
 [ "$failed" -eq 0 ] && echo "import CLI: all checks passed"
 exit "$failed"

@@ -251,10 +251,31 @@ std::vector<MessageForm> fileMessageForms() {
                                       "FloorCover cannot import “.%1” files (it imports %2).")),
         messageForm(R"re(^unknown plan format "\.(.*)"$)re",
                     QT_TRANSLATE_NOOP("PlannerMessages", "FloorCover cannot import “.%1” files.")),
-        messageForm(R"re(^the unit must be a positive number of metres$)re",
+        messageForm(
+            R"re(^the unit must be a positive number of metres below 1,000,000 \(metres per drawing unit: 0\.001 for millimetres\)$)re",
+            QT_TRANSLATE_NOOP("PlannerMessages",
+                              "The unit must be a positive number of metres below "
+                              "1,000,000 (0.001 for a drawing in millimetres): correct "
+                              "Units in the import dialog.")),
+        messageForm(R"re(^EPSG code (-?\d+) is not valid \(codes run from 1 to (\d+)\)$)re",
                     QT_TRANSLATE_NOOP("PlannerMessages",
-                                      "The unit must be a positive number of metres: correct "
-                                      "Units in the import dialog.")),
+                                      "The file names EPSG code %1, which is not valid (codes run "
+                                      "from 1 to %2).")),
+        messageForm(R"re(^point \((.*), (.*)\) in EPSG:(\d+) is not on the globe$)re",
+                    QT_TRANSLATE_NOOP("PlannerMessages",
+                                      "The point (%1, %2) in EPSG:%3 is not on the globe: are "
+                                      "the coordinates in that system?")),
+        messageForm(
+            R"re(^not a JSON text file \(a NUL byte at offset (\d+)\): is it a binary file\?$)re",
+            QT_TRANSLATE_NOOP("PlannerMessages",
+                              "The file is not JSON text (it holds a zero byte at offset "
+                              "%1): is it a binary file?")),
+        messageForm(R"re(^the opening radius must be at most (.*) m \(got (.*) m\)$)re",
+                    QT_TRANSLATE_NOOP("PlannerMessages",
+                                      "“Fill notches up to” must be at most %1 m, not %2 m.")),
+        messageForm(R"re(^the closing radius must be at most (.*) m \(got (.*) m\)$)re",
+                    QT_TRANSLATE_NOOP("PlannerMessages",
+                                      "“Remove obstacles up to” must be at most %1 m, not %2 m.")),
         messageForm(R"re(^the gap tolerance must be between 0 and 1000 m$)re",
                     QT_TRANSLATE_NOOP("PlannerMessages",
                                       "“Close gaps up to” must be between 0 and 1000 m.")),
@@ -518,10 +539,16 @@ std::vector<MessageForm> fileMessageForms() {
                     QT_TRANSLATE_NOOP("PlannerMessages",
                                       "The block leg must be a positive length in metres: change "
                                       "it in the Tiling Robot panel.")),
-        messageForm(R"re(^block masses must be positive \(kg\)$)re",
-                    QT_TRANSLATE_NOOP("PlannerMessages",
-                                      "The block masses must be positive (kg): change them in the "
-                                      "Tiling Robot panel.")),
+        messageForm(
+            R"re(^the floor needs about (\d+) tiles of a (.*) m block leg, more than (\d+): choose a longer block leg$)re",
+            QT_TRANSLATE_NOOP("PlannerMessages",
+                              "The floor would need about %1 tiles of a %2 m block leg, "
+                              "more than %3: choose a longer block leg.")),
+        messageForm(
+            R"re(^block masses must be positive and at most 1,000,000 kg$)re",
+            QT_TRANSLATE_NOOP("PlannerMessages",
+                              "The block masses must be positive, at most 1,000,000 kg: change "
+                              "them in the Tiling Robot panel.")),
         messageForm(R"re(^unsupported waypoint file "(.*)" \(use \.csv or \.json\)$)re",
                     QT_TRANSLATE_NOOP("PlannerMessages",
                                       "Waypoints are exported as .csv or .json files, not as "

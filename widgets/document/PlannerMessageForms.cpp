@@ -144,6 +144,24 @@ std::vector<MessageForm> planningMessageForms() {
         messageForm(R"re(^turn time must be zero or positive \(got (.*)\)$)re",
                     QT_TRANSLATE_NOOP("PlannerMessages",
                                       "The robot's turn time must be zero or positive, not %1.")),
+        messageForm(R"re(^speed (.*) m/s is not a plausible robot speed \(0\.001 to 100 m/s\)$)re",
+                    QT_TRANSLATE_NOOP("PlannerMessages",
+                                      "A speed of %1 m/s is not plausible for a robot (0.001 to "
+                                      "100 m/s): change it in the Planning panel.")),
+        messageForm(R"re(^turn time (.*) s is not plausible \(at most an hour per turn\)$)re",
+                    QT_TRANSLATE_NOOP("PlannerMessages",
+                                      "A turn time of %1 s is not plausible (at most an hour per "
+                                      "turn): change it in the Planning panel.")),
+        messageForm(
+            R"re(^{ring} has a coordinate of (.*) m at vertex (\d+), beyond any map projection's range: is the plan in metres\?$)re",
+            QT_TRANSLATE_NOOP("PlannerMessages",
+                              "%1: vertex %3 has a coordinate of %2 m, beyond the range "
+                              "of any map projection: is the plan in metres?")),
+        messageForm(
+            R"re(^the boundary spans (.*) km, more than the (.*) km of any site on Earth: is the plan in metres\?$)re",
+            QT_TRANSLATE_NOOP("PlannerMessages",
+                              "The boundary spans %1 km, more than the %2 km of any site "
+                              "on Earth: is the plan in metres?")),
         messageForm(R"re(^coverage width W = (.*) m is not a plausible robot size$)re",
                     QT_TRANSLATE_NOOP("PlannerMessages",
                                       "A coverage width W of %1 m is not a plausible robot size: "
