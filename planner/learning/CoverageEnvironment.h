@@ -108,6 +108,8 @@ public:
     int startNode() const { return start_; }
     int endNode() const { return end_; }
     const std::vector<char>& covered() const { return covered_; }
+    // Per node: the cheapest transit cost from the current corner (infinity: none).
+    const std::vector<double>& transitCosts() const { return transitCost_; }
     const Walk& walk() const { return walk_; }
     // The query under which evaluateWalk prices this episode's walk exactly as the rewards
     // did: required = the cells uncovered at reset.
