@@ -476,6 +476,12 @@ PlanResult planPerRoom(const PlanRequest& request, const SolveControl& control,
             } catch (const InputError&) {
                 // e.g. one group's rooms cannot be reached from the start at its angle
                 return std::optional<Metrics>();
+            } catch (const SolverError&) {
+                // A candidate whose parts cannot be joined (a 0.5 m corner room at its own
+                // angle: the end point found no way out) is dropped, not the whole plan.
+                if (screeningControl.cancelled && screeningControl.cancelled())
+                    throw;
+                return std::optional<Metrics>();
             }
         }));
     std::exception_ptr screeningFailure;

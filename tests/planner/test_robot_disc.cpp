@@ -241,6 +241,19 @@ TEST(PerRoomSweep, ShortEdgesALittleOffDoNotTurnTheSweepOffTheWalls) {
     EXPECT_EQ(angles.at(""), 0.0);
 }
 
+// Found by a black-box run of the CLI: a room of a 0.5 m corner triangle, swept at its own
+// angle (along its slanted side), left the end point no way out, and that one candidate of
+// the per-room search failed the whole plan. Such a candidate is dropped instead.
+TEST(PerRoomSweep, ATinyCornerRoomDoesNotFailThePlan) {
+    Plan plan;
+    plan.boundary = box(0, 0, 10, 8);
+    plan.rooms = {{"A", {{0, 0}, {0.5, 0}, {0, 0.5}}},
+                  {"B", {{0.5, 0}, {10, 0}, {10, 8}, {0, 8}, {0, 0.5}}}};
+    const PlanResult r = planCoverage(requestFor(plan));
+    EXPECT_GE(r.metrics.coverage, 0.99);
+    EXPECT_GE(worstClearance(r), 0.3 - 2e-3);
+}
+
 TEST(PerRoomSweep, OverrideFixesOneRoomsAngle) {
     SweepOptions sweep;
     sweep.roomAngles["N01"] = 45.0;
