@@ -334,5 +334,9 @@ grep -q "is not on the globe" "$work/err" || { failed=$((failed + 1)); echo "FAI
 "$cli" train "$plans/simple.geojson" --out "$work/m.fcdqn" --episodes 0 >"$work/out" 2>"$work/err"
 check "train --episodes 0 refused" test $? -eq 2
 
+printf '{"type":"FeatureCollection","features":[{"type":"Feature","properties":{"role":"boundary"},"geometry":{"type":"Polygon","coordinates":[[[0,0],[10,0],[10,8],[0,8],[0,0]]]}},{"type":"Feature","properties":{"role":"boundary"},"geometry":{"type":"Polygon","coordinates":[[[5,0],[15,0],[15,8],[5,8],[5,0]]]}}]}' >"$work/overlap.geojson"
+"$cli" plan "$work/overlap.geojson" >"$work/out" 2>"$work/overlap-err"
+check "overlapping buildings are said to overlap" grep -q "building 1 overlaps building 2 by 40 m2" "$work/overlap-err"
+
 echo "$passed passed, $failed failed"
 [ "$failed" -eq 0 ]
