@@ -1027,6 +1027,10 @@
         <source>The block masses must be positive, at most 1,000,000 kg: change them in the Tiling Robot panel.</source>
         <translation>Die Blockmassen müssen positiv sein, höchstens 1.000.000 kg: Ändern Sie sie im Bereich Kachelroboter.</translation>
     </message>
+    <message>
+        <source>Obstacles that touched the outer wall or each other at a single point were shrunk by 1 mm.</source>
+        <translation>Hindernisse, die die Außenwand oder einander in einem einzigen Punkt berührten, wurden um 1 mm verkleinert.</translation>
+    </message>
 </context>
 <context>
     <name>fc::ui</name>

@@ -1013,11 +1013,11 @@
     </message>
     <message>
         <source>“Fill notches up to” must be at most %1 m, not %2 m.</source>
-        <translation>« Combler les encoches jusqu'à » doit valoir au plus %1 m, pas %2 m.</translation>
+        <translation>« Combler les encoches jusqu&apos;à » doit valoir au plus %1 m, pas %2 m.</translation>
     </message>
     <message>
         <source>“Remove obstacles up to” must be at most %1 m, not %2 m.</source>
-        <translation>« Supprimer les obstacles jusqu'à » doit valoir au plus %1 m, pas %2 m.</translation>
+        <translation>« Supprimer les obstacles jusqu&apos;à » doit valoir au plus %1 m, pas %2 m.</translation>
     </message>
     <message>
         <source>The floor would need about %1 tiles of a %2 m block leg, more than %3: choose a longer block leg.</source>
@@ -1026,6 +1026,10 @@
     <message>
         <source>The block masses must be positive, at most 1,000,000 kg: change them in the Tiling Robot panel.</source>
         <translation>Les masses des blocs doivent être positives, au plus 1 000 000 kg : modifiez-les dans le panneau Robot à pavage.</translation>
+    </message>
+    <message>
+        <source>Obstacles that touched the outer wall or each other at a single point were shrunk by 1 mm.</source>
+        <translation>Les obstacles qui touchaient le mur extérieur ou un autre obstacle en un seul point ont été réduits de 1 mm.</translation>
     </message>
 </context>
 <context>

@@ -2,6 +2,7 @@
 // of the obstacles, so overlapping, duplicated (outline + hatch) or wall-touching obstacles
 // give one clean free-space polygon. Also the WKT importer.
 #include "importers/OgrSupport.h"
+#include "model/Validation.h"
 
 #include <algorithm>
 #include <memory>
@@ -232,6 +233,20 @@ Polygon2 largestPart(const OGRGeometry* g, size_t* partCount = nullptr) {
 
 } // namespace
 
+namespace {
+
+constexpr double kTouchShrink = 1e-3; // m
+
+// Whether the plan's checks stop at rings that touch (validatePlan's words).
+bool hasPointTouches(const Plan& plan) {
+    for (const PlanProblem& problem : planProblems(plan, RobotProfile{}, 20))
+        if (problem.message.find(" touch") != std::string::npos)
+            return true;
+    return false;
+}
+
+} // namespace
+
 Plan repairBrokenPlan(const Plan& broken, std::vector<std::string>& notes) {
     ensureGdal();
     if (broken.boundary.size() < 3)
@@ -265,6 +280,28 @@ Plan repairBrokenPlan(const Plan& broken, std::vector<std::string>& notes) {
                         " obstacle(s) crossed themselves: split where they cross");
     std::vector<std::string> warnings;
     Plan plan = freeSpacePlan(std::move(free), *obstacles, warnings);
+    // Obstacles that touch the wall or each other at a single point (a diamond's corner on
+    // the wall) leave a pinch the cut-out cannot remove: shrunk by a millimetre they stand
+    // apart, and the gap is far narrower than any robot.
+    if (!plan.obstacles.empty() && hasPointTouches(plan)) {
+        // The plan's own holes: a boundary that touched itself made some of them.
+        auto shrunk = std::make_unique<OGRMultiPolygon>();
+        for (const Ring& hole : plan.obstacles) {
+            GeometryPtr part(shellPolygon(hole)->Buffer(-kTouchShrink, 1));
+            std::vector<Polygon2> pieces;
+            collectPolygons(part.get(), pieces);
+            for (const Polygon2& piece : pieces)
+                shrunk->addGeometryDirectly(shellPolygon(piece.shell).release());
+        }
+        std::vector<std::string> again;
+        Plan apart = freeSpacePlan(shellPolygon(plan.boundary), *shrunk, again);
+        if (!hasPointTouches(apart)) {
+            plan = std::move(apart);
+            warnings = std::move(again);
+            notes.push_back("obstacles that touched the wall or each other at a point shrunk "
+                            "by 1 mm");
+        }
+    }
     for (const std::string& w : warnings)
         notes.push_back(w);
     if (plan.obstacles.size() != broken.obstacles.size())

@@ -242,5 +242,11 @@ for option in "--opening 1e9" "--closing 1000" "--opening 1e5"; do
   [ "$rc" -eq 2 ] && grep -q "must be at most 5 m" "$work/err" || fail "$option: exit $rc, $(cat "$work/err")"
 done
 
+# --repair of obstacles touching the wall or each other at a point: shrunk by 1 mm, then valid.
+printf '{"type":"FeatureCollection","features":[{"type":"Feature","properties":{"role":"boundary"},"geometry":{"type":"Polygon","coordinates":[[[0,0],[10,0],[10,8],[0,8],[0,0]]]}},{"type":"Feature","properties":{"role":"obstacle"},"geometry":{"type":"Polygon","coordinates":[[[5,0],[6,1],[5,2],[4,1],[5,0]]]}},{"type":"Feature","properties":{"role":"obstacle"},"geometry":{"type":"Polygon","coordinates":[[[2,4],[3,4],[3,5],[2,5],[2,4]]]}},{"type":"Feature","properties":{"role":"obstacle"},"geometry":{"type":"Polygon","coordinates":[[[3,5],[4,5],[4,6],[3,6],[3,5]]]}}]}' >"$work/touching.geojson"
+"$cli" import "$work/touching.geojson" --repair --out "$work/touching.fcproj" >"$work/out" 2>"$work/err" &&
+  grep -q "shrunk by 1 mm" "$work/err" && "$cli" plan "$work/touching.fcproj" >"$work/out" 2>"$work/err" ||
+  fail "--repair of point touches: $(cat "$work/out" "$work/err")"
+
 [ "$failed" -eq 0 ] && echo "import CLI: all checks passed"
 exit "$failed"

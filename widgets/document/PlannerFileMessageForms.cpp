@@ -450,6 +450,11 @@ std::vector<MessageForm> fileMessageForms() {
             QT_TRANSLATE_NOOP("PlannerMessages",
                               "Obstacles that crossed themselves, split where they cross: %1.")),
         messageForm(
+            R"re(^obstacles that touched the wall or each other at a point shrunk by 1 mm$)re",
+            QT_TRANSLATE_NOOP("PlannerMessages",
+                              "Obstacles that touched the outer wall or each other at a "
+                              "single point were shrunk by 1 mm.")),
+        messageForm(
             R"re(^obstacles merged, clipped to the boundary or joined to the wall: (\d+) )re"
             R"re(before, (\d+) after$)re",
             QT_TRANSLATE_NOOP("PlannerMessages",
