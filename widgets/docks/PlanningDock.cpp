@@ -69,13 +69,6 @@ PlanningDock::PlanningDock(QWidget* parent) : QDockWidget(tr("Planning"), parent
     layout->addWidget(roomsGroup);
     connect(rooms_, &QListWidget::itemChanged, this, &PlanningDock::roomItemChanged);
 
-    planButton_ = new QPushButton(tr("Plan"));
-    planButton_->setToolTip(tr("Plan the coverage path for the checked rooms (F5)."));
-    layout->addWidget(planButton_);
-    status_ = new QLabel;
-    status_->setWordWrap(true);
-    status_->setTextInteractionFlags(Qt::TextSelectableByMouse);
-    layout->addWidget(status_);
     layout->addWidget(createMetricsGroup());
     layout->addStretch(1);
 
@@ -83,7 +76,25 @@ PlanningDock::PlanningDock(QWidget* parent) : QDockWidget(tr("Planning"), parent
     scroll->setWidget(content);
     scroll->setWidgetResizable(true);
     scroll->setFrameShape(QFrame::NoFrame);
-    setWidget(scroll);
+    // The Plan button and the status line stay in view below the scrolling part: a warning
+    // of lost coverage used to sit under the fold, cut in half by the dock's bottom edge.
+    planButton_ = new QPushButton(tr("Plan"));
+    planButton_->setToolTip(tr("Plan the coverage path for the checked rooms (F5)."));
+    status_ = new QLabel;
+    status_->setWordWrap(true);
+    status_->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    auto* frame = new QWidget;
+    auto* frameLayout = new QVBoxLayout(frame);
+    frameLayout->setContentsMargins(0, 0, 0, 0);
+    frameLayout->addWidget(scroll, 1);
+    auto* footer = new QVBoxLayout;
+    footer->setContentsMargins(layout->contentsMargins().left(), 0,
+                               layout->contentsMargins().right(),
+                               layout->contentsMargins().bottom());
+    footer->addWidget(planButton_);
+    footer->addWidget(status_);
+    frameLayout->addLayout(footer);
+    setWidget(frame);
     connect(planButton_, &QPushButton::clicked, this, [this]() {
         if (controller_)
             controller_->plan();
