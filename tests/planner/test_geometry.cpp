@@ -1,6 +1,7 @@
 #include "geometry/Clearance.h"
 #include "geometry/Geometry.h"
 #include "geometry/OpenRegions.h"
+#include "geometry/RingOverlap.h"
 #include "geometry/SegmentIndex.h"
 
 #include <gtest/gtest.h>
@@ -367,4 +368,23 @@ TEST(Geometry, LabelPointsLieWellInsideTheRoom) {
         EXPECT_LT(std::abs(name.x - 20.0), 8.0);
         EXPECT_NEAR(name.y, 1.25, 0.3);
     }
+}
+
+// Two buildings of a site drawn overlapping (formats/GeoJsonPlan.cpp notes it).
+TEST(RingOverlap, SharedAreaOfTwoOutlines) {
+    const Ring a{{0, 0}, {10, 0}, {10, 8}, {0, 8}}, b{{5, 0}, {15, 0}, {15, 8}, {5, 8}};
+    EXPECT_NEAR(ringOverlapArea(a, b), 40.0, 1e-9);
+    Ring reversed(b.rbegin(), b.rend()); // either orientation
+    EXPECT_NEAR(ringOverlapArea(a, reversed), 40.0, 1e-9);
+    const Ring touching{{10, 0}, {20, 0}, {20, 8}, {10, 8}};
+    EXPECT_EQ(ringOverlapArea(a, touching), 0.0);
+    const Ring bowTie{{0, 0}, {10, 8}, {10, 0}, {0, 8}};
+    EXPECT_EQ(ringOverlapArea(a, bowTie), 0.0); // not a polygon: its own checks name it
+    // At UTM coordinates the digits are kept.
+    Ring ua = a, ub = b;
+    for (Vec2& p : ua)
+        p = p + Vec2{512345.0, 5412345.0};
+    for (Vec2& p : ub)
+        p = p + Vec2{512345.0, 5412345.0};
+    EXPECT_NEAR(ringOverlapArea(ua, ub), 40.0, 1e-6);
 }
