@@ -32,6 +32,14 @@ inline void appendRing(const Ring& ring, Vec2 origin, BRing& out) {
         out.push_back(out.front());
 }
 
+// A simple ring as a polygon, relative to `origin`, oriented as Boost.Geometry expects.
+inline BPolygon toPolygon(const Ring& ring, Vec2 origin) {
+    BPolygon out;
+    appendRing(ring, origin, out.outer());
+    bg::correct(out);
+    return out;
+}
+
 inline Ring toRing(const BRing& ring, Vec2 origin) {
     Ring out;
     for (size_t i = 0; i + 1 < ring.size(); ++i)

@@ -4,18 +4,6 @@
 
 namespace fc {
 
-namespace {
-
-// Relative to `origin`: rings in UTM coordinates keep their digits.
-bgeo::BPolygon polygonOf(const Ring& ring, Vec2 origin) {
-    bgeo::BPolygon out;
-    bgeo::appendRing(ring, origin, out.outer());
-    bgeo::bg::correct(out);
-    return out;
-}
-
-} // namespace
-
 double ringOverlapArea(const Ring& a, const Ring& b) {
     if (a.size() < 3 || b.size() < 3)
         return 0.0;
@@ -23,7 +11,7 @@ double ringOverlapArea(const Ring& a, const Ring& b) {
     if (ba.maxX <= bb.minX || bb.maxX <= ba.minX || ba.maxY <= bb.minY || bb.maxY <= ba.minY)
         return 0.0;
     const Vec2 origin{ba.minX, ba.minY};
-    const bgeo::BPolygon pa = polygonOf(a, origin), pb = polygonOf(b, origin);
+    const bgeo::BPolygon pa = bgeo::toPolygon(a, origin), pb = bgeo::toPolygon(b, origin);
     if (!bgeo::bg::is_valid(pa) || !bgeo::bg::is_valid(pb))
         return 0.0;
     try {

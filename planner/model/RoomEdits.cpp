@@ -11,17 +11,6 @@ namespace {
 
 using namespace bgeo;
 
-// Coordinates relative to `origin`: rooms in UTM coordinates lose their digits otherwise.
-BPolygon toPolygon(const Ring& ring, Vec2 origin) {
-    BPolygon out;
-    for (const Vec2& p : ring)
-        out.outer().push_back(BPoint(p.x - origin.x, p.y - origin.y));
-    if (!ring.empty())
-        out.outer().push_back(out.outer().front());
-    bg::correct(out);
-    return out;
-}
-
 Ring toRing(const BPolygon& polygon, Vec2 origin) {
     Ring out;
     const auto& outer = polygon.outer();

@@ -665,9 +665,11 @@ PlanResult planCoverage(const PlanRequest& request, const SolveControl& control,
         });
     }
     // The floor with its wall teeth cut back, planned beside (pipeline/ShavedTeethOffer.h).
-    std::future<std::optional<PlanResult>> flat =
-        std::async(std::launch::async,
-                   [&request, control] { return detail::planShavedTeeth(request, control); });
+    std::future<std::optional<PlanResult>> flat;
+    if (std::optional<detail::ShavedTeethRequest> shaved = detail::shavedTeethRequest(request))
+        flat = std::async(std::launch::async, [shaved = std::move(*shaved), control] {
+            return detail::planShavedTeeth(shaved, control);
+        });
     struct StopOnExit {
         std::atomic<bool>& stop;
         ~StopOnExit() { stop = true; } // before `loop` waits for the draft

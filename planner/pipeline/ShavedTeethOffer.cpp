@@ -9,7 +9,7 @@
 
 namespace fc::detail {
 
-std::optional<PlanResult> planShavedTeeth(const PlanRequest& request, const SolveControl& control) {
+std::optional<ShavedTeethRequest> shavedTeethRequest(const PlanRequest& request) {
     const RobotProfile& robot = request.robot;
     const double depth = kToothDepthShare * (robot.coverageWidth - robot.robotDiameter) / 2.0;
     if (!request.shaveTeeth || !(depth > 0) || !plansAnyGraph(request.solver))
@@ -23,15 +23,20 @@ std::optional<PlanResult> planShavedTeeth(const PlanRequest& request, const Solv
         shaveWallTeeth(request.plan, depth, kToothSpanInWidths * robot.coverageWidth);
     if (shaved.teeth == 0)
         return std::nullopt;
-    PlanRequest flat = request;
-    flat.plan = std::move(shaved.plan);
-    flat.shaveTeeth = false;
+    ShavedTeethRequest flat{request, shaved.teeth, depth};
+    flat.request.plan = std::move(shaved.plan);
+    flat.request.shaveTeeth = false;
     // The wall loop runs L/2 from every wall, so past every tooth cut: never kept.
-    flat.wallLoop = false;
+    flat.request.wallLoop = false;
+    return flat;
+}
+
+std::optional<PlanResult> planShavedTeeth(const ShavedTeethRequest& flat,
+                                          const SolveControl& control) {
     try {
-        PlanResult result = planCoverage(flat, control);
-        result.shavedTeeth = shaved.teeth;
-        result.shavedToothDepth = depth;
+        PlanResult result = planCoverage(flat.request, control);
+        result.shavedTeeth = flat.teeth;
+        result.shavedToothDepth = flat.depth;
         return result;
     } catch (const InputError&) {
         return std::nullopt; // an offer: where it cannot be planned, the first plan stands

@@ -16,12 +16,22 @@ inline constexpr double kToothDepthShare = 0.9;
 // ... and up to this many coverage widths long (a radiator, a door frame).
 inline constexpr double kToothSpanInWidths = 1.5;
 
-// The plan of the floor with its teeth cut back (PlanResult::shavedTeeth set), where it has
-// some and `request` allows it (PlanRequest::shaveTeeth; not on ragged traced walls, whose
-// wall loop runs L/2 from every tooth); empty where there is nothing to offer or it cannot be
-// planned. Its metrics are still those of the shaved floor (keepShavedTeethPlan). Runs beside
-// the first plan; cancellation is rethrown.
-std::optional<PlanResult> planShavedTeeth(const PlanRequest& request, const SolveControl& control);
+// The request for the floor with its teeth cut back, where it has some and `request` allows
+// it (PlanRequest::shaveTeeth; not on ragged traced walls, whose wall loop runs L/2 from
+// every tooth); empty where there is nothing to offer. Cheap: decided before any thread
+// starts.
+struct ShavedTeethRequest {
+    PlanRequest request; // shaveTeeth and wallLoop off
+    int teeth = 0;
+    double depth = 0.0; // m
+};
+std::optional<ShavedTeethRequest> shavedTeethRequest(const PlanRequest& request);
+
+// Its plan (PlanResult::shavedTeeth set); empty where it cannot be planned. Its metrics are
+// still those of the shaved floor (keepShavedTeethPlan). Runs beside the first plan;
+// cancellation is rethrown.
+std::optional<PlanResult> planShavedTeeth(const ShavedTeethRequest& flat,
+                                          const SolveControl& control);
 
 // Whether that plan's path keeps L/2 from the walls as drawn; if so its metrics become those
 // of the floor as drawn (measured as `first`'s) and its coverage warnings follow them.
