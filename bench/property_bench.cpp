@@ -2,6 +2,7 @@
 // through planning and the independent checker; prints the failure rate per family and the
 // worst cases, as Markdown.
 //   floorcover-property-bench [--count N] [--seed S] [--family NAME] [--worst K] [--write DIR]
+//                             [--no-rings]
 // (--write DIR: each generated plan is also written there as FAMILY-SEED.geojson, to plan it
 // again with floorcover-cli)
 // Plan i (0-based) is family i mod F (F families, or the one named) with seed S + i / F, so
@@ -17,6 +18,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <filesystem>
 #include <map>
 #include <string>
 #include <vector>
@@ -38,8 +40,9 @@ struct Tally {
 };
 
 void usage() {
-    std::fprintf(stderr, "usage: floorcover-property-bench [--count N] [--seed S] "
-                         "[--family NAME] [--worst K] [--solver NAME] [--write DIR]\n");
+    std::fprintf(stderr,
+                 "usage: floorcover-property-bench [--count N] [--seed S] "
+                 "[--family NAME] [--worst K] [--solver NAME] [--write DIR] [--no-rings]\n");
 }
 
 } // namespace
@@ -49,10 +52,15 @@ int main(int argc, char** argv) {
     std::uint64_t seed = 1;
     std::vector<Family> families = allFamilies();
     std::string solver = "heuristic";
+    bool rings = true;
     std::string writeDir;
     fc::registerDqnSolver(); // solver dqn: the built-in generalist model
     for (int i = 1; i < argc; ++i) {
         const std::string arg = argv[i];
+        if (arg == "--no-rings") { // A/B runs: stripes and wall loops only
+            rings = false;
+            continue;
+        }
         if (i + 1 >= argc) {
             usage();
             return 2;
@@ -83,6 +91,14 @@ int main(int argc, char** argv) {
         }
     }
 
+    if (!writeDir.empty()) {
+        std::error_code made;
+        std::filesystem::create_directories(writeDir, made);
+        if (made) {
+            std::fprintf(stderr, "--write %s: %s\n", writeDir.c_str(), made.message().c_str());
+            return 2;
+        }
+    }
     const auto t0 = std::chrono::steady_clock::now();
     std::vector<Result> results;
     std::map<std::string, Tally> tallies;
@@ -104,6 +120,7 @@ int main(int argc, char** argv) {
         if (r.generatorError.empty()) {
             fc::PlanRequest request = defaultRequest(r.plan.plan);
             request.solver = solver;
+            request.rings = rings;
             r.outcome = planAndCheck(request);
         }
         Tally& t = tallies[familyName(family)];

@@ -2847,6 +2847,10 @@ Abdeckungspfadplanung für Reinigungs- und Desinfektionsroboter.</translation>
             <numerusform>Für die Planung auf die Wandlinie zurückgenommene Wandvorsprünge: %n (Pilaster, Höcker gescannter Wände); der Pfad hält Abstand davon.</numerusform>
         </translation>
     </message>
+    <message>
+        <source>Planned as loops along the walls, each one coverage width further in: estimated faster than stripes on this floor.</source>
+        <translation>Als Runden entlang der Wände geplant, jede eine Reinigungsbreite weiter innen: auf dieser Fläche schneller geschätzt als Bahnen.</translation>
+    </message>
 </context>
 <context>
     <name>fc::ui::PpoTrainer</name>

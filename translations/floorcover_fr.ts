@@ -2847,6 +2847,10 @@ Planification de trajets de couverture pour robots de nettoyage et de désinfect
             <numerusform>Saillies de mur ramenées à la ligne du mur pour la planification : %n (pilastres, bosses de murs scannés) ; le chemin s’en tient à distance.</numerusform>
         </translation>
     </message>
+    <message>
+        <source>Planned as loops along the walls, each one coverage width further in: estimated faster than stripes on this floor.</source>
+        <translation>Planifié en boucles le long des murs, chacune d’une largeur de nettoyage plus à l’intérieur : estimé plus rapide que des bandes sur cette surface.</translation>
+    </message>
 </context>
 <context>
     <name>fc::ui::PpoTrainer</name>

@@ -28,10 +28,13 @@ commands:
                 [--turn-time S] [--angle per-room|auto|DEG] [--rooms A,B] [--start X,Y] [--end X,Y]
                 [--solver exact|heuristic|greedy|dqn|dqn-search|reeb-cpp|adjacency-ga|
                 adjacency-ga-centres] [--model FILE]
-                [--seed N] [--out FILE] [--strict] [--no-wall-loop]
+                [--seed N] [--out FILE] [--strict] [--no-wall-loop] [--no-rings]
                 (--no-wall-loop: never drive once along the outer walls first; by default
                 that is planned beside the stripes where it is estimated shorter, on ragged
-                traced walls, and kept when it is faster)
+                traced walls, and kept when it is faster; it also turns off the rings)
+                (--no-rings: stripes only; by default floors up to 1,000 m^2 are also
+                planned as loops along the walls, each W further in than the last, kept
+                where faster: curved corridors, round and slanted rooms)
                 (--robot-diameter L, default 0.6: the robot is a disc; its centre keeps L/2
                 from walls, so passages at least L wide are driven and swept; a --start
                 or --end inside an obstacle or outside the floor is refused, one closer
@@ -116,7 +119,7 @@ const std::vector<std::string> kPlanOptions{
     "--rooms",        "--start",          "--end",
     "--solver",       "--model",          "--seed",
     "--out",          "--strict",         "--no-transition-cells",
-    "--no-wall-loop", "--building"};
+    "--no-wall-loop", "--no-rings",       "--building"};
 
 // A request from the project file's settings, overridden by command-line options.
 PlanRequest requestFrom(const Project& project, const Arguments& args) {
@@ -163,6 +166,7 @@ PlanRequest requestFrom(const Project& project, const Arguments& args) {
         r.seed = static_cast<std::uint64_t>(*s);
     r.transitionCells = !args.has("--no-transition-cells");
     r.wallLoop = !args.has("--no-wall-loop");
+    r.rings = !args.has("--no-rings");
     r.robot.validate();
     return r;
 }
@@ -236,6 +240,10 @@ PlanResult planFromArguments(const std::string& path, const Project& project, co
                   << " wall teeth (bumps up to " << depth
                   << " m deep) cut back to their walls; the path keeps L/2 from them\n";
     }
+    if (result.rings)
+        std::cerr << "floorcover-cli: note: " << path
+                  << ": planned as loops along the walls, each W further in than the last "
+                     "(estimated faster than stripes here)\n";
     if (request.sweep.automatic)
         std::cerr << "floorcover-cli: note: " << path << ": sweep angle " << result.stripeAngleDeg
                   << " degrees chosen (shortest estimated time among the plans that cover "
@@ -428,8 +436,8 @@ int run(int argc, char** argv) {
     const std::string command = argv[1];
     try {
         const Arguments args(argc, argv, 2,
-                             {"--json", "--no-transition-cells", "--no-wall-loop", "--help",
-                              "--resume", "--strict", "--no-cleaning", "--repair",
+                             {"--json", "--no-transition-cells", "--no-wall-loop", "--no-rings",
+                              "--help", "--resume", "--strict", "--no-cleaning", "--repair",
                               "--from-scratch"});
         if (args.has("--help")) {
             std::cout << kUsage;

@@ -114,7 +114,7 @@ void keepPieces(const BMulti& pieces, int room, Vec2 origin, double minPieceArea
 
 std::optional<WallLoop> wallLoop(const Plan& plan, double clearance, double headWidth,
                                  std::optional<Vec2> near, double minPieceArea,
-                                 double simplifyTolerance) {
+                                 double simplifyTolerance, bool aroundHoles) {
     if (plan.boundary.size() < 3)
         return std::nullopt;
     const Vec2 origin = plan.boundary.front();
@@ -161,11 +161,37 @@ std::optional<WallLoop> wallLoop(const Plan& plan, double clearance, double head
     for (size_t k = 0; k + 1 < outer.size(); ++k)
         line.push_back(outer[(first + k) % (outer.size() - 1)]);
     line.push_back(line.front());
+    // Rings feed the loops of their own pieces back in: no repeated points into the buffer.
+    if (aroundHoles)
+        bg::unique(line);
     for (const BPoint& p : line)
         out.loop.push_back({p.x() + origin.x, p.y() + origin.y});
     out.length = bg::length(line);
 
-    const BMulti band = buffered(line, std::max(0.5 * headWidth - kBandOverlap, 0.0));
+    const double halfBand = std::max(0.5 * headWidth - kBandOverlap, 0.0);
+    BMulti band = buffered(line, halfBand);
+    if (aroundHoles)
+        for (const BRing& inner : part->inners()) {
+            if (inner.size() < 4)
+                continue;
+            size_t nearest = 0;
+            for (size_t i = 0; i + 1 < inner.size(); ++i)
+                if (bg::comparable_distance(inner[i], at) <
+                    bg::comparable_distance(inner[nearest], at))
+                    nearest = i;
+            BLine round;
+            for (size_t k = 0; k + 1 < inner.size(); ++k)
+                round.push_back(inner[(nearest + k) % (inner.size() - 1)]);
+            round.push_back(round.front());
+            bg::unique(round);
+            Ring loop;
+            for (const BPoint& p : round)
+                loop.push_back({p.x() + origin.x, p.y() + origin.y});
+            out.holeLoops.push_back(std::move(loop));
+            BMulti both;
+            bg::union_(band, buffered(round, halfBand), both);
+            band = std::move(both);
+        }
     BMulti rest;
     bg::difference(free, band, rest);
     rest = simplified(rest, free, simplifyTolerance);

@@ -15,8 +15,11 @@
 namespace fc {
 
 struct WallLoop {
-    Ring loop;              // world frame, the robot centre's closed path, first point = last
-    double length = 0.0;    // m
+    Ring loop;           // world frame, the robot centre's closed path, first point = last
+    double length = 0.0; // m
+    // With aroundHoles: closed loops round the obstacles inside the loop, at the same
+    // clearance, each starting at its vertex nearest `near`; their bands are swept too.
+    std::vector<Ring> holeLoops;
     std::vector<Ring> rest; // outer rings of the floor pieces the loop's head leaves unswept
     std::vector<std::vector<Ring>> restHoles; // per piece: its holes (obstacles it surrounds)
     std::vector<int> restRoom; // per piece: index into Plan::rooms, -1 outside every room
@@ -36,7 +39,7 @@ struct WallLoop {
 // so that the chords of its round corners keep the clearance.
 std::optional<WallLoop> wallLoop(const Plan& plan, double clearance, double headWidth,
                                  std::optional<Vec2> near, double minPieceArea,
-                                 double simplifyTolerance = 0.0);
+                                 double simplifyTolerance = 0.0, bool aroundHoles = false);
 
 // The point of the floor `outline` minus `holes` nearest `near` where the robot centre keeps
 // `clearance` (and a centimetre) from their edges; empty where the robot fits nowhere.

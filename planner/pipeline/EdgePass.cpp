@@ -4,6 +4,7 @@
 #include "decomposition/WallFollowing.h"
 #include "geometry/Clearance.h"
 #include "model/Validation.h"
+#include "pipeline/FloorTransits.h"
 #include "pipeline/LayoutOffers.h"
 #include "pipeline/PerRoomSweep.h"
 #include "pipeline/PreparedPlans.h"
@@ -18,62 +19,6 @@
 
 namespace fc::detail {
 namespace {
-
-// The floor's walls as the planner's clearance field sees them, in a frame at the plan's
-// first corner (UTM-sized coordinates keep their digits; 90 degrees: not turned).
-struct FloorField {
-    FloorField(const Plan& plan, double radius)
-        : frame(plan.boundary.front(), 90.0), field(ringsOf(plan, frame), radius) {}
-
-    static std::vector<Ring> ringsOf(const Plan& plan, const Frame& frame) {
-        std::vector<Ring> rings{frame.toLocal(plan.boundary)};
-        if (signedArea(rings.front()) < 0.0)
-            std::reverse(rings.front().begin(), rings.front().end());
-        for (const Ring& obstacle : plan.obstacles) {
-            rings.push_back(frame.toLocal(obstacle));
-            if (signedArea(rings.back()) > 0.0)
-                std::reverse(rings.back().begin(), rings.back().end());
-        }
-        return rings;
-    }
-
-    Frame frame;
-    ClearanceField field;
-};
-
-// The segment tests one transit between the loop and a piece may spend before the open
-// regions' grid routes it instead: on the faculty map at half its cell size with its clutter's
-// corners squared, the transits to a pocket behind a closed gap, which the regions did not
-// prove apart, searched for 70 s.
-constexpr std::size_t kEdgeTransitChecks = 200'000;
-
-// Appends a collision-free transit from the path's last point to `to` (nothing when there);
-// false, and the path unchanged, where there is none.
-bool tryAppendTransit(const FloorField& floor, CoveragePath& path, Vec2 to) {
-    const Vec2 from = path.points.back();
-    if (norm(to - from) < 1e-9)
-        return true;
-    const Vec2 a = floor.frame.toLocal(from), b = floor.frame.toLocal(to);
-    // Provably apart (a pocket behind a gap narrower than the robot): no search, which
-    // would test every pair of wall corners on the floor before it gave up.
-    const int regionA = floor.field.openRegionOf(a), regionB = floor.field.openRegionOf(b);
-    if (regionA >= 0 && regionB >= 0 && regionA != regionB)
-        return false;
-    const Polyline local = floor.field.findPath(a, b, {}, INFINITY, kEdgeTransitChecks);
-    if (local.size() < 2)
-        return false;
-    const Polyline world = floor.frame.toWorld(local);
-    for (size_t i = 1; i < world.size(); ++i) {
-        path.points.push_back(i + 1 == world.size() ? to : world[i]);
-        path.kinds.push_back(SegmentKind::Transit);
-    }
-    return true;
-}
-
-void appendTransit(const FloorField& floor, CoveragePath& path, Vec2 to) {
-    if (!tryAppendTransit(floor, path, to))
-        throw InputError("the wall loop's pieces cannot be joined without collision");
-}
 
 void append(CoveragePath& path, const CoveragePath& more) {
     for (size_t i = 1; i < more.points.size(); ++i) {

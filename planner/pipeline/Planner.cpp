@@ -8,6 +8,7 @@
 #include "pipeline/PathChoice.h"
 #include "pipeline/PerRoomSweep.h"
 #include "pipeline/PreparedPlans.h"
+#include "pipeline/RingsOffer.h"
 #include "pipeline/ShavedTeethOffer.h"
 
 #include <algorithm>
@@ -670,10 +671,29 @@ PlanResult planCoverage(const PlanRequest& request, const SolveControl& control,
         flat = std::async(std::launch::async, [shaved = std::move(*shaved), control] {
             return detail::planShavedTeeth(shaved, control);
         });
+    // Loops inside the wall loop, W apart (pipeline/RingsOffer.h).
+    std::atomic<bool> stopRings{false};
+    std::future<std::optional<detail::WallLoopDraft>> rings;
+    if (detail::wantsRings(request)) {
+        SolveControl ringsControl;
+        ringsControl.cancelled = [&stopRings, cancelled = control.cancelled] {
+            return stopRings.load() || (cancelled && cancelled());
+        };
+        rings = std::async(std::launch::async, [&request, ringsControl] {
+            try {
+                return detail::draftRings(request, ringsControl);
+            } catch (const InputError&) {
+                return std::optional<detail::WallLoopDraft>(); // an offer, like the others
+            } catch (const SolverError&) {
+                return std::optional<detail::WallLoopDraft>();
+            }
+        });
+    }
     struct StopOnExit {
         std::atomic<bool>& stop;
-        ~StopOnExit() { stop = true; } // before `loop` waits for the draft
-    } stopOnExit{stopLoop};
+        std::atomic<bool>& stopRings;
+        ~StopOnExit() { stop = stopRings = true; } // before the futures wait for the drafts
+    } stopOnExit{stopLoop, stopRings};
 
     std::optional<PreparedPlans> own; // shared by the first plan and the lattice's check
     if (!prepared)
@@ -712,6 +732,14 @@ PlanResult planCoverage(const PlanRequest& request, const SolveControl& control,
             stopLoop = true;
         }
     }
+    if (rings.valid())
+        if (std::optional<detail::WallLoopDraft> drafted = rings.get()) {
+            if (control.cancelled && control.cancelled())
+                throw SolverError("cancelled");
+            PlanResult ringed = detail::wallLoopPlan(request, result, std::move(*drafted));
+            ringed.rings = true;
+            plans.push_back(std::move(ringed));
+        }
     if (flat.valid())
         if (std::optional<PlanResult> shaved = flat.get())
             if (detail::keepShavedTeethPlan(request, result, *shaved))

@@ -38,6 +38,9 @@ struct PlanRequest {
     // planCoverage also offers a loop along the outer walls first, then stripes over what it
     // left (pipeline/EdgePass.h), where that is estimated shorter: ragged traced walls.
     bool wallLoop = true;
+    // planCoverage also offers loops along the walls, each W further in than the last
+    // (pipeline/RingsOffer.h), on floors where the wall loop is allowed too.
+    bool rings = true;
     // A per-room plan (planPerRoom) plans only its best screened candidate with the solver,
     // not the family and the two best as well. planCoverage sets it for its first plan on
     // floors of more than kSingleFinalistMinArea where it drafts a wall loop beside it.
@@ -89,6 +92,8 @@ struct PlanResult {
     // floor's as drawn. 0: planned on the floor as drawn.
     int shavedTeeth = 0;
     double shavedToothDepth = 0.0; // m: how deep a tooth may have been
+    // Planned as loops inside the wall loop, W apart (pipeline/RingsOffer.h).
+    bool rings = false;
 };
 
 // Validates (throws InputError) and builds decomposition and graph for one sweep angle

@@ -96,6 +96,8 @@ std::vector<std::pair<double, int>> angleGroups(const std::map<std::string, doub
 
 std::map<std::string, double> roomAnglesOf(const PlanResult& result, const Plan& plan) {
     std::map<std::string, double> angles;
+    if (result.rings) // loops along the walls: no room swept at an angle
+        return angles;
     auto add = [&](const std::string& room, double angle) {
         const bool named = std::any_of(plan.rooms.begin(), plan.rooms.end(),
                                        [&](const Room& r) { return r.name == room; });

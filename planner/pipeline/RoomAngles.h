@@ -36,6 +36,7 @@ std::map<std::string, double> familyAngles(const Plan& plan, const SweepOptions&
 // does not name under the empty name, as roomSweepAngles keys them). Rooms it did not plan
 // are absent.
 std::map<std::string, double> roomAnglesOf(const PlanResult& result, const Plan& plan);
+// (None for a plan of rings, PlanResult::rings: no room is swept at an angle.)
 
 // The groups of the rooms' angles in `angles`, the one with the most rooms first: each an
 // angle and its room count.

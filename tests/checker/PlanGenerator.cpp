@@ -115,7 +115,8 @@ Ring convexBlob(Rng& rng, Vec2 centre, double radius) {
 // Places obstacles inside `free` (a polygon) at a random gap from walls and from each
 // other; returns the obstacles placed. `make` draws one obstacle around a centre.
 template <typename Make>
-std::vector<Ring> placeObstacles(Rng& rng, const BPolygon& free, int count, Make make) {
+std::vector<Ring> placeObstacles(Rng& rng, const BPolygon& free, int count, Make make,
+                                 double minGap = 0.2) {
     bg::model::box<BPoint> box;
     bg::envelope(free, box);
     std::vector<Ring> placed;
@@ -126,7 +127,7 @@ std::vector<Ring> placeObstacles(Rng& rng, const BPolygon& free, int count, Make
                      rng.uniform(box.min_corner().y(), box.max_corner().y())};
         const Ring ring = make(c);
         const BPolygon shape = toPolygon(ring);
-        const double gap = rng.uniform(0.2, 1.5);
+        const double gap = rng.uniform(minGap, std::max(minGap, 1.5));
         if (!bg::within(shape, free) || bg::distance(shape, walls) < gap)
             continue;
         bool clear = true;
@@ -321,6 +322,145 @@ bool drawPillarHall(Rng& rng, Plan& plan, std::string& what) {
     return true;
 }
 
+// Points on an arc from angle a0 to a1 (radians, either direction), both ends included, at
+// most `segment` metres apart: CAD exports write arcs from 5 cm to 1 m per segment.
+std::vector<Vec2> arcPoints(Vec2 centre, double radius, double a0, double a1, double segment) {
+    const int steps =
+        std::max(2, static_cast<int>(std::ceil(std::abs(a1 - a0) * radius / segment)));
+    std::vector<Vec2> out;
+    for (int k = 0; k <= steps; ++k) {
+        const double a = a0 + (a1 - a0) * k / steps;
+        out.push_back({centre.x + radius * std::cos(a), centre.y + radius * std::sin(a)});
+    }
+    return out;
+}
+
+Ring circle(Vec2 centre, double radius, double segment) {
+    Ring r = arcPoints(centre, radius, 0.0, 2.0 * kPi, segment);
+    r.pop_back(); // the first point again
+    return r;
+}
+
+// A rectangle [0,w] x [0,h] whose corners are rounded by the given radii (0 = sharp),
+// counter-clockwise from the lower left.
+Ring roundedRect(double w, double h, const double (&radius)[4], double segment) {
+    const Vec2 corners[4] = {{0, 0}, {w, 0}, {w, h}, {0, h}};
+    const Vec2 inward[4] = {{1, 1}, {-1, 1}, {-1, -1}, {1, -1}};
+    const double start[4] = {kPi, 1.5 * kPi, 0.0, 0.5 * kPi};
+    Ring r;
+    for (int i = 0; i < 4; ++i) {
+        if (radius[i] <= 0.0) {
+            r.push_back(corners[i]);
+            continue;
+        }
+        const Vec2 c = corners[i] + inward[i] * radius[i];
+        for (const Vec2& p : arcPoints(c, radius[i], start[i], start[i] + 0.5 * kPi, segment))
+            r.push_back(p);
+    }
+    return r;
+}
+
+// Round and curved walls, drawn as CAD exports write them (arcs as chains of 5 cm to 1 m
+// segments): a rotunda with an annex, a curved corridor with rooms off it, a hall with
+// rounded corners and an apse, or a hall whose corner is a concave quarter circle.
+bool drawRoundWalls(Rng& rng, const fc::RobotProfile& robot, Plan& plan, std::string& what) {
+    const double segment = std::exp(rng.uniform(std::log(0.05), std::log(1.0)));
+    const int variant = rng.integer(0, 3);
+    std::ostringstream s;
+    s.precision(3);
+    BMulti free;
+    if (variant == 0) { // rotunda + annex through a door
+        const double radius = rng.uniform(3.5, 8.0), wall = rng.uniform(0.1, 0.3);
+        const Ring hall = circle({0, 0}, radius, segment);
+        unite(free, toPolygon(hall));
+        plan.rooms.push_back({"Rotunda", hall});
+        const double aw = rng.uniform(3.0, 6.0), ad = rng.uniform(3.0, 5.0);
+        const double door = std::min(doorWidth(rng, robot), aw - 0.2);
+        const Ring annex = rect(radius + wall, -0.5 * aw, radius + wall + ad, 0.5 * aw);
+        unite(free, toPolygon(annex));
+        plan.rooms.push_back({"Annex", annex});
+        const double y0 = rng.uniform(-0.5 * aw, 0.5 * aw - door);
+        unite(free, toPolygon(rect(radius - 0.5, y0, radius + wall + 0.01, y0 + door)));
+        if (rng.chance(0.5)) // a central column, round and finely drawn
+            plan.obstacles.push_back(
+                circle({rng.uniform(-1, 1), rng.uniform(-1, 1)}, rng.uniform(0.3, 1.5), segment));
+        s << "rotunda r " << radius << " m, door " << door << " m";
+    } else if (variant == 1) { // curved corridor with rooms on its outer side
+        const double inner = rng.uniform(3.0, 8.0), width = rng.uniform(1.2, 3.0);
+        const double sweep = rng.uniform(kPi / 3.0, 1.1 * kPi), wall = rng.uniform(0.1, 0.25);
+        Ring corridor = arcPoints({0, 0}, inner + width, 0.0, sweep, segment);
+        for (const Vec2& p : arcPoints({0, 0}, inner, sweep, 0.0, segment))
+            corridor.push_back(p);
+        unite(free, toPolygon(corridor));
+        plan.rooms.push_back({"Corridor", corridor});
+        const int rooms = rng.integer(1, 3);
+        for (int i = 0; i < rooms; ++i) {
+            const double a = sweep * (i + 0.5) / rooms, rw = rng.uniform(2.5, 4.5);
+            const double rd = rng.uniform(2.5, 4.0), r0 = inner + width + wall;
+            if (rw > 0.9 * (inner + width) * sweep / rooms)
+                continue; // rooms would overlap
+            const Vec2 u{std::cos(a), std::sin(a)}, t{-u.y, u.x};
+            auto box = [&](double from, double to, double half) {
+                return Ring{u * from - t * half, u * to - t * half, u * to + t * half,
+                            u * from + t * half};
+            };
+            const Ring room = box(r0, r0 + rd, 0.5 * rw);
+            unite(free, toPolygon(room));
+            plan.rooms.push_back({"Room " + std::to_string(i + 1), room});
+            const double door = std::min(doorWidth(rng, robot), rw - 0.2);
+            const double off = rng.uniform(-0.5 * rw, 0.5 * rw - door) + 0.5 * door;
+            Ring d = box(inner + width - 0.3, r0 + 0.01, 0.5 * door);
+            for (Vec2& p : d)
+                p = p + t * off;
+            unite(free, toPolygon(d));
+        }
+        s << "curved corridor r " << inner << "-" << inner + width << " m over "
+          << sweep * 180.0 / kPi << " deg";
+    } else if (variant == 2) { // rounded corners, an apse on one side
+        const double w = rng.uniform(6.0, 14.0), h = rng.uniform(5.0, 10.0);
+        double radii[4];
+        for (double& r : radii)
+            r = rng.chance(0.3) ? 0.0 : rng.uniform(0.3, std::min(3.0, 0.4 * h));
+        unite(free, toPolygon(roundedRect(w, h, radii, segment)));
+        const double apse = rng.uniform(1.0, 0.45 * h);
+        if (rng.chance(0.6)) {
+            Ring half = arcPoints({w, 0.5 * h}, apse, -0.5 * kPi, 0.5 * kPi, segment);
+            half.push_back({w - 0.5, 0.5 * h + apse});
+            half.push_back({w - 0.5, 0.5 * h - apse});
+            unite(free, toPolygon(half));
+            s << "apse r " << apse << " m, ";
+        }
+        s << w << " x " << h << " m hall, rounded corners";
+    } else { // a concave quarter circle at a corner, a round stair well near a wall
+        const double w = rng.uniform(7.0, 14.0), h = rng.uniform(6.0, 10.0);
+        unite(free, toPolygon(rect(0, 0, w, h)));
+        const double cut = rng.uniform(1.0, 0.6 * h);
+        Ring quarter = arcPoints({w, h}, cut, kPi, 1.5 * kPi, segment);
+        quarter.push_back({w + 1, h - cut});
+        quarter.push_back({w + 1, h + 1});
+        quarter.push_back({w - cut, h + 1});
+        subtract(free, toPolygon(quarter));
+        s << w << " x " << h << " m hall, concave corner r " << cut << " m";
+    }
+    if (!setFreeSpace(plan, free))
+        return false;
+    // A round stair well or pillars, at 1.05 L to 1.5 m from the walls and each other: never
+    // across a door or a corridor (a room behind a pillar is another test's pocket).
+    BPolygon withHoles = toPolygon(plan.boundary);
+    for (const Ring& o : plan.obstacles)
+        withHoles.inners().push_back(toPolygon(o).outer());
+    bg::correct(withHoles);
+    const int pillars = rng.integer(0, 2);
+    for (Ring& r : placeObstacles(
+             rng, withHoles, pillars,
+             [&](Vec2 c) { return circle(c, rng.uniform(0.2, 1.8), segment); },
+             1.05 * robot.robotDiameter))
+        plan.obstacles.push_back(r);
+    s << ", arcs of " << segment << " m segments, " << plan.obstacles.size() << " obstacles";
+    what = s.str();
+    return true;
+}
+
 // One draw of the family's shape (not yet rotated or shifted); false = draw again.
 bool drawShape(Family family, Rng& rng, const fc::RobotProfile& robot, Plan& plan,
                std::string& what) {
@@ -339,6 +479,8 @@ bool drawShape(Family family, Rng& rng, const fc::RobotProfile& robot, Plan& pla
         return drawStarRoom(rng, plan, what);
     case Family::PillarHall:
         return drawPillarHall(rng, plan, what);
+    case Family::RoundWalls:
+        return drawRoundWalls(rng, robot, plan, what);
     }
     return false;
 }
@@ -346,8 +488,8 @@ bool drawShape(Family family, Rng& rng, const fc::RobotProfile& robot, Plan& pla
 } // namespace
 
 std::vector<Family> allFamilies() {
-    return {Family::RotatedOffice, Family::DoorRooms, Family::SlantedRooms, Family::StarRoom,
-            Family::PillarHall};
+    return {Family::RotatedOffice, Family::DoorRooms,  Family::SlantedRooms,
+            Family::StarRoom,      Family::PillarHall, Family::RoundWalls};
 }
 
 const char* familyName(Family family) {
@@ -362,6 +504,8 @@ const char* familyName(Family family) {
         return "star-room";
     case Family::PillarHall:
         return "pillar-hall";
+    case Family::RoundWalls:
+        return "round-walls";
     }
     return "?";
 }

@@ -17,7 +17,11 @@
 //                   gaps to walls and to each other from 0.2 m (narrower than L: pockets the
 //                   robot cannot enter) to 1.5 m;
 //   pillar-hall     a rectangular hall rotated by any angle, with round pillars, convex
-//                   obstacles and slanted boxes.
+//                   obstacles and slanted boxes;
+//   round-walls     curved walls as CAD exports write them (arcs of 5 cm to 1 m segments): a
+//                   rotunda with an annex behind a door, a curved corridor with rooms off
+//                   it, a hall with rounded corners and an apse, or a hall with a concave
+//                   round corner; round stair wells and pillars.
 // Every family: any rotation, and in half of the draws a UTM-sized offset (x + 5e5..6e5,
 // y + 5.4e6..5.5e6); the rest sit within 50 m of the origin.
 #pragma once
@@ -31,7 +35,7 @@
 
 namespace fcgen {
 
-enum class Family { RotatedOffice, DoorRooms, SlantedRooms, StarRoom, PillarHall };
+enum class Family { RotatedOffice, DoorRooms, SlantedRooms, StarRoom, PillarHall, RoundWalls };
 
 std::vector<Family> allFamilies();
 const char* familyName(Family family); // "rotated-office", ...

@@ -79,6 +79,14 @@ check "rooms subset" cli plan "$plans/office.geojson" --rooms S01,Corridor,N03 -
 check "metrics rooms subset" metrics_ok
 check "auto angle" "$cli" plan "$plans/room-notches.geojson" --angle auto
 check "no wall loop" "$cli" plan "$plans/simple.geojson" --no-wall-loop
+# A corridor on a 120-degree arc (UTM coordinates) plans as loops along its walls, with a note;
+# --no-rings plans it without them.
+"$cli" plan "$data/curved-corridor.geojson" >"$work/curved.out" 2>"$work/curved.err"
+check "curved corridor plans" test $? -eq 0
+check "curved corridor planned as rings" grep -q "note: .*planned as loops along the walls" "$work/curved.err"
+"$cli" plan "$data/curved-corridor.geojson" --no-rings >"$work/stripes.out" 2>"$work/stripes.err"
+check "no rings plans" test $? -eq 0
+check "no rings, no rings note" bash -c "! grep -q 'planned as loops' '$work/stripes.err'"
 check "slanted sweep" cli plan "$plans/simple.geojson" --angle 30
 check "metrics slanted" metrics_ok
 a=$("$cli" plan "$plans/office.geojson" --seed 7 --out "$work/a.csv" | python3 -c "import json,sys; d=json.load(sys.stdin); print(d['graph_cost'])")

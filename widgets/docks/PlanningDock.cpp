@@ -477,6 +477,9 @@ void PlanningDock::refreshStatus() {
             status_->setText(tr("Wall teeth cut back to their walls for planning: %n (pilasters, "
                                 "bumps of traced walls); the path keeps clear of them.",
                                 nullptr, result->shavedTeeth));
+        else if (const auto ringed = controller_->result(); ringed && ringed->rings)
+            status_->setText(tr("Planned as loops along the walls, each one coverage width "
+                                "further in: estimated faster than stripes on this floor."));
         else
             status_->clear();
     }
