@@ -8,9 +8,11 @@
 
 #include <QAction>
 #include <QCoreApplication>
+#include <QLabel>
 #include <QMenuBar>
 #include <QSignalSpy>
 #include <QStandardPaths>
+#include <QTableWidget>
 #include <QTest>
 
 using namespace fc;
@@ -27,6 +29,7 @@ private slots:
     void editsInARowPlanOnce();
     void turnedOffAnEditWaitsForF5();
     void menuActionIsRemembered();
+    void aPlanOfRingsSaysSo();
 };
 
 namespace {
@@ -184,6 +187,24 @@ void LiveReplanningTest::menuActionIsRemembered() {
     }
     auto window = makeWindow();
     QVERIFY(window->planningController()->liveReplanning());
+}
+
+// A corridor on a 120-degree arc plans as loops along its walls (pipeline/RingsOffer.h): the
+// Planning dock says so under the Plan button, and its Planned column shows no angle.
+void LiveReplanningTest::aPlanOfRingsSaysSo() {
+    auto window = makeWindow();
+    QVERIFY(window->openFile(QStringLiteral(FC_TEST_DATA_DIR "/curved-corridor.geojson")));
+    PlanningController* planner = window->planningController();
+    QVERIFY2(waitForFullPlan(planner), qPrintable(planner->errorMessage()));
+    QVERIFY(planner->result()->rings);
+    auto* status = window->findChild<QLabel*>(QStringLiteral("planningStatus"));
+    QVERIFY(status);
+    QTRY_VERIFY2(status->text().contains(QStringLiteral("loops along the walls")),
+                 qPrintable(status->text()));
+    auto* angles = window->findChild<QTableWidget*>(QStringLiteral("roomAngles"));
+    QVERIFY(angles);
+    for (int row = 0; row < angles->rowCount(); ++row)
+        QCOMPARE(angles->item(row, 3)->text(), QStringLiteral("–"));
 }
 
 QTEST_MAIN(LiveReplanningTest)

@@ -81,6 +81,7 @@ PlanningDock::PlanningDock(QWidget* parent) : QDockWidget(tr("Planning"), parent
     planButton_ = new QPushButton(tr("Plan"));
     planButton_->setToolTip(tr("Plan the coverage path for the checked rooms (F5)."));
     status_ = new QLabel;
+    status_->setObjectName(QStringLiteral("planningStatus"));
     status_->setWordWrap(true);
     status_->setTextInteractionFlags(Qt::TextSelectableByMouse);
     auto* frame = new QWidget;
@@ -140,6 +141,7 @@ QWidget* PlanningDock::createSweepGroup() {
            "plan that covers everything the robot can reach. One angle: the stripe angle "
            "below for every room."));
     roomAngles_ = new QTableWidget(0, 4);
+    roomAngles_->setObjectName(QStringLiteral("roomAngles"));
     roomAngles_->setHorizontalHeaderLabels(
         {tr("Room"), tr("From walls"), tr("Fixed"), tr("Planned")});
     roomAngles_->horizontalHeader()->setStretchLastSection(true);
