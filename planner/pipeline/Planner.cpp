@@ -682,9 +682,9 @@ PlanResult planCoverage(const PlanRequest& request, const SolveControl& control,
         rings = std::async(std::launch::async, [&request, ringsControl] {
             try {
                 return detail::draftRings(request, ringsControl);
-            } catch (const InputError&) {
-                return std::optional<detail::WallLoopDraft>(); // an offer, like the others
-            } catch (const SolverError&) {
+            } catch (const std::exception&) {
+                // An offer: cancelled, or geometry the loops cannot be built on (Boost's
+                // overlays throw on input they cannot handle); the other plans stand.
                 return std::optional<detail::WallLoopDraft>();
             }
         });
