@@ -168,6 +168,7 @@ bool drawDoorRooms(Rng& rng, const fc::RobotProfile& robot, Plan& plan, std::str
     std::ostringstream doors;
     doors.precision(3);
     double x = 0.0;
+    std::vector<BPolygon> openings;
     for (int i = 0; i < rooms; ++i) {
         const double width = rng.uniform(3.0, 6.0);
         unite(free, toPolygon(rect(x, 0, x + width, height)));
@@ -188,11 +189,25 @@ bool drawDoorRooms(Rng& rng, const fc::RobotProfile& robot, Plan& plan, std::str
             // Flush with a corner in a fifth of the walls.
             const double y0 = rng.chance(0.2) ? (rng.chance(0.5) ? 0.0 : height - door)
                                               : rng.uniform(0.0, height - door);
-            unite(free, toPolygon(rect(x - 0.01, y0, x + wall + 0.01, y0 + door)));
+            openings.push_back(toPolygon(rect(x - 0.01, y0, x + wall + 0.01, y0 + door)));
+            unite(free, openings.back());
             doors << (i ? "," : "") << door;
             x += wall;
         }
     }
+    // A desk closer to a door than the robot is wide shuts the room behind it (seed 105: a
+    // desk 0.4 m from a 0.8 m door's jamb left 17.7 m^2 unreachable); the doors are what this
+    // family tests, so such a desk is left out (the other draws are unchanged).
+    plan.obstacles.erase(
+        std::remove_if(plan.obstacles.begin(), plan.obstacles.end(),
+                       [&](const Ring& desk) {
+                           const BPolygon shape = toPolygon(desk);
+                           return std::any_of(
+                               openings.begin(), openings.end(), [&](const BPolygon& opening) {
+                                   return bg::distance(shape, opening) < 1.05 * robot.robotDiameter;
+                               });
+                       }),
+        plan.obstacles.end());
     what = std::to_string(rooms) + " rooms, doors " + doors.str() + " m";
     return setFreeSpace(plan, free);
 }

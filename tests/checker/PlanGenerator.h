@@ -9,7 +9,8 @@
 //   door-rooms      2-4 rectilinear rooms in a row joined by doors of random width in
 //                   [1.05 L, 2 W] (SPEC: a passage at least L wide "plus a small margin" is
 //                   passable; 5 % of L is that margin here), random wall thickness and
-//                   door position (flush with a corner too), some desks; rotated;
+//                   door position (flush with a corner too), some desks (none within 1.05 L
+//                   of a door: it would shut the room behind it); rotated;
 //   slanted-rooms   a random convex polygon (no two walls parallel, in general) split by a
 //                   slanted wall with a door of random width in [1.05 L, 2 W], a convex
 //                   obstacle in some draws;
