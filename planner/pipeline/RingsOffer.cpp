@@ -62,22 +62,21 @@ std::optional<WallLoop> loopInside(const RingsContext& context, const Piece& pie
 
 void driveRings(const RingsContext& context, const Piece& piece, WallLoopDraft& draft);
 
-// Drives a closed loop from its vertex nearest the path's end, after a transit there; false
-// where there is no transit.
-bool driveClosed(const RingsContext& context, const Ring& loop, WallLoopDraft& draft) {
+// Drives a closed loop from its vertex nearest the path's end, after a transit there; nothing
+// where there is no transit (the touch-ups sweep round that obstacle).
+void driveClosed(const RingsContext& context, const Ring& loop, WallLoopDraft& draft) {
     const size_t n = loop.size() - 1; // closed: the first point repeated
     size_t first = 0;
     for (size_t i = 1; i < n; ++i)
         if (norm(loop[i] - draft.path.points.back()) < norm(loop[first] - draft.path.points.back()))
             first = i;
     if (!tryAppendTransit(context.floor, draft.path, loop[first]))
-        return false;
+        return;
     for (size_t k = 1; k <= n; ++k) {
         draft.path.points.push_back(loop[(first + k) % n]);
         draft.path.kinds.push_back(SegmentKind::Contour);
     }
     ++draft.cells;
-    return true;
 }
 
 // Calls visit(k) for each of the rings, the one nearest the path's end each time.
