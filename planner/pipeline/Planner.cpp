@@ -673,7 +673,7 @@ PlanResult planCoverage(const PlanRequest& request, const SolveControl& control,
         });
     // Loops inside the wall loop, W apart (pipeline/RingsOffer.h).
     std::atomic<bool> stopRings{false};
-    std::future<std::optional<detail::WallLoopDraft>> rings;
+    std::future<std::vector<detail::WallLoopDraft>> rings;
     if (detail::wantsRings(request)) {
         SolveControl ringsControl;
         ringsControl.cancelled = [&stopRings, cancelled = control.cancelled] {
@@ -685,7 +685,7 @@ PlanResult planCoverage(const PlanRequest& request, const SolveControl& control,
             } catch (const std::exception&) {
                 // An offer: cancelled, or geometry the loops cannot be built on (Boost's
                 // overlays throw on input they cannot handle); the other plans stand.
-                return std::optional<detail::WallLoopDraft>();
+                return std::vector<detail::WallLoopDraft>();
             }
         });
     }
@@ -733,10 +733,10 @@ PlanResult planCoverage(const PlanRequest& request, const SolveControl& control,
         }
     }
     if (rings.valid())
-        if (std::optional<detail::WallLoopDraft> drafted = rings.get()) {
+        for (detail::WallLoopDraft& drafted : rings.get()) {
             if (control.cancelled && control.cancelled())
                 throw SolverError("cancelled");
-            PlanResult ringed = detail::wallLoopPlan(request, result, std::move(*drafted));
+            PlanResult ringed = detail::wallLoopPlan(request, result, std::move(drafted));
             ringed.rings = true;
             plans.push_back(std::move(ringed));
         }

@@ -11,6 +11,7 @@
 #include "pipeline/EdgePass.h"
 
 #include <optional>
+#include <vector>
 
 namespace fc::detail {
 
@@ -26,15 +27,19 @@ inline constexpr std::size_t kRingsMaxCorners = 4000;
 // the piece (in W^2) unswept, for the touch-ups.
 inline constexpr double kRingsHalfMissInWidths2 = 0.05;
 
+// A piece is swept along its spine where the spine's swath leaves at most this share of it.
+inline constexpr double kRingsSpineMissShare = 0.1;
+
 // Whether planCoverage drafts rings for `request` (cheap: decided before any thread starts):
 // every room asked for, a solver that plans any graph (not exact), the wall loop allowed
 // (PlanRequest::wallLoop; the rings are wall loops all the way in), no sweep angle fixed by
 // the user, a floor within the limits above.
 bool wantsRings(const PlanRequest& request);
 
-// The rings' path from request.start (without one, from the wall loop's start) to
-// request.end (else back to the start), every loop checked clear of the walls; empty where
-// the robot fits nowhere along the walls. Throws SolverError when cancelled.
-std::optional<WallLoopDraft> draftRings(const PlanRequest& request, const SolveControl& control);
+// The rings' paths from request.start (without one, from the wall loop's start) to
+// request.end (else back to the start), every loop checked clear of the walls: one of loops
+// only, one where pieces narrower than W may be swept along their spines (where that differs);
+// none where the robot fits nowhere along the walls. Throws SolverError when cancelled.
+std::vector<WallLoopDraft> draftRings(const PlanRequest& request, const SolveControl& control);
 
 } // namespace fc::detail

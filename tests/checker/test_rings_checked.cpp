@@ -13,16 +13,17 @@ namespace fcgen {
 namespace {
 
 // A corridor 2.2 m wide on an arc of 120 degrees (inner radius 6 m, drawn with 10 cm
-// segments), turned and shifted; a 3 x 3 m room off its outer wall through a 1.2 m door.
-fc::Plan curvedCorridor(double deg, fc::Vec2 offset) {
-    const double inner = 6.0, outer = 8.2, sweep = 2.0 * M_PI / 3.0;
+// segments), turned and shifted; a 3 x 3 m room off its outer wall through a 1.2 m door
+// (without: no room).
+fc::Plan curvedCorridor(double deg, fc::Vec2 offset, double width = 2.2, bool withRoom = true) {
+    const double inner = 6.0, outer = inner + width, sweep = 2.0 * M_PI / 3.0;
     fc::Plan plan;
     const int steps = static_cast<int>(std::ceil(sweep * outer / 0.1));
     const double middle = 0.5 * sweep, doorHalf = 0.6 / outer;
-    bool roomDrawn = false;
+    bool roomDrawn = !withRoom;
     for (int k = 0; k <= steps; ++k) {
         const double a = sweep * k / steps;
-        if (std::abs(a - middle) > doorHalf) {
+        if (!withRoom || std::abs(a - middle) > doorHalf) {
             plan.boundary.push_back({outer * std::cos(a), outer * std::sin(a)});
             continue;
         }
@@ -70,6 +71,31 @@ TEST(RingsChecked, ACurvedCorridorPlansAsLoopsAlongItsWalls) {
         EXPECT_FALSE(stripes.rings);
         EXPECT_LT(result.metrics.time, 0.8 * stripes.metrics.time);
         EXPECT_GE(result.metrics.coverage, 0.995);
+        const fccheck::Report report = check(request, result);
+        EXPECT_TRUE(report.collisionFree);
+        EXPECT_GE(report.coverage, 0.995);
+    }
+}
+
+// A corridor 2.5 m wide: the loop along each wall sweeps 0.8 m of it, and the 0.9 m between
+// them is driven once along its spine (geometry/SkeletonSpine.h), not round by a loop.
+TEST(RingsChecked, TheMiddleOfACorridorIsDrivenOnceAlongItsSpine) {
+    for (const double deg : {0.0, 47.0}) {
+        const fc::Vec2 utm = deg > 0 ? fc::Vec2{512345.0, 5412345.0} : fc::Vec2{};
+        const fc::PlanRequest request = defaultRequest(curvedCorridor(deg, utm, 2.5, false));
+        const fc::PlanResult result = fc::planCoverage(request);
+        double spine = 0.0;
+        const fc::CoveragePath& path = result.path;
+        for (size_t i = 1; i < path.points.size(); ++i)
+            if (path.kinds[i - 1] == fc::SegmentKind::Stripe)
+                spine += fc::norm(path.points[i] - path.points[i - 1]);
+        const double middleArc = 7.25 * 2.0 * M_PI / 3.0;
+        std::printf("%.0f deg: rings %d, %.1f m, %d turns, %.1f s, spine %.1f m of a %.1f m arc\n",
+                    deg, result.rings, result.metrics.length, result.metrics.turns,
+                    result.metrics.time, spine, middleArc);
+        EXPECT_TRUE(result.rings);
+        EXPECT_GT(spine, 0.8 * middleArc);
+        EXPECT_LT(spine, 1.05 * middleArc);
         const fccheck::Report report = check(request, result);
         EXPECT_TRUE(report.collisionFree);
         EXPECT_GE(report.coverage, 0.995);
