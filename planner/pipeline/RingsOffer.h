@@ -37,9 +37,11 @@ inline constexpr double kRingsSpineMissShare = 0.1;
 bool wantsRings(const PlanRequest& request);
 
 // The rings' paths from request.start (without one, from the wall loop's start) to
-// request.end (else back to the start), every loop checked clear of the walls: one of loops
-// only, one where pieces narrower than W may be swept along their spines (where that differs);
-// none where the robot fits nowhere along the walls. Throws SolverError when cancelled.
+// request.end (else back to the start), every loop checked clear of the walls, in up to three
+// variants (those that differ): loops only with the nearest stop next; pieces narrower than
+// W swept along their spines where faster, nearest stop next; the same with the stops in a
+// tour (pipeline/RingTour.h). None where the robot fits nowhere along the walls. Throws
+// SolverError when cancelled.
 std::vector<WallLoopDraft> draftRings(const PlanRequest& request, const SolveControl& control);
 
 } // namespace fc::detail

@@ -102,6 +102,22 @@ TEST(RingsChecked, TheMiddleOfACorridorIsDrivenOnceAlongItsSpine) {
     }
 }
 
+// A rotunda round a column with a pillar beside it (the generator's round walls, seed 12):
+// the slivers the loops leave round the column are taken in one tour round it
+// (pipeline/RingTour.h), where nearest first crossed back and forth (99.3 m, 290.6 s).
+TEST(RingsChecked, TheSliversRoundAColumnAreTakenInOneTour) {
+    const GeneratedPlan generated = generatePlan(Family::RoundWalls, 12);
+    const fc::PlanRequest request = defaultRequest(generated.plan);
+    const fc::PlanResult result = fc::planCoverage(request);
+    std::printf("%s: rings %d, %.1f m, %d turns, %.1f s\n", generated.description.c_str(),
+                result.rings, result.metrics.length, result.metrics.turns, result.metrics.time);
+    EXPECT_TRUE(result.rings);
+    EXPECT_LT(result.metrics.time, 260.0);
+    const fccheck::Report report = check(request, result);
+    EXPECT_TRUE(report.collisionFree);
+    EXPECT_GE(report.coverage, 0.995);
+}
+
 TEST(RingsChecked, StripesWhereTheyAreFasterOrTheAngleIsFixed) {
     fc::Plan room;
     room.boundary = {{0, 0}, {12, 0}, {12, 9}, {0, 9}};
