@@ -106,8 +106,9 @@ void nearestFirst(const std::vector<Ring>& rings, const WallLoopDraft& draft, Vi
 }
 
 // Drives the loop (the path is at its first point), then the loops round the obstacles
-// inside it and the pieces the loops left, in one tour (tourOrder), each piece with the loops
-// inside it before the next.
+// inside it and the pieces the loops left, each piece with the loops inside it before the
+// next: in one tour (tourOrder, the last stop's gap measured to `then`), or without tours the
+// obstacles' loops and then the pieces, nearest first.
 void driveLoopAndInside(const RingsContext& context, WallLoop walls, WallLoopDraft& draft,
                         std::optional<Vec2> then = std::nullopt) {
     for (size_t i = 1; i < walls.loop.size(); ++i) {
