@@ -29,6 +29,8 @@ inline constexpr double kRingsHalfMissInWidths2 = 0.05;
 
 // A piece is swept along its spine where the spine's swath leaves at most this share of it.
 inline constexpr double kRingsSpineMissShare = 0.1;
+// ... and only a piece at most this wide on average (in W) is tried.
+inline constexpr double kRingsSpineMaxMeanWidth = 1.25;
 
 // Whether planCoverage drafts rings for `request` (cheap: decided before any thread starts):
 // every room asked for, a solver that plans any graph (not exact), the wall loop allowed
