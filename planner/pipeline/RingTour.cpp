@@ -44,15 +44,13 @@ std::vector<size_t> tourOrder(const std::vector<Ring>& rings, Vec2 from, std::op
     std::vector<size_t> order;
     std::vector<bool> done(n, false);
     for (size_t visited = 0; visited < n; ++visited) {
+        const auto gapTo = [&](size_t k) {
+            return order.empty() ? fromGap[k] : gap[order.back() * n + k];
+        };
         size_t next = n;
-        for (size_t k = 0; k < n; ++k) {
-            const double d = order.empty() ? fromGap[k] : gap[order.back() * n + k];
-            const double best =
-                next == n ? INFINITY
-                          : (order.empty() ? fromGap[next] : gap[order.back() * n + next]);
-            if (!done[k] && d < best)
+        for (size_t k = 0; k < n; ++k)
+            if (!done[k] && (next == n || gapTo(k) < gapTo(next)))
                 next = k;
-        }
         done[next] = true;
         order.push_back(next);
     }
